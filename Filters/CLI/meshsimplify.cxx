@@ -1,0 +1,387 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// meshsimplify: run a MeshSimplification filter on a mesh file.
+//
+//   meshsimplify --method octree [--reduction R | --target-triangles N |
+//                --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]
+//                [--json] INPUT OUTPUT
+//
+// Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
+// one JSON object; time_ms is the filter's own work (file I/O excluded).
+#include "OFFFile.h"
+#include "vtkOFFReader.h"
+#include "vtkOctreeVertexClustering.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkOBJWriter.h"
+#include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSTLReader.h"
+#include "vtkSTLWriter.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace
+{
+[[noreturn]] void Fail(const std::string& message)
+{
+  std::fprintf(stderr, "meshsimplify: %s\n", message.c_str());
+  std::exit(1);
+}
+
+std::string Extension(const std::string& path)
+{
+  const std::size_t dot = path.rfind('.');
+  std::string extension = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+  return extension;
+}
+
+vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+{
+  const std::string extension = Extension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (extension == "off")
+  {
+    auto off = vtkSmartPointer<vtkOFFReader>::New();
+    off->SetFileName(path.c_str());
+    reader = off;
+  }
+  else if (extension == "ply")
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (extension == "stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    reader = stl;
+  }
+  else if (extension == "obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else if (extension == "vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    vtp->SetFileName(path.c_str());
+    reader = vtp;
+  }
+  else if (extension == "vtk")
+  {
+    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+    legacy->SetFileName(path.c_str());
+    reader = legacy;
+  }
+  else
+  {
+    Fail("cannot read '" + path + "': unknown extension (.off .ply .stl .obj .vtp .vtk)");
+  }
+  if (FILE* probe = std::fopen(path.c_str(), "rb"))
+  {
+    std::fclose(probe);
+  }
+  else
+  {
+    Fail("cannot open '" + path + "'");
+  }
+  reader->Update();
+  vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (reader->GetErrorCode() != 0 || !output)
+  {
+    Fail("cannot read '" + path + "'");
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(output);
+  return copy;
+}
+
+void WriteOFF(vtkPolyData* mesh, const std::string& path)
+{
+  meshsimp::PolygonMesh off;
+  off.Points.resize(3 * mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    mesh->GetPoint(i, off.Points.data() + 3 * i);
+  }
+  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    off.FaceIds.insert(off.FaceIds.end(), ids, ids + size);
+    off.FaceOffsets.push_back(static_cast<std::int64_t>(off.FaceIds.size()));
+  }
+  std::string error;
+  if (!meshsimp::WriteOFF(path, off, error))
+  {
+    Fail(error);
+  }
+}
+
+void Write(vtkPolyData* mesh, const std::string& path)
+{
+  const std::string extension = Extension(path);
+  int ok = 1;
+  if (extension == "off")
+  {
+    WriteOFF(mesh, path);
+  }
+  else if (extension == "ply")
+  {
+    vtkNew<vtkPLYWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(mesh);
+    writer->SetFileTypeToBinary();
+    ok = writer->Write();
+  }
+  else if (extension == "stl")
+  {
+    vtkNew<vtkSTLWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(mesh);
+    writer->SetFileTypeToBinary();
+    ok = writer->Write();
+  }
+  else if (extension == "obj")
+  {
+    vtkNew<vtkOBJWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(mesh);
+    ok = writer->Write();
+  }
+  else if (extension == "vtp")
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(mesh);
+    ok = writer->Write();
+  }
+  else if (extension == "vtk")
+  {
+    vtkNew<vtkPolyDataWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(mesh);
+    ok = writer->Write();
+  }
+  else
+  {
+    Fail("cannot write '" + path + "': unknown extension (.off .ply .stl .obj .vtp .vtk)");
+  }
+  if (!ok)
+  {
+    Fail("cannot write '" + path + "'");
+  }
+}
+
+double ParseNumber(const std::string& option, const std::string& text)
+{
+  try
+  {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size())
+    {
+      return value;
+    }
+  }
+  catch (const std::exception&)
+  {
+  }
+  Fail("option " + option + " needs a number, not '" + text + "'");
+}
+
+/// The --set names of the octree filter.
+std::map<std::string, std::function<void(vtkOctreeVertexClustering*, double)>> OctreeSetters()
+{
+  return {
+    { "MaximumCellSize", [](vtkOctreeVertexClustering* f, double v) { f->SetMaximumCellSize(v); } },
+    { "MaximumVerticesPerCell",
+      [](vtkOctreeVertexClustering* f, double v) { f->SetMaximumVerticesPerCell(static_cast<int>(v)); } },
+    { "ErrorIterations",
+      [](vtkOctreeVertexClustering* f, double v) { f->SetErrorIterations(static_cast<int>(v)); } },
+    { "BoundaryPlanes", [](vtkOctreeVertexClustering* f, double v) { f->SetBoundaryPlanes(v != 0.0); } },
+    { "BoundaryWeight", [](vtkOctreeVertexClustering* f, double v) { f->SetBoundaryWeight(v); } },
+    { "PreventFlips", [](vtkOctreeVertexClustering* f, double v) { f->SetPreventFlips(v != 0.0); } },
+    { "OutputPointsPrecision",
+      [](vtkOctreeVertexClustering* f, double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
+  };
+}
+
+const char* Usage =
+  "usage: meshsimplify --method octree [--reduction R | --target-triangles N |\n"
+  "         --max-error E [--relative-error]] [--threads T] [--set Name=Value ...] [--json]\n"
+  "         INPUT OUTPUT\n";
+}
+
+int main(int argc, char* argv[])
+{
+  std::string method, input, output;
+  double reduction = -1.0, maxError = -1.0;
+  long long targetTriangles = -1;
+  bool relativeError = false, json = false;
+  int threads = 0;
+  std::vector<std::pair<std::string, double>> settings;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc)
+      {
+        Fail("option " + arg + " needs a value");
+      }
+      return argv[++i];
+    };
+    if (arg == "--help" || arg == "-h")
+    {
+      std::fputs(Usage, stdout);
+      return 0;
+    }
+    else if (arg == "--method")
+      method = value();
+    else if (arg == "--reduction")
+      reduction = ParseNumber(arg, value());
+    else if (arg == "--target-triangles")
+      targetTriangles = static_cast<long long>(ParseNumber(arg, value()));
+    else if (arg == "--max-error")
+      maxError = ParseNumber(arg, value());
+    else if (arg == "--relative-error")
+      relativeError = true;
+    else if (arg == "--threads")
+      threads = static_cast<int>(ParseNumber(arg, value()));
+    else if (arg == "--json")
+      json = true;
+    else if (arg == "--set")
+    {
+      const std::string assignment = value();
+      const std::size_t equals = assignment.find('=');
+      if (equals == std::string::npos)
+      {
+        Fail("--set needs Name=Value, not '" + assignment + "'");
+      }
+      settings.emplace_back(
+        assignment.substr(0, equals), ParseNumber("--set", assignment.substr(equals + 1)));
+    }
+    else if (!arg.empty() && arg[0] == '-')
+      Fail("unknown option " + arg);
+    else if (input.empty())
+      input = arg;
+    else if (output.empty())
+      output = arg;
+    else
+      Fail("unexpected argument " + arg);
+  }
+  if (input.empty() || output.empty())
+  {
+    Fail(std::string("an INPUT and an OUTPUT file are needed\n") + Usage);
+  }
+  if (method != "octree")
+  {
+    Fail("unknown --method '" + method + "' (available: octree)");
+  }
+  if ((reduction >= 0.0) + (targetTriangles >= 0) + (maxError >= 0.0) > 1)
+  {
+    Fail("give only one of --reduction, --target-triangles, --max-error");
+  }
+  if (reduction >= 0.0 && reduction >= 1.0)
+  {
+    Fail("--reduction must be in [0, 1)");
+  }
+  if (threads < 0)
+  {
+    Fail("--threads must be 0 (all cores) or more");
+  }
+
+  vtkSmartPointer<vtkPolyData> mesh = Read(input);
+  vtkNew<vtkOctreeVertexClustering> filter;
+  filter->SetInputData(mesh);
+  filter->SetNumberOfThreads(threads);
+  if (targetTriangles >= 0)
+  {
+    filter->SetTargetModeToTriangleCount();
+    filter->SetTargetTriangleCount(targetTriangles);
+  }
+  else if (maxError >= 0.0)
+  {
+    filter->SetTargetModeToMaximumError();
+    filter->SetMaximumError(maxError);
+    filter->SetRelativeError(relativeError);
+  }
+  else
+  {
+    filter->SetTargetModeToReduction();
+    filter->SetTargetReduction(reduction >= 0.0 ? reduction : 0.9);
+  }
+  const auto setters = OctreeSetters();
+  for (const auto& setting : settings)
+  {
+    const auto setter = setters.find(setting.first);
+    if (setter == setters.end())
+    {
+      Fail("unknown --set name '" + setting.first + "' for --method octree");
+    }
+    setter->second(filter, setting.second);
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  const double milliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (filter->GetErrorCode() != 0)
+  {
+    Fail("the filter failed on '" + input + "'");
+  }
+  vtkPolyData* result = filter->GetOutput();
+  Write(result, output);
+
+  if (json)
+  {
+    // The triangle count of the input as the filter sees it (polygons and strips triangulated).
+    vtkIdType inputTriangles = 0;
+    auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      polys->GetCurrentCell(size, ids);
+      inputTriangles += size >= 3 ? size - 2 : 0;
+    }
+    auto strips = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
+    for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      strips->GetCurrentCell(size, ids);
+      inputTriangles += size >= 3 ? size - 2 : 0;
+    }
+    std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
+                "\"time_ms\": %.3f, \"threads\": %d, \"max_error\": %.9g}\n",
+      method.c_str(), static_cast<long long>(inputTriangles),
+      static_cast<long long>(result->GetNumberOfPolys()), milliseconds,
+      threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
+      filter->GetAchievedMaximumError());
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Execution.h
+ * @brief How a core algorithm runs: an injected parallel-for, progress and abort.
+ *
+ * The core never creates threads itself. The VTK layer passes a ParallelFor built on
+ * vtkSMPTools with real threads; tests and plain C++ users may leave it empty (serial).
+ * Work split by ParallelFor must write disjoint outputs so results do not depend on the
+ * thread count.
+ */
+#ifndef MeshSimplification_Execution_h
+#define MeshSimplification_Execution_h
+
+#include <cstdint>
+#include <functional>
+
+namespace meshsimp
+{
+
+struct ExecutionContext
+{
+  /// Calls body(begin, end) over sub-ranges covering [0, n), possibly concurrently.
+  std::function<void(std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body)>
+    ParallelFor;
+  /// Receives progress in [0, 1]; returns false when the caller wants to abort.
+  std::function<bool(double)> Progress;
+
+  void For(std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body) const
+  {
+    if (n <= 0)
+    {
+      return;
+    }
+    if (this->ParallelFor)
+    {
+      this->ParallelFor(n, body);
+    }
+    else
+    {
+      body(0, n);
+    }
+  }
+
+  /// False when the caller asked to abort.
+  bool Report(double progress) const { return !this->Progress || this->Progress(progress); }
+};
+
+} // namespace meshsimp
+
+#endif

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file OFFFile.h
+ * @brief Reading and writing Object File Format (.off) meshes, which VTK has no reader for.
+ *
+ * Supports the plain ASCII variant: an optional "OFF" header keyword, the counts line, points
+ * (extra columns such as colours are ignored), and polygons of any size. Comments (#) and blank
+ * lines are skipped.
+ */
+#ifndef MeshSimplification_OFFFile_h
+#define MeshSimplification_OFFFile_h
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace meshsimp
+{
+
+struct PolygonMesh
+{
+  std::vector<double> Points;              // 3 per point
+  std::vector<std::int64_t> FaceOffsets{ 0 }; // CSR over FaceIds
+  std::vector<std::int64_t> FaceIds;
+};
+
+/// Returns false with a one-line message in error on failure.
+bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error);
+bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& error);
+
+} // namespace meshsimp
+
+#endif

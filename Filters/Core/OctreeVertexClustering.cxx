@@ -1,0 +1,960 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "OctreeVertexClustering.h"
+
+#include "Quadric.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+
+namespace meshsimp
+{
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+
+/// Heap keys above every error: leaves that must be split whatever the target.
+constexpr double ForcedSplitKey = std::numeric_limits<double>::infinity();
+/// Leaves whose clustering flips a related triangle (§2.4): split before any error-driven split.
+constexpr double FlipSplitKey = std::numeric_limits<double>::max();
+/// Leaves smaller than this (in units of the bounding-box diagonal) hold coincident points.
+constexpr double MinimumCellHalfSize = 1e-9;
+constexpr int MaximumDepth = 40;
+
+struct Plane
+{
+  Vec3 Normal = Vec3::Zero(); // unit, or zero for a zero-area triangle
+  double Offset = 0.0;
+  double Distance(const Vec3& x) const { return std::abs(this->Normal.dot(x) + this->Offset); }
+};
+
+struct OctreeNode
+{
+  Vec3 Center;
+  double Half;
+  std::int32_t Begin, End; // range of Clusterer::Order
+  std::int32_t Depth;
+};
+
+struct HeapEntry
+{
+  double Key;  // leaf error, or one of the split keys above
+  double Half; // ties: larger cells first
+  std::int32_t Node;
+  bool operator<(const HeapEntry& o) const
+  {
+    if (this->Key != o.Key)
+    {
+      return this->Key < o.Key;
+    }
+    if (this->Half != o.Half)
+    {
+      return this->Half < o.Half;
+    }
+    return this->Node > o.Node; // older nodes first: the order never depends on threads
+  }
+};
+
+class Clusterer
+{
+public:
+  Clusterer(const TriangleMeshView& mesh, const OctreeClusteringOptions& options,
+    const ExecutionContext& context)
+    : Mesh(mesh)
+    , Options(options)
+    , Context(context)
+  {
+  }
+
+  bool Run(OctreeClusteringResult& result);
+
+private:
+  /// ε in the normalised coordinates.
+  double Bound() const
+  {
+    return this->Options.RelativeError ? this->Options.MaximumError
+                                       : this->Options.MaximumError * this->Scale;
+  }
+
+private:
+  void PrepareGeometry();
+  void PrepareQuadrics();
+  bool InRange(std::int32_t v, std::int32_t begin, std::int32_t end) const
+  {
+    const std::int32_t p = this->Position[v];
+    return p >= begin && p < end;
+  }
+  std::int32_t Find(std::int32_t i)
+  {
+    while (this->UnionParent[i] != i)
+    {
+      i = this->UnionParent[i] = this->UnionParent[this->UnionParent[i]];
+    }
+    return i;
+  }
+  double EvaluateLeaf(std::int32_t node, bool& canSplit);
+  bool LeafFlips(std::int32_t begin, std::int32_t end) const;
+  Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
+  Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
+  Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
+    const std::int32_t* members, std::int32_t count, bool byPosition) const;
+  double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count) const;
+  std::int64_t CountSurviving(std::int32_t begin, std::int32_t end) const;
+  void SplitLeaf(std::int32_t node, std::vector<HeapEntry>& children);
+  void UndoSplit();
+  std::vector<std::int32_t> SurvivingTriangles() const;
+  bool Refine(std::int64_t target, double bound);
+  void Finalize(const std::vector<std::int32_t>& survivors, OctreeClusteringResult& result);
+
+  const TriangleMeshView& Mesh;
+  const OctreeClusteringOptions& Options;
+  const ExecutionContext& Context;
+
+  // Geometry, normalised so that the bounding-box diagonal is 1 and tolerances are relative.
+  Vec3 Origin = Vec3::Zero();
+  double Scale = 1.0;
+  std::vector<Vec3> P;
+  std::vector<std::uint8_t> Usable;
+  VertexTriangleAdjacency Adjacency;
+  std::vector<Plane> TrianglePlanes;
+  std::vector<double> TriangleAreas;
+  std::vector<Quadric> VertexQuadrics;
+  std::vector<double> VertexWeights; // a third of the incident area
+  std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
+  std::vector<Plane> BoundaryPlanes;
+  std::vector<double> BoundaryWeights;
+  std::vector<std::int32_t> BoundaryOffsets, BoundaryOfVertex; // vertex → boundary planes
+
+  // Octree: every node owns a contiguous range of Order (used vertices, input order within a
+  // leaf); Position is the inverse permutation.
+  std::vector<std::int32_t> Order, Position;
+  std::vector<OctreeNode> Nodes;
+  std::priority_queue<HeapEntry> Heap;
+  std::int64_t SurvivingCount = 0;
+
+  // Clusters: ids grow as leaves split; VertexCluster holds the current one of each vertex.
+  std::vector<std::int32_t> VertexCluster;
+  std::vector<Vec3> ClusterPositions;
+  std::vector<std::int32_t> ClusterNodes;
+
+  // Scratch of EvaluateLeaf and SplitLeaf; UnionParent and RootCluster are indexed by Order position.
+  std::vector<std::int32_t> UnionParent, RootCluster;
+  std::vector<std::int32_t> LocalOffsets, LocalFill, LocalMembers;
+
+  // What SplitLeaf changed, so that an overshooting split can be undone.
+  struct
+  {
+    std::size_t Nodes = 0, Clusters = 0;
+    std::int64_t SurvivingCount = 0;
+    std::vector<std::pair<std::int32_t, std::int32_t>> Saved; // vertex, previous cluster
+  } Undo;
+};
+
+void Clusterer::PrepareGeometry()
+{
+  const std::int64_t n = this->Mesh.NumberOfPoints;
+  const std::int64_t m = this->Mesh.NumberOfTriangles;
+  this->Usable.resize(m);
+  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t t = b; t < e; ++t)
+    {
+      this->Usable[t] = IsUsableTriangle(this->Mesh, t) ? 1 : 0;
+    }
+  });
+  this->Adjacency.Build(this->Mesh, this->Usable);
+
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+  Vec3 hi = -lo;
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (this->Adjacency.Offsets[v + 1] > this->Adjacency.Offsets[v])
+    {
+      const Vec3 p = this->Mesh.Point(v);
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  }
+  this->Origin = 0.5 * (lo + hi);
+  const double diagonal = (hi - lo).norm();
+  this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
+  this->P.resize(n);
+  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      this->P[v] = (this->Mesh.Point(v) - this->Origin) * this->Scale;
+    }
+  });
+
+  this->TrianglePlanes.resize(m);
+  this->TriangleAreas.assign(m, 0.0);
+  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t t = b; t < e; ++t)
+    {
+      if (!this->Usable[t])
+      {
+        continue;
+      }
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * t;
+      const Vec3 cross = (this->P[tri[1]] - this->P[tri[0]]).cross(this->P[tri[2]] - this->P[tri[0]]);
+      const double length = cross.norm();
+      if (length > 0.0)
+      {
+        this->TrianglePlanes[t].Normal = cross / length;
+        this->TrianglePlanes[t].Offset = -this->TrianglePlanes[t].Normal.dot(this->P[tri[0]]);
+        this->TriangleAreas[t] = 0.5 * length;
+      }
+    }
+  });
+}
+
+void Clusterer::PrepareQuadrics()
+{
+  const std::int64_t n = this->Mesh.NumberOfPoints;
+  // Boundary planes: perpendicular to the triangle through each boundary edge (paper 000 §3),
+  // weighted by the squared edge length so they scale like the area-weighted face planes.
+  this->BoundaryOffsets.assign(n + 1, 0);
+  if (this->Options.BoundaryPlanes)
+  {
+    const std::vector<BoundaryEdge> edges =
+      FindBoundaryEdges(this->Mesh, this->Usable, this->Adjacency);
+    this->BoundaryPlanes.resize(edges.size());
+    this->BoundaryWeights.assign(edges.size(), 0.0);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+    {
+      const Vec3 edge = this->P[edges[i].V1] - this->P[edges[i].V0];
+      const Vec3 normal = edge.cross(this->TrianglePlanes[edges[i].Triangle].Normal);
+      const double length = normal.norm();
+      if (length > 0.0)
+      {
+        this->BoundaryPlanes[i].Normal = normal / length;
+        this->BoundaryPlanes[i].Offset = -this->BoundaryPlanes[i].Normal.dot(this->P[edges[i].V0]);
+        this->BoundaryWeights[i] = this->Options.BoundaryWeight * edge.squaredNorm();
+      }
+      ++this->BoundaryOffsets[edges[i].V0 + 1];
+      ++this->BoundaryOffsets[edges[i].V1 + 1];
+    }
+    std::partial_sum(
+      this->BoundaryOffsets.begin(), this->BoundaryOffsets.end(), this->BoundaryOffsets.begin());
+    this->BoundaryOfVertex.resize(this->BoundaryOffsets.back());
+    std::vector<std::int32_t> fill(this->BoundaryOffsets.begin(), this->BoundaryOffsets.end() - 1);
+    for (std::size_t i = 0; i < edges.size(); ++i)
+    {
+      this->BoundaryOfVertex[fill[edges[i].V0]++] = static_cast<std::int32_t>(i);
+      this->BoundaryOfVertex[fill[edges[i].V1]++] = static_cast<std::int32_t>(i);
+    }
+  }
+
+  // Vertex quadrics, gathered per vertex (eq. 6): each triangle gives a third of its
+  // area-weighted plane quadric to each corner, each boundary edge half its plane to each end.
+  this->VertexQuadrics.assign(n, Quadric());
+  this->VertexWeights.assign(n, 0.0);
+  this->VertexAreaNormals.assign(n, Vec3::Zero());
+  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      Quadric q;
+      double weight = 0.0;
+      Vec3 areaNormal = Vec3::Zero();
+      for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+      {
+        const double third = this->TriangleAreas[*t] / 3.0;
+        q += Quadric::FromPlane(this->TrianglePlanes[*t].Normal, this->TrianglePlanes[*t].Offset, third);
+        weight += third;
+        areaNormal += third * this->TrianglePlanes[*t].Normal;
+      }
+      for (std::int32_t k = this->BoundaryOffsets[v]; k < this->BoundaryOffsets[v + 1]; ++k)
+      {
+        const std::int32_t i = this->BoundaryOfVertex[k];
+        q += Quadric::FromPlane(this->BoundaryPlanes[i].Normal, this->BoundaryPlanes[i].Offset,
+          0.5 * this->BoundaryWeights[i]);
+      }
+      this->VertexQuadrics[v] = q;
+      this->VertexWeights[v] = weight;
+      this->VertexAreaNormals[v] = areaNormal;
+    }
+  });
+}
+
+Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
+  const std::int32_t* members, std::int32_t count, bool useQuadricMinimum) const
+{
+  // Eq. (3) when the system is well conditioned and its solution stays near the cell (the
+  // cell grown by half its size on each side); otherwise the paper's fallback: the weighted
+  // centre or one of the cluster's vertices, whichever has the least error. Ties keep the centre.
+  Vec3 x;
+  if (useQuadricMinimum && MinimizeQuadric(q, x) &&
+    (x - cell.Center).cwiseAbs().maxCoeff() <= 2.0 * cell.Half)
+  {
+    return x;
+  }
+  Vec3 best = centre;
+  double bestError = q.Evaluate(centre);
+  const double tolerance = 1e-12 * (q.A00 + q.A11 + q.A22);
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    const double error = q.Evaluate(this->P[members[i]]);
+    if (error < bestError - tolerance)
+    {
+      best = this->P[members[i]];
+      bestError = error;
+    }
+  }
+  return best;
+}
+
+double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count) const
+{
+  // e1: distance of x to the planes of the related triangles and to the boundary planes.
+  double error = 0.0;
+  double weight = 0.0;
+  Vec3 areaNormal = Vec3::Zero();
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    const std::int32_t v = members[i];
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    {
+      error = std::max(error, this->TrianglePlanes[*t].Distance(x));
+    }
+    for (std::int32_t k = this->BoundaryOffsets[v]; k < this->BoundaryOffsets[v + 1]; ++k)
+    {
+      error = std::max(error, this->BoundaryPlanes[this->BoundaryOfVertex[k]].Distance(x));
+    }
+    weight += this->VertexWeights[v];
+    areaNormal += this->VertexAreaNormals[v];
+  }
+  // e2: distance of the cluster's vertices to the new surface around x, which the triangles of
+  // the fan approximate by the cluster's mean plane through x. Where the normals spread over
+  // more than a hemisphere-like cone (|mean normal| < 1/2: a tip, a thin tube, a folded sheet),
+  // no plane fits and the distance to x itself is used.
+  if (count > 1)
+  {
+    const double coherence = weight > 0.0 ? areaNormal.norm() / weight : 0.0;
+    const Vec3 normal = coherence > 0.0 ? Vec3(areaNormal.normalized()) : Vec3::Zero();
+    for (std::int32_t i = 0; i < count; ++i)
+    {
+      const Vec3 offset = this->P[members[i]] - x;
+      error = std::max(error, coherence >= 0.5 ? std::abs(normal.dot(offset)) : offset.norm());
+    }
+  }
+  return error;
+}
+
+double Clusterer::EvaluateLeaf(std::int32_t node, bool& canSplit)
+{
+  const OctreeNode cell = this->Nodes[node];
+  const std::int32_t begin = cell.Begin, end = cell.End;
+
+  // Clusters are the connected components of the leaf's vertices (edges inside the leaf only).
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    this->UnionParent[i] = i;
+  }
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+      for (int k = 0; k < 3; ++k)
+      {
+        if (tri[k] != v && this->InRange(tri[k], begin, end))
+        {
+          const std::int32_t a = this->Find(i), b = this->Find(this->Position[tri[k]]);
+          if (a != b)
+          {
+            this->UnionParent[std::max(a, b)] = std::min(a, b);
+          }
+        }
+      }
+    }
+  }
+  const std::int32_t first = static_cast<std::int32_t>(this->ClusterPositions.size());
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t root = this->Find(i);
+    if (root == i)
+    {
+      this->RootCluster[i] = static_cast<std::int32_t>(this->ClusterPositions.size());
+      this->ClusterPositions.emplace_back(Vec3::Zero());
+      this->ClusterNodes.push_back(node);
+    }
+    this->VertexCluster[this->Order[i]] = this->RootCluster[root];
+  }
+  const std::int32_t count = static_cast<std::int32_t>(this->ClusterPositions.size()) - first;
+
+  // Members of each cluster (counting sort) and their quadrics, eq. (6).
+  this->LocalOffsets.assign(count + 1, 0);
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    ++this->LocalOffsets[this->VertexCluster[this->Order[i]] - first + 1];
+  }
+  std::partial_sum(this->LocalOffsets.begin(), this->LocalOffsets.end(), this->LocalOffsets.begin());
+  this->LocalFill.assign(this->LocalOffsets.begin(), this->LocalOffsets.end() - 1);
+  this->LocalMembers.resize(end - begin);
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    this->LocalMembers[this->LocalFill[this->VertexCluster[v] - first]++] = v;
+  }
+
+  double key = 0.0;
+  for (std::int32_t c = 0; c < count; ++c)
+  {
+    const std::int32_t* members = this->LocalMembers.data() + this->LocalOffsets[c];
+    const std::int32_t size = this->LocalOffsets[c + 1] - this->LocalOffsets[c];
+    Vec3& x = this->ClusterPositions[first + c];
+    if (size == 1)
+    {
+      x = this->P[members[0]];
+      continue; // a lone vertex stays where it is: no error
+    }
+    x = this->PlaceRepresentative(
+      this->ClusterQuadric(members, size), this->ClusterCentre(members, size), cell, members, size, true);
+    key = std::max(key, this->ClusterError(x, members, size));
+  }
+
+  // §2.4: clustering must not turn a related triangle against its original normal. Only
+  // triangles with one corner in the leaf survive; the corners outside keep their positions.
+  // With an error bound a flipping leaf is always split; with a count target it is split
+  // earlier than its error alone would order it.
+  if (this->Options.PreventFlips && this->LeafFlips(begin, end))
+  {
+    key = this->Options.TargetTriangles >= 0 ? 2.0 * key + MinimumCellHalfSize : FlipSplitKey;
+  }
+
+  canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
+    cell.Depth < MaximumDepth;
+  const bool tooLarge = this->Options.MaximumCellSize > 0.0 &&
+    this->Options.MaximumCellSize < 1.0 && 2.0 * cell.Half > this->Options.MaximumCellSize;
+  const bool tooFull = this->Options.MaximumVerticesPerCell > 0 &&
+    end - begin > this->Options.MaximumVerticesPerCell;
+  if ((tooLarge && end - begin >= 2) || tooFull)
+  {
+    key = ForcedSplitKey;
+    canSplit = cell.Half > MinimumCellHalfSize && cell.Depth < MaximumDepth;
+  }
+  return key;
+}
+
+bool Clusterer::LeafFlips(std::int32_t begin, std::int32_t end) const
+{
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+      const int inside = this->InRange(tri[0], begin, end) + this->InRange(tri[1], begin, end) +
+        this->InRange(tri[2], begin, end);
+      if (inside != 1 || this->TriangleAreas[*t] <= 0.0)
+      {
+        continue;
+      }
+      Vec3 corner[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        corner[k] = tri[k] == v ? this->ClusterPositions[this->VertexCluster[v]] : this->P[tri[k]];
+      }
+      const Vec3 normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
+      if (normal.dot(this->TrianglePlanes[*t].Normal) <= 0.0)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+Quadric Clusterer::ClusterQuadric(const std::int32_t* members, std::int32_t count) const
+{
+  Quadric q;
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    q += this->VertexQuadrics[members[i]];
+  }
+  return q;
+}
+
+Vec3 Clusterer::ClusterCentre(const std::int32_t* members, std::int32_t count) const
+{
+  // Area-weighted centre; the plain mean when the cluster has no area.
+  Vec3 sum = Vec3::Zero(), plain = Vec3::Zero();
+  double weight = 0.0;
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    const double w = this->VertexWeights[members[i]];
+    sum += w * this->P[members[i]];
+    plain += this->P[members[i]];
+    weight += w;
+  }
+  return weight > 0.0 ? Vec3(sum / weight) : Vec3(plain / count);
+}
+
+std::int64_t Clusterer::CountSurviving(std::int32_t begin, std::int32_t end) const
+{
+  // Triangles related to the range, each counted once (from its first corner in the range),
+  // that keep three distinct clusters.
+  std::int64_t surviving = 0;
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+      bool firstInRange = true;
+      for (int k = 0; k < 3 && tri[k] != v; ++k)
+      {
+        firstInRange = firstInRange && !this->InRange(tri[k], begin, end);
+      }
+      if (!firstInRange)
+      {
+        continue;
+      }
+      const std::int32_t c0 = this->VertexCluster[tri[0]], c1 = this->VertexCluster[tri[1]],
+                         c2 = this->VertexCluster[tri[2]];
+      surviving += (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
+    }
+  }
+  return surviving;
+}
+
+void Clusterer::SplitLeaf(std::int32_t node, std::vector<HeapEntry>& children)
+{
+  const OctreeNode cell = this->Nodes[node];
+  const std::int32_t begin = cell.Begin, end = cell.End;
+  this->Undo.Nodes = this->Nodes.size();
+  this->Undo.Clusters = this->ClusterPositions.size();
+  this->Undo.SurvivingCount = this->SurvivingCount;
+  this->Undo.Saved.clear();
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    this->Undo.Saved.emplace_back(this->Order[i], this->VertexCluster[this->Order[i]]);
+  }
+  const std::int64_t before = this->CountSurviving(begin, end);
+
+  // Distribute the vertices to the octants, keeping their order (stable counting sort).
+  auto octant = [&](std::int32_t v) {
+    const Vec3& p = this->P[v];
+    return (p.x() > cell.Center.x() ? 1 : 0) | (p.y() > cell.Center.y() ? 2 : 0) |
+      (p.z() > cell.Center.z() ? 4 : 0);
+  };
+  std::array<std::int32_t, 9> start{};
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    ++start[octant(this->Order[i]) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::array<std::int32_t, 8> fill;
+  std::copy(start.begin(), start.begin() + 8, fill.begin());
+  this->LocalMembers.resize(end - begin);
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    this->LocalMembers[fill[octant(v)]++] = v;
+  }
+  for (std::int32_t i = begin; i < end; ++i)
+  {
+    this->Order[i] = this->LocalMembers[i - begin];
+    this->Position[this->Order[i]] = i;
+  }
+
+  children.clear();
+  const double half = 0.5 * cell.Half;
+  for (int o = 0; o < 8; ++o)
+  {
+    if (start[o + 1] == start[o])
+    {
+      continue;
+    }
+    OctreeNode child;
+    child.Center = cell.Center +
+      half * Vec3((o & 1) ? 1.0 : -1.0, (o & 2) ? 1.0 : -1.0, (o & 4) ? 1.0 : -1.0);
+    child.Half = half;
+    child.Begin = begin + start[o];
+    child.End = begin + start[o + 1];
+    child.Depth = cell.Depth + 1;
+    const std::int32_t id = static_cast<std::int32_t>(this->Nodes.size());
+    this->Nodes.push_back(child);
+    bool canSplit = false;
+    const double key = this->EvaluateLeaf(id, canSplit);
+    if (canSplit)
+    {
+      children.push_back({ key, half, id });
+    }
+  }
+  this->SurvivingCount += this->CountSurviving(begin, end) - before;
+}
+
+void Clusterer::UndoSplit()
+{
+  for (const auto& saved : this->Undo.Saved)
+  {
+    this->VertexCluster[saved.first] = saved.second;
+  }
+  this->Nodes.resize(this->Undo.Nodes);
+  this->ClusterPositions.resize(this->Undo.Clusters);
+  this->ClusterNodes.resize(this->Undo.Clusters);
+  this->SurvivingCount = this->Undo.SurvivingCount;
+}
+
+bool Clusterer::Refine(std::int64_t target, double bound)
+{
+  std::vector<HeapEntry> children;
+  int rejections = 0;
+  std::int64_t splits = 0;
+  const double firstKey = this->Heap.empty() ? 0.0 : this->Heap.top().Key;
+  while (!this->Heap.empty())
+  {
+    const HeapEntry top = this->Heap.top();
+    const bool forced = top.Key == ForcedSplitKey;
+    if (!forced && (target >= 0 ? this->SurvivingCount >= target : top.Key <= bound))
+    {
+      break;
+    }
+    this->Heap.pop();
+    const std::int64_t before = this->SurvivingCount;
+    this->SplitLeaf(top.Node, children);
+    // With a count target, a split that overshoots further than stopping short is undone and
+    // smaller leaves are tried instead.
+    if (target >= 0 && !forced && this->SurvivingCount > target &&
+      this->SurvivingCount - target > target - before)
+    {
+      this->UndoSplit();
+      if (++rejections > 64)
+      {
+        break;
+      }
+      continue;
+    }
+    for (const HeapEntry& child : children)
+    {
+      this->Heap.push(child);
+    }
+    if (++splits % 256 == 0)
+    {
+      double done = 0.0;
+      if (target > 0)
+      {
+        done = static_cast<double>(this->SurvivingCount) / target;
+      }
+      else if (top.Key < FlipSplitKey && firstKey < FlipSplitKey && top.Key > bound && firstKey > bound)
+      {
+        done = std::log(firstKey / top.Key) / std::log(firstKey / bound);
+      }
+      if (!this->Context.Report(0.15 + 0.7 * std::min(std::max(done, 0.0), 1.0)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+std::vector<std::int32_t> Clusterer::SurvivingTriangles() const
+{
+  // Triangles with three distinct clusters, minus duplicates (the same three clusters in either
+  // orientation): the lowest input triangle of each set survives.
+  struct Key
+  {
+    std::array<std::int32_t, 3> Clusters;
+    std::int32_t Triangle;
+    bool operator<(const Key& o) const
+    {
+      return this->Clusters != o.Clusters ? this->Clusters < o.Clusters : this->Triangle < o.Triangle;
+    }
+  };
+  std::vector<Key> keys;
+  for (std::int64_t t = 0; t < this->Mesh.NumberOfTriangles; ++t)
+  {
+    if (!this->Usable[t])
+    {
+      continue;
+    }
+    const std::int32_t* tri = this->Mesh.Triangles + 3 * t;
+    std::array<std::int32_t, 3> c = { this->VertexCluster[tri[0]], this->VertexCluster[tri[1]],
+      this->VertexCluster[tri[2]] };
+    if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+    {
+      std::sort(c.begin(), c.end());
+      keys.push_back({ c, static_cast<std::int32_t>(t) });
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::int32_t> survivors;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+  {
+    if (i == 0 || keys[i].Clusters != keys[i - 1].Clusters)
+    {
+      survivors.push_back(keys[i].Triangle);
+    }
+  }
+  std::sort(survivors.begin(), survivors.end());
+  return survivors;
+}
+
+void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClusteringResult& result)
+{
+  const std::int64_t n = this->Mesh.NumberOfPoints;
+  // Output points: clusters with a surviving triangle, in the order of their first vertex.
+  std::vector<std::uint8_t> referenced(this->ClusterPositions.size(), 0);
+  for (const std::int32_t t : survivors)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      referenced[this->VertexCluster[this->Mesh.Triangles[3 * static_cast<std::int64_t>(t) + k]]] = 1;
+    }
+  }
+  std::vector<std::int32_t> pointOfCluster(this->ClusterPositions.size(), -1);
+  std::vector<std::int32_t> clusterOfPoint;
+  result.VertexToPoint.assign(n, -1);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    const std::int32_t c = this->VertexCluster[v];
+    if (c < 0 || !referenced[c])
+    {
+      continue;
+    }
+    if (pointOfCluster[c] < 0)
+    {
+      pointOfCluster[c] = static_cast<std::int32_t>(clusterOfPoint.size());
+      clusterOfPoint.push_back(c);
+    }
+    result.VertexToPoint[v] = pointOfCluster[c];
+  }
+  const std::int64_t numberOfPoints = static_cast<std::int64_t>(clusterOfPoint.size());
+  result.ClusterOffsets.assign(numberOfPoints + 1, 0);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (result.VertexToPoint[v] >= 0)
+    {
+      ++result.ClusterOffsets[result.VertexToPoint[v] + 1];
+    }
+  }
+  std::partial_sum(
+    result.ClusterOffsets.begin(), result.ClusterOffsets.end(), result.ClusterOffsets.begin());
+  result.ClusterVertices.resize(result.ClusterOffsets.back());
+  std::vector<std::int32_t> fill(result.ClusterOffsets.begin(), result.ClusterOffsets.end() - 1);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (result.VertexToPoint[v] >= 0)
+    {
+      result.ClusterVertices[fill[result.VertexToPoint[v]]++] = static_cast<std::int32_t>(v);
+    }
+  }
+  auto members = [&](std::int64_t p) { return result.ClusterVertices.data() + result.ClusterOffsets[p]; };
+  auto size = [&](std::int64_t p) { return result.ClusterOffsets[p + 1] - result.ClusterOffsets[p]; };
+
+  std::vector<Vec3> position(numberOfPoints), centre(numberOfPoints);
+  std::vector<Quadric> faceQuadric(numberOfPoints);
+  this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t p = b; p < e; ++p)
+    {
+      position[p] = this->ClusterPositions[clusterOfPoint[p]];
+      centre[p] = this->ClusterCentre(members(p), size(p));
+      faceQuadric[p] = this->ClusterQuadric(members(p), size(p));
+    }
+  });
+
+  // e2 by the paper's iteration (eq. 8–11): with the representatives of the previous iterate,
+  // the squared distance of a cluster vertex a to a new triangle (v0, b', c') is the squared
+  // distance of v0 to the plane through (a, b', c') scaled by (area(a,b',c') / area(v0,b',c'))².
+  const bool bounded = this->Options.TargetTriangles < 0;
+  const double bound = this->Bound();
+  std::vector<Quadric> quadric(numberOfPoints);
+  std::vector<Vec3> next(numberOfPoints);
+  for (int iteration = 0; iteration < this->Options.ErrorIterations; ++iteration)
+  {
+    quadric = faceQuadric;
+    for (const std::int32_t t : survivors)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::int32_t a = tri[k];
+        const std::int32_t pa = result.VertexToPoint[a];
+        if (size(pa) == 1)
+        {
+          continue; // a lone vertex is its own representative
+        }
+        const Vec3& xb = position[result.VertexToPoint[tri[(k + 1) % 3]]];
+        const Vec3& xc = position[result.VertexToPoint[tri[(k + 2) % 3]]];
+        const Vec3 through = (xb - this->P[a]).cross(xc - this->P[a]);
+        const double areaThrough = through.norm();
+        const double areaNew = (xb - position[pa]).cross(xc - position[pa]).norm();
+        if (areaThrough <= 0.0)
+        {
+          continue;
+        }
+        const double ratio = areaNew > 0.0 ? std::min(areaThrough / areaNew, 2.0) : 2.0;
+        const Vec3 normal = through / areaThrough;
+        quadric[pa] += Quadric::FromPlane(normal, -normal.dot(this->P[a]), 0.5 * areaThrough * ratio * ratio);
+      }
+    }
+    this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+      for (std::int64_t p = b; p < e; ++p)
+      {
+        next[p] = position[p];
+        if (size(p) == 1)
+        {
+          continue;
+        }
+        const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
+        const Vec3 x = this->PlaceRepresentative(quadric[p], centre[p], cell, members(p), size(p), true);
+        if (!bounded || this->ClusterError(x, members(p), size(p)) <= bound)
+        {
+          next[p] = x;
+        }
+      }
+    });
+    position.swap(next);
+  }
+
+  result.Points.resize(3 * numberOfPoints);
+  result.ClusterErrors.resize(numberOfPoints);
+  result.ClusterWeights.resize(result.ClusterVertices.size());
+  this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t p = b; p < e; ++p)
+    {
+      const Vec3 x = position[p] / this->Scale + this->Origin;
+      for (int k = 0; k < 3; ++k)
+      {
+        result.Points[3 * p + k] = x[k];
+      }
+      result.ClusterErrors[p] = this->ClusterError(position[p], members(p), size(p)) / this->Scale;
+      double total = 0.0;
+      for (std::int32_t i = 0; i < size(p); ++i)
+      {
+        total += this->VertexWeights[members(p)[i]];
+      }
+      for (std::int32_t i = 0; i < size(p); ++i)
+      {
+        result.ClusterWeights[result.ClusterOffsets[p] + i] =
+          total > 0.0 ? this->VertexWeights[members(p)[i]] / total : 1.0 / size(p);
+      }
+    }
+  });
+  result.MaximumClusterError =
+    result.ClusterErrors.empty() ? 0.0 : *std::max_element(result.ClusterErrors.begin(), result.ClusterErrors.end());
+
+  result.Triangles.resize(3 * survivors.size());
+  result.SourceTriangles = survivors;
+  for (std::size_t i = 0; i < survivors.size(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      result.Triangles[3 * i + k] =
+        result.VertexToPoint[this->Mesh.Triangles[3 * static_cast<std::int64_t>(survivors[i]) + k]];
+    }
+  }
+}
+
+bool Clusterer::Run(OctreeClusteringResult& result)
+{
+  result = OctreeClusteringResult();
+  this->PrepareGeometry();
+  if (!this->Context.Report(0.05))
+  {
+    return false;
+  }
+  this->PrepareQuadrics();
+  if (!this->Context.Report(0.15))
+  {
+    return false;
+  }
+
+  const std::int64_t n = this->Mesh.NumberOfPoints;
+  this->Position.assign(n, -1);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+  Vec3 hi = -lo;
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (this->Adjacency.Offsets[v + 1] > this->Adjacency.Offsets[v])
+    {
+      this->Position[v] = static_cast<std::int32_t>(this->Order.size());
+      this->Order.push_back(static_cast<std::int32_t>(v));
+      lo = lo.cwiseMin(this->P[v]);
+      hi = hi.cwiseMax(this->P[v]);
+    }
+  }
+  result.UsableInputTriangles = std::count(this->Usable.begin(), this->Usable.end(), 1);
+  if (this->Order.empty())
+  {
+    return true;
+  }
+  this->VertexCluster.assign(n, -1);
+  this->UnionParent.resize(this->Order.size());
+  this->RootCluster.resize(this->Order.size());
+
+  OctreeNode root;
+  root.Center = 0.5 * (lo + hi);
+  root.Half = 0.5 * (hi - lo).maxCoeff() * (1.0 + 1e-9) + 1e-12;
+  root.Begin = 0;
+  root.End = static_cast<std::int32_t>(this->Order.size());
+  root.Depth = 0;
+  this->Nodes.push_back(root);
+  bool canSplit = false;
+  const double key = this->EvaluateLeaf(0, canSplit);
+  this->SurvivingCount = this->CountSurviving(0, root.End);
+  if (canSplit)
+  {
+    this->Heap.push({ key, root.Half, 0 });
+  }
+
+  // A count target is approached on the estimate (triangles with three distinct clusters);
+  // duplicates removed at the end may leave it short, so refinement resumes up to 3 times.
+  const std::int64_t target = this->Options.TargetTriangles;
+  std::int64_t internalTarget = target;
+  std::vector<std::int32_t> survivors;
+  for (int round = 0;; ++round)
+  {
+    if (!this->Refine(internalTarget, this->Bound()))
+    {
+      result.Aborted = true;
+      return false;
+    }
+    survivors = this->SurvivingTriangles();
+    const std::int64_t shortfall = target - static_cast<std::int64_t>(survivors.size());
+    if (target < 0 || round == 3 || this->Heap.empty() || shortfall <= target / 200)
+    {
+      break;
+    }
+    internalTarget += shortfall;
+  }
+  if (!this->Context.Report(0.85))
+  {
+    result.Aborted = true;
+    return false;
+  }
+
+  this->Finalize(survivors, result);
+  std::vector<std::uint8_t> isLeaf(this->Nodes.size(), 0);
+  for (const std::int32_t v : this->Order)
+  {
+    isLeaf[this->ClusterNodes[this->VertexCluster[v]]] = 1;
+  }
+  for (std::size_t i = 0; i < this->Nodes.size(); ++i)
+  {
+    if (isLeaf[i])
+    {
+      ++result.NumberOfLeaves;
+      result.Depth = std::max(result.Depth, this->Nodes[i].Depth);
+    }
+  }
+  return this->Context.Report(1.0);
+}
+
+} // namespace
+
+bool OctreeVertexClustering(const TriangleMeshView& mesh, const OctreeClusteringOptions& options,
+  OctreeClusteringResult& result, const ExecutionContext& context)
+{
+  Clusterer clusterer(mesh, options, context);
+  const bool finished = clusterer.Run(result);
+  result.Aborted = !finished;
+  return finished;
+}
+
+} // namespace meshsimp

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file OctreeVertexClustering.h
+ * @brief Adaptive octree vertex clustering with quadric-optimal representatives (paper 000, §2–3).
+ *
+ * Zhou, Zhang, Shi and Pan, "A new simplification algorithm for colored or textured polygonal
+ * models". The bounding cube is refined as an octree, vertices are inserted in input order, and
+ * every leaf's vertices are clustered to one representative. Unlike a uniform grid
+ * (Rossignac–Borrel, vtkQuadricClustering):
+ *  - a leaf is split where it is too large (MaximumCellSize), too full (MaximumVerticesPerCell),
+ *    where clustering it would flip a triangle of its related set (§2.4), and where its error
+ *    exceeds the bound ε (§2.5 step 3); with a triangle-count target, leaves are split in
+ *    decreasing order of error until the count is met;
+ *  - vertices of a leaf that are not connected by edges inside it form separate clusters, so
+ *    distinct parts of the surface are never merged (the distortion of Figure 1);
+ *  - the representative minimises the quadric of its related triangles' planes (eq. 2–3, 5–7)
+ *    plus boundary planes perpendicular to boundary edges; when that system is near singular
+ *    it falls back to the best of the cluster's vertices and its weighted centre;
+ *  - the second error term e2 (squared distances of the cluster's vertices to the new triangles
+ *    around the representative, eq. 8–11) is added by the paper's fixed-point iteration.
+ *
+ * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
+ * the supporting plane of any triangle of its cluster's related set (every input triangle with
+ * a vertex in the cluster) and to the boundary planes of its boundary edges. With an error
+ * bound, every leaf is refined until each cluster error is at most ε, unless the leaf holds a
+ * single vertex (error 0) or coincident points.
+ */
+#ifndef MeshSimplification_OctreeVertexClustering_h
+#define MeshSimplification_OctreeVertexClustering_h
+
+#include "Execution.h"
+#include "TriangleMesh.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace meshsimp
+{
+
+struct OctreeClusteringOptions
+{
+  /// Wanted number of output triangles; < 0 selects the error-bound mode.
+  std::int64_t TargetTriangles = -1;
+  /// ε, a distance used when TargetTriangles < 0: absolute, or relative to the bounding-box
+  /// diagonal of the used points when RelativeError is set.
+  double MaximumError = 0.0;
+  bool RelativeError = false;
+  /// Leaves with a larger edge, relative to the bounding-box diagonal, are always split;
+  /// <= 0 or >= 1: no limit.
+  double MaximumCellSize = 0.0;
+  /// Leaves with more vertices are always split; <= 0: no limit.
+  std::int64_t MaximumVerticesPerCell = 0;
+  /// Fixed-point iterations for the e2 term (paper: 3 are enough); 0 uses e1 only.
+  int ErrorIterations = 3;
+  /// Add planes perpendicular to boundary edges (paper §3) so open borders are kept.
+  bool BoundaryPlanes = true;
+  double BoundaryWeight = 1.0;
+  /// Split leaves whose clustering would flip a related triangle (§2.4).
+  bool PreventFlips = true;
+};
+
+struct OctreeClusteringResult
+{
+  std::vector<double> Points;                // 3 per output point
+  std::vector<std::int32_t> Triangles;       // 3 per output triangle
+  std::vector<std::int32_t> SourceTriangles; // input triangle each output triangle comes from
+  /// Cluster membership of each output point (CSR): input vertices and normalised weights.
+  std::vector<std::int32_t> ClusterOffsets;
+  std::vector<std::int32_t> ClusterVertices;
+  std::vector<double> ClusterWeights;
+  /// Per output point: the bounded cluster error (a distance in input units), see above.
+  std::vector<double> ClusterErrors;
+  /// Input vertex → output point, −1 for vertices whose cluster has no surviving triangle.
+  std::vector<std::int32_t> VertexToPoint;
+  double MaximumClusterError = 0.0;
+  std::int64_t UsableInputTriangles = 0;
+  std::int64_t NumberOfLeaves = 0;
+  int Depth = 0;
+  bool Aborted = false;
+};
+
+/// Runs the clustering. Invalid triangles (bad index, repeated index, non-finite corner) are
+/// skipped. Returns false only when aborted.
+bool OctreeVertexClustering(const TriangleMeshView& mesh, const OctreeClusteringOptions& options,
+  OctreeClusteringResult& result, const ExecutionContext& context = {});
+
+} // namespace meshsimp
+
+#endif

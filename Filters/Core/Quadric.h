@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file Quadric.h
+ * @brief Symmetric 4x4 error quadrics (Garland–Heckbert) and their robust minimiser.
+ *
+ * A quadric Q measures a weighted sum of squared distances to planes:
+ * Q(v) = vᵀ A v + 2 bᵀ v + c, the expanded form of paper 000 eq. (1) and (6)–(7).
+ * It is stored as 10 doubles (upper triangle of A, b, c) so arrays of quadrics stay flat.
+ * The collapse- and clustering-based filters of this project share it.
+ */
+#ifndef MeshSimplification_Quadric_h
+#define MeshSimplification_Quadric_h
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+namespace meshsimp
+{
+
+struct Quadric
+{
+  double A00 = 0, A01 = 0, A02 = 0, A11 = 0, A12 = 0, A22 = 0;
+  double B0 = 0, B1 = 0, B2 = 0;
+  double C = 0;
+
+  /// w · (nᵀv + d)²: the plane nᵀv + d = 0 with unit normal n, weighted by w (eq. 7).
+  static Quadric FromPlane(const Eigen::Vector3d& n, double d, double w)
+  {
+    Quadric q;
+    q.A00 = w * n.x() * n.x();
+    q.A01 = w * n.x() * n.y();
+    q.A02 = w * n.x() * n.z();
+    q.A11 = w * n.y() * n.y();
+    q.A12 = w * n.y() * n.z();
+    q.A22 = w * n.z() * n.z();
+    q.B0 = w * d * n.x();
+    q.B1 = w * d * n.y();
+    q.B2 = w * d * n.z();
+    q.C = w * d * d;
+    return q;
+  }
+
+  Quadric& operator+=(const Quadric& o)
+  {
+    A00 += o.A00;
+    A01 += o.A01;
+    A02 += o.A02;
+    A11 += o.A11;
+    A12 += o.A12;
+    A22 += o.A22;
+    B0 += o.B0;
+    B1 += o.B1;
+    B2 += o.B2;
+    C += o.C;
+    return *this;
+  }
+
+  Eigen::Matrix3d A() const
+  {
+    Eigen::Matrix3d a;
+    a << A00, A01, A02, A01, A11, A12, A02, A12, A22;
+    return a;
+  }
+  Eigen::Vector3d B() const { return { B0, B1, B2 }; }
+
+  /// Q(v), eq. (1). Clamped at zero against round-off.
+  double Evaluate(const Eigen::Vector3d& v) const
+  {
+    const double value = v.dot(this->A() * v) + 2.0 * this->B().dot(v) + this->C;
+    return value > 0.0 ? value : 0.0;
+  }
+};
+
+/**
+ * Minimise Q (eq. 2–3) when its 3x3 block is well conditioned.
+ * Conditioning is judged from the eigenvalues of A, not from det(A): the solve is accepted only
+ * when λmin > relativeTolerance · λmax, so a nearly planar or nearly cylindrical set of planes
+ * (rank 1 or 2) is reported as singular instead of producing a far-away point.
+ */
+inline bool MinimizeQuadric(const Quadric& q, Eigen::Vector3d& x, double relativeTolerance = 1e-6)
+{
+  const Eigen::Matrix3d a = q.A();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(a);
+  const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
+  if (!(lambda(2) > 0.0) || !(lambda(0) > relativeTolerance * lambda(2)))
+  {
+    return false;
+  }
+  const Eigen::Matrix3d& u = eig.eigenvectors();
+  x = -(u * (u.transpose() * q.B()).cwiseQuotient(lambda));
+  return x.allFinite();
+}
+
+} // namespace meshsimp
+
+#endif

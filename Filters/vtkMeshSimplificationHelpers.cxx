@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMeshSimplificationHelpers.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolygon.h"
+#include "vtkSMPTools.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <thread>
+
+namespace vtkMeshSimplificationHelpers
+{
+
+bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error)
+{
+  out = TriangleInput();
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  if (numberOfPoints >= std::numeric_limits<std::int32_t>::max())
+  {
+    error = "the input has more than 2^31 - 1 points";
+    return false;
+  }
+  if (numberOfPoints > 0)
+  {
+    vtkDataArray* coordinates = input->GetPoints()->GetData();
+    auto* doubles = vtkDoubleArray::SafeDownCast(coordinates);
+    if (doubles && doubles->GetNumberOfComponents() == 3)
+    {
+      out.View.Points = doubles->GetPointer(0);
+    }
+    else
+    {
+      out.PointCopy.resize(3 * numberOfPoints);
+      for (vtkIdType i = 0; i < numberOfPoints; ++i)
+      {
+        coordinates->GetTuple(i, out.PointCopy.data() + 3 * i);
+      }
+      out.View.Points = out.PointCopy.data();
+    }
+    for (vtkIdType i = 0; i < 3 * numberOfPoints; ++i)
+    {
+      out.NumberOfNonFinitePoints += std::isfinite(out.View.Points[i]) ? 0 : 1;
+    }
+  }
+  out.View.NumberOfPoints = numberOfPoints;
+  out.NumberOfVerts = input->GetNumberOfVerts();
+  out.NumberOfLines = input->GetNumberOfLines();
+
+  // Cell ids of vtkPolyData run over verts, lines, polys, then strips.
+  vtkIdType cellId = out.NumberOfVerts + out.NumberOfLines;
+  auto add = [&](vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType source) {
+    out.Triangles.push_back(static_cast<std::int32_t>(a));
+    out.Triangles.push_back(static_cast<std::int32_t>(b));
+    out.Triangles.push_back(static_cast<std::int32_t>(c));
+    out.SourceCells.push_back(source);
+  };
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> triangleIds;
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    polys->GetCurrentCell(size, ids);
+    if (size == 3)
+    {
+      add(ids[0], ids[1], ids[2], cellId);
+    }
+    else if (size > 3)
+    {
+      // Ear-cut triangulation of the polygon (handles non-convex ones); a fan when it fails.
+      polygon->Initialize(static_cast<int>(size), ids, input->GetPoints());
+      if (polygon->Triangulate(triangleIds) && triangleIds->GetNumberOfIds() == 3 * (size - 2))
+      {
+        for (vtkIdType k = 0; k < triangleIds->GetNumberOfIds(); k += 3)
+        {
+          add(ids[triangleIds->GetId(k)], ids[triangleIds->GetId(k + 1)],
+            ids[triangleIds->GetId(k + 2)], cellId);
+        }
+      }
+      else
+      {
+        for (vtkIdType k = 1; k + 1 < size; ++k)
+        {
+          add(ids[0], ids[k], ids[k + 1], cellId);
+        }
+      }
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cellId)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    strips->GetCurrentCell(size, ids);
+    for (vtkIdType k = 0; k + 2 < size; ++k)
+    {
+      if (k % 2 == 0)
+      {
+        add(ids[k], ids[k + 1], ids[k + 2], cellId);
+      }
+      else
+      {
+        add(ids[k + 1], ids[k], ids[k + 2], cellId);
+      }
+    }
+  }
+  if (out.Triangles.size() / 3 >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+  {
+    error = "the input has more than 2^31 - 1 triangles";
+    return false;
+  }
+  out.View.Triangles = out.Triangles.data();
+  out.View.NumberOfTriangles = static_cast<std::int64_t>(out.Triangles.size() / 3);
+  return true;
+}
+
+int ResolveThreadCount(int numberOfThreads)
+{
+  return numberOfThreads > 0 ? numberOfThreads
+                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int numberOfThreads)
+{
+  meshsimp::ExecutionContext context;
+  const int threads = ResolveThreadCount(numberOfThreads);
+  if (threads > 1)
+  {
+    context.ParallelFor = [threads](std::int64_t n,
+                            const std::function<void(std::int64_t, std::int64_t)>& body) {
+      vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
+        vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+          [&](vtkIdType begin, vtkIdType end) { body(begin, end); });
+      });
+    };
+  }
+  context.Progress = [algorithm](double progress) {
+    algorithm->UpdateProgress(progress);
+    return !algorithm->CheckAbort();
+  };
+  return context;
+}
+
+vtkSmartPointer<vtkPoints> MakePoints(
+  const std::vector<double>& coordinates, int outputPointsPrecision, vtkPoints* inputPoints)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  if (outputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION ||
+    (outputPointsPrecision == vtkAlgorithm::DEFAULT_PRECISION && inputPoints &&
+      inputPoints->GetDataType() == VTK_DOUBLE))
+  {
+    points->SetDataTypeToDouble();
+  }
+  else
+  {
+    points->SetDataTypeToFloat();
+  }
+  const vtkIdType count = static_cast<vtkIdType>(coordinates.size() / 3);
+  points->SetNumberOfPoints(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    points->SetPoint(i, coordinates.data() + 3 * i);
+  }
+  return points;
+}
+
+vtkSmartPointer<vtkCellArray> MakeTriangles(const std::vector<std::int32_t>& triangles)
+{
+  const vtkIdType count = static_cast<vtkIdType>(triangles.size() / 3);
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  connectivity->SetNumberOfValues(3 * count);
+  for (vtkIdType i = 0; i <= count; ++i)
+  {
+    offsets->SetValue(i, 3 * i);
+  }
+  for (vtkIdType i = 0; i < 3 * count; ++i)
+  {
+    connectivity->SetValue(i, triangles[i]);
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+namespace
+{
+Eigen::Vector3d TriangleAreaNormal(
+  const std::vector<double>& points, const std::vector<std::int32_t>& triangles, std::size_t t)
+{
+  auto corner = [&](int k) {
+    const double* p = points.data() + 3 * static_cast<std::size_t>(triangles[3 * t + k]);
+    return Eigen::Vector3d(p[0], p[1], p[2]);
+  };
+  return (corner(1) - corner(0)).cross(corner(2) - corner(0));
+}
+}
+
+void ComputePointNormals(const std::vector<double>& points,
+  const std::vector<std::int32_t>& triangles, vtkDataArray* normals)
+{
+  std::vector<Eigen::Vector3d> sums(points.size() / 3, Eigen::Vector3d::Zero());
+  for (std::size_t t = 0; t < triangles.size() / 3; ++t)
+  {
+    const Eigen::Vector3d n = TriangleAreaNormal(points, triangles, t);
+    for (int k = 0; k < 3; ++k)
+    {
+      sums[triangles[3 * t + k]] += n;
+    }
+  }
+  for (std::size_t i = 0; i < sums.size(); ++i)
+  {
+    const double length = sums[i].norm();
+    const Eigen::Vector3d n = length > 0.0 ? Eigen::Vector3d(sums[i] / length) : Eigen::Vector3d(0, 0, 1);
+    normals->SetTuple(static_cast<vtkIdType>(i), n.data());
+  }
+}
+
+void ComputeCellNormals(const std::vector<double>& points,
+  const std::vector<std::int32_t>& triangles, vtkDataArray* normals)
+{
+  for (std::size_t t = 0; t < triangles.size() / 3; ++t)
+  {
+    Eigen::Vector3d n = TriangleAreaNormal(points, triangles, t);
+    const double length = n.norm();
+    n = length > 0.0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d(0, 0, 1);
+    normals->SetTuple(static_cast<vtkIdType>(t), n.data());
+  }
+}
+
+}

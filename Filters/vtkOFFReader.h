@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkOFFReader
+ * @brief   read an ASCII Object File Format (.off) mesh into vtkPolyData
+ *
+ * OFF files (Geomview, CGAL, many mesh repositories) hold points and polygons of any size.
+ * Only the plain "OFF" variant is read; colours after the coordinates are ignored.
+ */
+#ifndef vtkOFFReader_h
+#define vtkOFFReader_h
+
+#include "MeshSimplificationFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOFFReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkOFFReader* New();
+  vtkTypeMacro(vtkOFFReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The file to read.
+   */
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+  ///@}
+
+  /**
+   * True when the file's first keyword is OFF (used by ParaView to pick readers).
+   */
+  static int CanReadFile(const char* fileName);
+
+protected:
+  vtkOFFReader();
+  ~vtkOFFReader() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  std::string FileName;
+
+private:
+  vtkOFFReader(const vtkOFFReader&) = delete;
+  void operator=(const vtkOFFReader&) = delete;
+};
+
+#endif

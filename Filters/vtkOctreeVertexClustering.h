@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkOctreeVertexClustering
+ * @brief   simplify a triangle mesh by adaptive octree vertex clustering
+ *
+ * vtkOctreeVertexClustering implements the geometric simplification of Zhou, Zhang, Shi and
+ * Pan, "A new simplification algorithm for colored or textured polygonal models" (§2–3).
+ * Like vtkQuadricClustering it replaces all vertices of a spatial cell by one representative,
+ * but the cells are the leaves of an adaptive octree instead of a uniform grid:
+ *
+ * - a leaf is split where it is larger than MaximumCellSize, holds more than
+ *   MaximumVerticesPerCell vertices, where its representative would flip a neighbouring
+ *   triangle (PreventFlips), and where its cluster error exceeds the bound (MaximumError) —
+ *   or, with a triangle target, in decreasing order of error until the target is met;
+ * - vertices of a leaf that are not connected by edges inside it are not merged, so nearby but
+ *   separate parts of a model (two fingers, two sheets) stay apart;
+ * - the representative minimises the quadric of the planes of its related triangles and of
+ *   planes through boundary edges (BoundaryPlanes), refined by ErrorIterations rounds of the
+ *   paper's e2 iteration; when the quadric is near singular the best of the cluster's vertices
+ *   and its weighted centre is used.
+ *
+ * The cluster error (a distance) is the largest of: the distance from the representative to
+ * the plane of every triangle touching the cluster and to its boundary planes, and the distance
+ * of every clustered vertex to the cluster's mean plane through the representative (to the
+ * representative itself where the cluster's normals spread too widely for a plane). With
+ * TargetMode = MaximumError every output point's cluster error is at most the bound.
+ *
+ * Polygons are triangulated and strips decomposed first. Vertices and lines are not simplified
+ * and are dropped (a warning says how many). Degenerate triangles (repeated point ids, points
+ * with NaN or infinite coordinates) are ignored. Degenerate and duplicate output triangles are
+ * removed and unused points dropped.
+ *
+ * Every point-data array is carried to the output as the area-weighted average over each
+ * cluster (normals are recomputed from the output triangles); cell data is copied from the
+ * input cell of each surviving triangle. Two point arrays are added: "ClusterSize" (the number
+ * of input points merged) and "ClusterError" (the cluster error above); the field data holds
+ * "MaximumClusterError" and "AchievedReduction".
+ *
+ * @warning Vertex clustering does not preserve topology: holes may close, thin parts may
+ * become non-manifold. The output is deterministic for a given input whatever NumberOfThreads.
+ *
+ * @sa vtkQuadricClustering vtkQuadricDecimation vtkBinnedDecimation
+ */
+#ifndef vtkOctreeVertexClustering_h
+#define vtkOctreeVertexClustering_h
+
+#include "MeshSimplificationFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOctreeVertexClustering : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkOctreeVertexClustering* New();
+  vtkTypeMacro(vtkOctreeVertexClustering, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum TargetModes
+  {
+    TARGET_REDUCTION = 0,
+    TARGET_TRIANGLE_COUNT = 1,
+    TARGET_MAXIMUM_ERROR = 2
+  };
+
+  ///@{
+  /**
+   * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
+   * MaximumError.
+   */
+  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
+  vtkGetMacro(TargetMode, int);
+  void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
+  void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
+  void SetTargetModeToMaximumError() { this->SetTargetMode(TARGET_MAXIMUM_ERROR); }
+  ///@}
+
+  ///@{
+  /**
+   * Fraction of the input triangles to remove, as in vtkQuadricDecimation (default 0.9).
+   */
+  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of output triangles wanted in TargetTriangleCount mode (default 1000).
+   */
+  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Error bound ε of MaximumError mode (default 0.01). A distance, relative to the input's
+   * bounding-box diagonal when RelativeError is on (default), else in input units.
+   */
+  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumError, double);
+  vtkSetMacro(RelativeError, bool);
+  vtkGetMacro(RelativeError, bool);
+  vtkBooleanMacro(RelativeError, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Leaves with a larger edge are always split (§2.4 rule a). Relative to the bounding-box
+   * diagonal; 1 (default) sets no limit.
+   */
+  vtkSetClampMacro(MaximumCellSize, double, 1e-6, 1.0);
+  vtkGetMacro(MaximumCellSize, double);
+  ///@}
+
+  ///@{
+  /**
+   * Leaves with more vertices are always split (§2.4 rule b); 0 (default) sets no limit.
+   */
+  vtkSetClampMacro(MaximumVerticesPerCell, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumVerticesPerCell, int);
+  ///@}
+
+  ///@{
+  /**
+   * Iterations of the e2 term (paper §3, default 3); 0 uses the face quadric alone.
+   */
+  vtkSetClampMacro(ErrorIterations, int, 0, 20);
+  vtkGetMacro(ErrorIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Add planes perpendicular to boundary edges so that open borders keep their shape
+   * (default on), with this weight relative to the face planes (default 1).
+   */
+  vtkSetMacro(BoundaryPlanes, bool);
+  vtkGetMacro(BoundaryPlanes, bool);
+  vtkBooleanMacro(BoundaryPlanes, bool);
+  vtkSetClampMacro(BoundaryWeight, double, 0.0, 1e6);
+  vtkGetMacro(BoundaryWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Split leaves whose representative would turn a neighbouring triangle against its
+   * original normal (§2.4, default on).
+   */
+  vtkSetMacro(PreventFlips, bool);
+  vtkGetMacro(PreventFlips, bool);
+  vtkBooleanMacro(PreventFlips, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Threads for the parallel phases; 0 (default) uses all cores. The output does not depend
+   * on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * vtkAlgorithm::DEFAULT_PRECISION (default: as the input), SINGLE_PRECISION or
+   * DOUBLE_PRECISION for the output points.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  /**
+   * Largest cluster error of the last execution, in input units.
+   */
+  vtkGetMacro(AchievedMaximumError, double);
+
+protected:
+  vtkOctreeVertexClustering();
+  ~vtkOctreeVertexClustering() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int TargetMode = TARGET_REDUCTION;
+  double TargetReduction = 0.9;
+  vtkIdType TargetTriangleCount = 1000;
+  double MaximumError = 0.01;
+  bool RelativeError = true;
+  double MaximumCellSize = 1.0;
+  int MaximumVerticesPerCell = 0;
+  int ErrorIterations = 3;
+  bool BoundaryPlanes = true;
+  double BoundaryWeight = 1.0;
+  bool PreventFlips = true;
+  int NumberOfThreads = 0;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
+  double AchievedMaximumError = 0.0;
+
+private:
+  vtkOctreeVertexClustering(const vtkOctreeVertexClustering&) = delete;
+  void operator=(const vtkOctreeVertexClustering&) = delete;
+};
+
+#endif
