@@ -101,7 +101,7 @@ int vtkOctreeVertexClustering::RequestData(
   vtkPointData* outPD = output->GetPointData();
   outPD->InterpolateAllocate(inPD, numberOfPoints);
   ArrayList arrays;
-  arrays.AddArrays(numberOfPoints, inPD, outPD);
+  arrays.AddArrays(numberOfPoints, inPD, outPD, /*nullValue=*/0.0, /*promote=*/false);
   std::vector<vtkIdType> ids;
   for (vtkIdType p = 0; p < numberOfPoints; ++p)
   {

@@ -19,11 +19,11 @@
  *   paper's e2 iteration; when the quadric is near singular the best of the cluster's vertices
  *   and its weighted centre is used.
  *
- * The cluster error (a distance) is the largest of: the distance from the representative to
- * the plane of every triangle touching the cluster and to its boundary planes, and the distance
- * of every clustered vertex to the cluster's mean plane through the representative (to the
- * representative itself where the cluster's normals spread too widely for a plane). With
- * TargetMode = MaximumError every output point's cluster error is at most the bound.
+ * The cluster error (a distance) is the largest distance from the representative to the plane
+ * of any input triangle touching the cluster and to its boundary planes; where the cluster's
+ * normals spread widely (a tip or a thin part folded onto one point), also the largest distance
+ * from the representative to the clustered points. With TargetMode = MaximumError every output
+ * point's cluster error is at most the bound.
  *
  * Polygons are triangulated and strips decomposed first. Vertices and lines are not simplified
  * and are dropped (a warning says how many). Degenerate triangles (repeated point ids, points

@@ -325,18 +325,16 @@ double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::
     weight += this->VertexWeights[v];
     areaNormal += this->VertexAreaNormals[v];
   }
-  // e2: distance of the cluster's vertices to the new surface around x, which the triangles of
-  // the fan approximate by the cluster's mean plane through x. Where the normals spread over
-  // more than a hemisphere-like cone (|mean normal| < 1/2: a tip, a thin tube, a folded sheet),
-  // no plane fits and the distance to x itself is used.
-  if (count > 1)
+  // Planes cannot see a cluster that folds a tip or a thin part onto one point (a finger
+  // collapsed to its end keeps every plane distance small). Where the cluster's normals spread
+  // too widely for one side to face outwards (|mean unit normal| < 1/2), the distance of its
+  // vertices to x counts as well.
+  const double coherence = weight > 0.0 ? areaNormal.norm() / weight : 0.0;
+  if (count > 1 && coherence < 0.5)
   {
-    const double coherence = weight > 0.0 ? areaNormal.norm() / weight : 0.0;
-    const Vec3 normal = coherence > 0.0 ? Vec3(areaNormal.normalized()) : Vec3::Zero();
     for (std::int32_t i = 0; i < count; ++i)
     {
-      const Vec3 offset = this->P[members[i]] - x;
-      error = std::max(error, coherence >= 0.5 ? std::abs(normal.dot(offset)) : offset.norm());
+      error = std::max(error, (this->P[members[i]] - x).norm());
     }
   }
   return error;

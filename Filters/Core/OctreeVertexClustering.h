@@ -21,7 +21,9 @@
  *
  * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
  * the supporting plane of any triangle of its cluster's related set (every input triangle with
- * a vertex in the cluster) and to the boundary planes of its boundary edges. With an error
+ * a vertex in the cluster) and to the boundary planes of its boundary edges; where the
+ * cluster's normals spread widely (the length of their area-weighted mean is below 1/2: a tip,
+ * a thin part) it is also the largest distance from v0 to the cluster's vertices. With an error
  * bound, every leaf is refined until each cluster error is at most ε, unless the leaf holds a
  * single vertex (error 0) or coincident points.
  */

@@ -1,0 +1,34 @@
+# meshsimplify end to end: a run that must succeed with valid JSON, and runs that must fail with
+# a one-line message and a non-zero exit.
+execute_process(
+  COMMAND "${TOOL}" --method octree --reduction 0.9 --threads 2 --json "${INPUT}" "${OUTPUT}"
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT code EQUAL 0)
+  message(FATAL_ERROR "meshsimplify failed (${code}): ${err}")
+endif ()
+foreach (key IN ITEMS method input_triangles output_triangles time_ms threads max_error)
+  string(JSON value ERROR_VARIABLE json_error GET "${out}" ${key})
+  if (json_error)
+    message(FATAL_ERROR "JSON lacks ${key}: ${out}")
+  endif ()
+endforeach ()
+string(JSON input_triangles GET "${out}" input_triangles)
+string(JSON output_triangles GET "${out}" output_triangles)
+if (NOT input_triangles EQUAL 5804 OR output_triangles LESS 563 OR output_triangles GREATER 598)
+  message(FATAL_ERROR "unexpected counts: ${out}")
+endif ()
+if (NOT EXISTS "${OUTPUT}")
+  message(FATAL_ERROR "no output file ${OUTPUT}")
+endif ()
+
+foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
+                      "--method;octree;--reduction;abc;${INPUT};${OUTPUT}"
+                      "--method;octree;--reduction;1.5;${INPUT};${OUTPUT}"
+                      "--method;octree;/nonexistent/mesh.off;${OUTPUT}"
+                      "--method;octree;${INPUT};${OUTPUT}.xyz"
+                      "--method;octree;--set;Nope=1;${INPUT};${OUTPUT}")
+  execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
+    message(FATAL_ERROR "expected a clean failure for '${bad}', got ${code}: ${err}")
+  endif ()
+endforeach ()

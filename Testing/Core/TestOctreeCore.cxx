@@ -1,0 +1,420 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Unit tests of the VTK-free core: quadrics, the octree clustering and its invariants.
+#include "OFFFile.h"
+#include "OctreeVertexClustering.h"
+#include "Quadric.h"
+#include "TestHelpers.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+using meshsimp::OctreeClusteringOptions;
+using meshsimp::OctreeClusteringResult;
+using meshsimp::Quadric;
+using meshsimp::TriangleMeshView;
+
+namespace
+{
+struct Mesh
+{
+  std::vector<double> Points;
+  std::vector<std::int32_t> Triangles;
+  TriangleMeshView View() const
+  {
+    return { this->Points.data(), static_cast<std::int64_t>(this->Points.size() / 3),
+      this->Triangles.data(), static_cast<std::int64_t>(this->Triangles.size() / 3) };
+  }
+};
+
+/// An n × n grid of quads on z = 0 over [0, 1]², two triangles each.
+Mesh Grid(int n)
+{
+  Mesh mesh;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      mesh.Points.insert(mesh.Points.end(), { double(i) / n, double(j) / n, 0.0 });
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      mesh.Triangles.insert(mesh.Triangles.end(), { a, b, d, a, d, c });
+    }
+  }
+  return mesh;
+}
+
+/// The unit cube [0, 1]³ with each face an n × n grid, outward normals, shared points welded.
+Mesh Cube(int n)
+{
+  Mesh mesh;
+  std::vector<std::array<int, 3>> keys;
+  auto point = [&](const Eigen::Vector3d& p) {
+    const std::array<int, 3> key = { int(std::lround(p.x() * n)), int(std::lround(p.y() * n)),
+      int(std::lround(p.z() * n)) };
+    const auto found = std::find(keys.begin(), keys.end(), key);
+    if (found != keys.end())
+    {
+      return static_cast<std::int32_t>(found - keys.begin());
+    }
+    keys.push_back(key);
+    mesh.Points.insert(mesh.Points.end(), { p.x(), p.y(), p.z() });
+    return static_cast<std::int32_t>(keys.size() - 1);
+  };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      const Eigen::Vector3d normal = Eigen::Vector3d::Unit(axis) * (side ? 1.0 : -1.0);
+      const Eigen::Vector3d u = Eigen::Vector3d::Unit((axis + 1) % 3);
+      const Eigen::Vector3d v = Eigen::Vector3d::Unit((axis + 2) % 3);
+      const Eigen::Vector3d origin = Eigen::Vector3d::Unit(axis) * side;
+      for (int j = 0; j < n; ++j)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          auto at = [&](int a, int b) { return point(origin + u * (double(a) / n) + v * (double(b) / n)); };
+          std::int32_t c[4] = { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) };
+          if (u.cross(v).dot(normal) < 0)
+          {
+            std::swap(c[1], c[3]);
+          }
+          mesh.Triangles.insert(mesh.Triangles.end(), { c[0], c[1], c[2], c[0], c[2], c[3] });
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+OctreeClusteringResult Simplify(const Mesh& mesh, OctreeClusteringOptions options)
+{
+  OctreeClusteringResult result;
+  CHECK(meshsimp::OctreeVertexClustering(mesh.View(), options, result));
+  return result;
+}
+
+OctreeClusteringOptions Target(std::int64_t triangles)
+{
+  OctreeClusteringOptions options;
+  options.TargetTriangles = triangles;
+  return options;
+}
+
+double PlaneDistance(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+  const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d normal = (b - a).cross(c - a);
+  return normal.norm() > 0 ? std::abs(normal.normalized().dot(x - a)) : 0.0;
+}
+
+void QuadricMinimumOfThreePlanes()
+{
+  // Three orthogonal planes through (1, 2, 3): the minimum is their intersection, error 0.
+  Quadric q = Quadric::FromPlane({ 1, 0, 0 }, -1, 1.0);
+  q += Quadric::FromPlane({ 0, 1, 0 }, -2, 2.0);
+  q += Quadric::FromPlane({ 0, 0, 1 }, -3, 0.5);
+  Eigen::Vector3d x;
+  CHECK(meshsimp::MinimizeQuadric(q, x));
+  CHECK((x - Eigen::Vector3d(1, 2, 3)).norm() < 1e-12);
+  CHECK(q.Evaluate(x) < 1e-20);
+  CHECK(std::abs(q.Evaluate({ 2, 2, 3 }) - 1.0) < 1e-12);
+}
+
+void QuadricSingularIsRejected()
+{
+  // Planes of one direction (rank 1) or two (rank 2, a crease) have no unique minimum: the
+  // solve must report it instead of returning a far-away point.
+  Quadric flat = Quadric::FromPlane({ 0, 0, 1 }, 0, 1.0);
+  flat += Quadric::FromPlane({ 0, 0, 1 }, -1e-3, 1.0);
+  Eigen::Vector3d x;
+  CHECK(!meshsimp::MinimizeQuadric(flat, x));
+  Quadric crease = Quadric::FromPlane({ 1, 0, 0 }, 0, 1.0);
+  crease += Quadric::FromPlane({ 0, 1, 0 }, 0, 1.0);
+  crease += Quadric::FromPlane(Eigen::Vector3d(1, 1, 1e-9).normalized(), 0, 1.0);
+  CHECK(!meshsimp::MinimizeQuadric(crease, x));
+  CHECK(!meshsimp::MinimizeQuadric(Quadric(), x));
+}
+
+void PlanarMeshStaysExactlyPlanar()
+{
+  // Every quadric of a flat mesh is singular: the fallback (centre or a vertex) must keep z = 0.
+  const Mesh grid = Grid(30);
+  for (const double reduction : { 0.5, 0.9, 0.98 })
+  {
+    const std::int64_t target = std::llround(grid.Triangles.size() / 3 * (1 - reduction));
+    const OctreeClusteringResult result = Simplify(grid, Target(target));
+    CHECK(!result.Triangles.empty());
+    for (std::size_t i = 2; i < result.Points.size(); i += 3)
+    {
+      CHECK(result.Points[i] == 0.0);
+    }
+  }
+  // Without boundary planes every plane of a flat mesh is the same one: no cluster has error.
+  OctreeClusteringOptions options = Target(200);
+  options.BoundaryPlanes = false;
+  const OctreeClusteringResult result = Simplify(grid, options);
+  for (const double error : result.ClusterErrors)
+  {
+    CHECK(error == 0.0);
+  }
+}
+
+void CubeKeepsItsCorners()
+{
+  // Each corner cluster sees three orthogonal planes: eq. (3) puts its point on the corner.
+  const Mesh cube = Cube(6);
+  const OctreeClusteringResult result = Simplify(cube, Target(12));
+  CHECK(result.Triangles.size() / 3 >= 12);
+  int corners = 0;
+  for (int c = 0; c < 8; ++c)
+  {
+    const Eigen::Vector3d corner(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+    bool found = false;
+    for (std::size_t i = 0; i < result.Points.size(); i += 3)
+    {
+      found = found ||
+        (Eigen::Vector3d(result.Points[i], result.Points[i + 1], result.Points[i + 2]) - corner)
+            .norm() < 1e-9;
+    }
+    corners += found ? 1 : 0;
+  }
+  CHECK(corners == 8);
+  // Every output point stays on the cube's surface.
+  for (std::size_t i = 0; i < result.Points.size(); i += 3)
+  {
+    const Eigen::Vector3d p(result.Points[i], result.Points[i + 1], result.Points[i + 2]);
+    const double toFace = std::min((p.array()).abs().minCoeff(), (p.array() - 1.0).abs().minCoeff());
+    CHECK(toFace < 1e-9);
+  }
+}
+
+void DiskBorderIsKeptWithBoundaryPlanes()
+{
+  // A flat disk: with boundary planes the representatives of border clusters stay on the rim
+  // circle (the planes through the border edges pin them); without, they drift inwards.
+  Mesh disk;
+  const int rings = 12, sectors = 64;
+  disk.Points = { 0, 0, 0 };
+  for (int r = 1; r <= rings; ++r)
+  {
+    for (int s = 0; s < sectors; ++s)
+    {
+      const double angle = 2 * M_PI * s / sectors, radius = double(r) / rings;
+      disk.Points.insert(disk.Points.end(), { radius * std::cos(angle), radius * std::sin(angle), 0 });
+    }
+  }
+  auto id = [&](int r, int s) { return r == 0 ? 0 : 1 + (r - 1) * sectors + (s % sectors); };
+  for (int s = 0; s < sectors; ++s)
+  {
+    disk.Triangles.insert(disk.Triangles.end(), { 0, id(1, s), id(1, s + 1) });
+    for (int r = 1; r < rings; ++r)
+    {
+      disk.Triangles.insert(disk.Triangles.end(),
+        { id(r, s), id(r + 1, s), id(r + 1, s + 1), id(r, s), id(r + 1, s + 1), id(r, s + 1) });
+    }
+  }
+  auto rimDeviation = [&](bool boundaryPlanes) {
+    OctreeClusteringOptions options = Target(disk.Triangles.size() / 3 / 10);
+    options.BoundaryPlanes = boundaryPlanes;
+    const OctreeClusteringResult result = Simplify(disk, options);
+    // Largest distance from a border cluster's point to the rim circle.
+    double deviation = 0.0;
+    for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+    {
+      bool onRim = false;
+      for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+      {
+        onRim = onRim || result.ClusterVertices[k] > 1 + (rings - 1) * sectors - 1;
+      }
+      if (onRim)
+      {
+        const double radius = std::hypot(result.Points[3 * p], result.Points[3 * p + 1]);
+        deviation = std::max(deviation, std::abs(1.0 - radius));
+      }
+    }
+    return deviation;
+  };
+  const double with = rimDeviation(true), without = rimDeviation(false);
+  CHECK(with < 0.02); // the chord sagitta of this coarse rim is about 0.01
+  CHECK(with < 0.5 * without);
+}
+
+void DisconnectedPartsInOneCellStayApart()
+{
+  // Two parallel sheets 0.01 apart, far closer than any cell: a uniform grid would merge them
+  // (Figure 1); here a cluster never spans both, so no output triangle joins the two sheets.
+  Mesh sheets = Grid(8);
+  const std::size_t half = sheets.Points.size() / 3;
+  Mesh top = Grid(8);
+  for (std::size_t i = 2; i < top.Points.size(); i += 3)
+  {
+    top.Points[i] = 0.01;
+  }
+  sheets.Points.insert(sheets.Points.end(), top.Points.begin(), top.Points.end());
+  for (const std::int32_t v : top.Triangles)
+  {
+    sheets.Triangles.push_back(v + static_cast<std::int32_t>(half));
+  }
+  const OctreeClusteringResult result = Simplify(sheets, Target(32));
+  for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+  {
+    std::set<bool> sides;
+    for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+    {
+      sides.insert(result.ClusterVertices[k] >= static_cast<std::int32_t>(half));
+    }
+    CHECK(sides.size() == 1);
+  }
+  for (std::size_t i = 2; i < result.Points.size(); i += 3)
+  {
+    CHECK(std::abs(result.Points[i]) < 1e-12 || std::abs(result.Points[i] - 0.01) < 1e-12);
+  }
+}
+
+void TargetCountIsMet()
+{
+  meshsimp::PolygonMesh cow;
+  std::string error;
+  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/cow.off", cow, error));
+  Mesh mesh;
+  mesh.Points = cow.Points;
+  mesh.Triangles.assign(cow.FaceIds.begin(), cow.FaceIds.end());
+  const double n = mesh.Triangles.size() / 3;
+  for (const double reduction : { 0.5, 0.7, 0.9, 0.95, 0.98 })
+  {
+    const double target = std::round(n * (1 - reduction));
+    const OctreeClusteringResult result = Simplify(mesh, Target(static_cast<std::int64_t>(target)));
+    const double got = result.Triangles.size() / 3;
+    CHECK(std::abs(got - target) <= 0.03 * target);
+    // Output is well formed: indices in range, no degenerate triangle.
+    for (std::size_t i = 0; i < result.Triangles.size(); i += 3)
+    {
+      const std::int32_t* t = &result.Triangles[i];
+      CHECK(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+      CHECK(t[0] >= 0 && t[0] < static_cast<std::int32_t>(result.Points.size() / 3));
+    }
+  }
+}
+
+void ErrorBoundIsRespected()
+{
+  // In error mode every cluster error, recomputed here from its definition, is at most ε.
+  meshsimp::PolygonMesh cow;
+  std::string error;
+  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/cow.off", cow, error));
+  Mesh mesh;
+  mesh.Points = cow.Points;
+  mesh.Triangles.assign(cow.FaceIds.begin(), cow.FaceIds.end());
+  const TriangleMeshView view = mesh.View();
+  std::vector<std::vector<std::int32_t>> incident(view.NumberOfPoints);
+  for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      incident[mesh.Triangles[3 * t + k]].push_back(static_cast<std::int32_t>(t));
+    }
+  }
+  for (const double epsilon : { 0.002, 0.01, 0.03 })
+  {
+    OctreeClusteringOptions options;
+    options.MaximumError = epsilon;
+    options.RelativeError = true;
+    const OctreeClusteringResult result = Simplify(mesh, options);
+    const double bound = epsilon * 1.2170847; // the cow's bounding-box diagonal
+    CHECK(result.MaximumClusterError <= bound * (1 + 1e-9));
+    double measured = 0.0;
+    for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+    {
+      const Eigen::Vector3d x(result.Points[3 * p], result.Points[3 * p + 1], result.Points[3 * p + 2]);
+      for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+      {
+        for (const std::int32_t t : incident[result.ClusterVertices[k]])
+        {
+          const std::int32_t* c = &mesh.Triangles[3 * t];
+          measured = std::max(measured, PlaneDistance(x, view.Point(c[0]), view.Point(c[1]), view.Point(c[2])));
+        }
+      }
+    }
+    CHECK(measured <= bound * (1 + 1e-9));
+    CHECK(result.Triangles.size() < mesh.Triangles.size()); // and it did simplify
+  }
+}
+
+void SameResultForAnyThreadCount()
+{
+  const Mesh cube = Cube(10);
+  meshsimp::ExecutionContext chunked;
+  // A "parallel" for that runs chunks in reverse order: results must not depend on scheduling.
+  chunked.ParallelFor = [](std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body) {
+    const std::int64_t chunk = std::max<std::int64_t>(1, n / 7);
+    for (std::int64_t begin = (n - 1) / chunk * chunk; begin >= 0; begin -= chunk)
+    {
+      body(begin, std::min(n, begin + chunk));
+    }
+  };
+  OctreeClusteringResult serial, reordered;
+  CHECK(meshsimp::OctreeVertexClustering(cube.View(), Target(100), serial));
+  CHECK(meshsimp::OctreeVertexClustering(cube.View(), Target(100), reordered, chunked));
+  CHECK(serial.Points == reordered.Points);
+  CHECK(serial.Triangles == reordered.Triangles);
+}
+
+void InvalidTrianglesAreSkipped()
+{
+  Mesh mesh = Grid(4);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  mesh.Points.insert(mesh.Points.end(), { nan, 0, 0 });
+  const std::int32_t bad = static_cast<std::int32_t>(mesh.Points.size() / 3 - 1);
+  mesh.Triangles.insert(mesh.Triangles.end(), { 0, 1, bad, 2, 2, 3, 0, 1, 1000 });
+  const std::vector<double> pointsBefore = mesh.Points;
+  OctreeClusteringResult result = Simplify(mesh, Target(8));
+  CHECK(result.UsableInputTriangles == 32);
+  CHECK(!result.Triangles.empty());
+  for (const double c : result.Points)
+  {
+    CHECK(std::isfinite(c));
+  }
+  CHECK(std::equal(pointsBefore.begin(), pointsBefore.end(), mesh.Points.begin(),
+    [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }));
+
+  Mesh empty;
+  result = Simplify(empty, Target(10));
+  CHECK(result.Points.empty() && result.Triangles.empty());
+}
+
+void AbortStopsEarly()
+{
+  const Mesh grid = Grid(40);
+  meshsimp::ExecutionContext context;
+  context.Progress = [](double progress) { return progress < 0.1; };
+  OctreeClusteringResult result;
+  CHECK(!meshsimp::OctreeVertexClustering(grid.View(), Target(100), result, context));
+  CHECK(result.Aborted);
+}
+}
+
+int main()
+{
+  return meshsimp_test::RunTests({
+    { "QuadricMinimumOfThreePlanes", QuadricMinimumOfThreePlanes },
+    { "QuadricSingularIsRejected", QuadricSingularIsRejected },
+    { "PlanarMeshStaysExactlyPlanar", PlanarMeshStaysExactlyPlanar },
+    { "CubeKeepsItsCorners", CubeKeepsItsCorners },
+    { "DiskBorderIsKeptWithBoundaryPlanes", DiskBorderIsKeptWithBoundaryPlanes },
+    { "DisconnectedPartsInOneCellStayApart", DisconnectedPartsInOneCellStayApart },
+    { "TargetCountIsMet", TargetCountIsMet },
+    { "ErrorBoundIsRespected", ErrorBoundIsRespected },
+    { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
+    { "InvalidTrianglesAreSkipped", InvalidTrianglesAreSkipped },
+    { "AbortStopsEarly", AbortStopsEarly },
+  });
+}

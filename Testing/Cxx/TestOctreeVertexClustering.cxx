@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkOctreeVertexClustering on a real mesh: targets met, every point-data array carried,
+// cell data copied, error arrays, the error bound, thread independence, input untouched.
+#include "vtkOFFReader.h"
+#include "vtkOctreeVertexClustering.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <iostream>
+#include <set>
+
+namespace
+{
+int failures = 0;
+#define EXPECT(condition)                                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << "\n";           \
+      ++failures;                                                                                  \
+    }                                                                                              \
+  } while (false)
+
+/// The cow with point arrays of every kind (scalars, vectors, normals, colours, texture
+/// coordinates, a constant) and a cell-id array.
+vtkSmartPointer<vtkPolyData> DecoratedCow()
+{
+  vtkNew<vtkOFFReader> reader;
+  reader->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(reader->GetOutputPort());
+  normals->SplittingOff();
+  normals->ComputeCellNormalsOn();
+  normals->Update();
+  auto cow = vtkSmartPointer<vtkPolyData>::New();
+  cow->DeepCopy(normals->GetOutput());
+
+  const vtkIdType n = cow->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> height;
+  height->SetName("Height");
+  vtkNew<vtkFloatArray> velocity;
+  velocity->SetName("Velocity");
+  velocity->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  vtkNew<vtkDoubleArray> constant;
+  constant->SetName("Constant");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    cow->GetPoint(i, p);
+    height->InsertNextValue(p[1]);
+    velocity->InsertNextTuple3(p[0], 2 * p[1], -p[2]);
+    colors->InsertNextTuple3(i % 256, 128, 255 - i % 256);
+    tcoords->InsertNextTuple2(p[0], p[2]);
+    constant->InsertNextValue(7.25);
+  }
+  cow->GetPointData()->SetScalars(height);
+  cow->GetPointData()->SetVectors(velocity);
+  cow->GetPointData()->AddArray(colors);
+  cow->GetPointData()->SetTCoords(tcoords);
+  cow->GetPointData()->AddArray(constant);
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("SourceCell");
+  for (vtkIdType c = 0; c < cow->GetNumberOfCells(); ++c)
+  {
+    cellIds->InsertNextValue(c);
+  }
+  cow->GetCellData()->AddArray(cellIds);
+  return cow;
+}
+
+void TestTargetsAndAttributes(vtkPolyData* cow)
+{
+  const double inputTriangles = cow->GetNumberOfPolys();
+  for (const double reduction : { 0.5, 0.7, 0.9, 0.95, 0.98 })
+  {
+    vtkNew<vtkOctreeVertexClustering> filter;
+    filter->SetInputData(cow);
+    filter->SetTargetReduction(reduction);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    const double target = std::round(inputTriangles * (1 - reduction));
+    EXPECT(std::abs(out->GetNumberOfPolys() - target) <= 0.03 * target);
+    EXPECT(out->GetNumberOfPolys() == out->GetNumberOfCells());
+
+    // Every input point array arrives with its type and components; attributes stay active.
+    vtkPointData* pd = out->GetPointData();
+    for (int a = 0; a < cow->GetPointData()->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* in = cow->GetPointData()->GetArray(a);
+      vtkDataArray* carried = pd->GetArray(in->GetName());
+      EXPECT(carried && carried->GetDataType() == in->GetDataType() &&
+        carried->GetNumberOfComponents() == in->GetNumberOfComponents() &&
+        carried->GetNumberOfTuples() == out->GetNumberOfPoints());
+    }
+    EXPECT(pd->GetScalars() && std::string(pd->GetScalars()->GetName()) == "Height");
+    EXPECT(pd->GetTCoords() && pd->GetNormals());
+
+    // Averages: a constant stays exact, a linear field stays within the input's range, and
+    // normals are recomputed unit vectors.
+    double range[2];
+    cow->GetPointData()->GetArray("Height")->GetRange(range);
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      EXPECT(std::abs(pd->GetArray("Constant")->GetTuple1(i) - 7.25) < 1e-12);
+      const double h = pd->GetArray("Height")->GetTuple1(i);
+      EXPECT(h >= range[0] - 1e-12 && h <= range[1] + 1e-12);
+      EXPECT(std::abs(vtkMath::Norm(pd->GetNormals()->GetTuple3(i)) - 1.0) < 1e-5);
+    }
+
+    // Cell data comes from distinct input cells; cell normals are recomputed.
+    vtkDataArray* sourceCells = out->GetCellData()->GetArray("SourceCell");
+    EXPECT(sourceCells && sourceCells->GetNumberOfTuples() == out->GetNumberOfCells());
+    std::set<vtkIdType> distinct;
+    for (vtkIdType c = 0; sourceCells && c < sourceCells->GetNumberOfTuples(); ++c)
+    {
+      distinct.insert(static_cast<vtkIdType>(sourceCells->GetTuple1(c)));
+    }
+    EXPECT(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
+    EXPECT(out->GetCellData()->GetNormals() != nullptr);
+
+    // Error arrays.
+    auto* sizes = vtkIntArray::SafeDownCast(pd->GetArray("ClusterSize"));
+    auto* errors = vtkDoubleArray::SafeDownCast(pd->GetArray("ClusterError"));
+    EXPECT(sizes && errors);
+    vtkIdType merged = 0;
+    double largest = 0;
+    for (vtkIdType i = 0; sizes && errors && i < out->GetNumberOfPoints(); ++i)
+    {
+      EXPECT(sizes->GetValue(i) >= 1);
+      EXPECT(errors->GetValue(i) >= 0);
+      merged += sizes->GetValue(i);
+      largest = std::max(largest, errors->GetValue(i));
+    }
+    EXPECT(merged <= cow->GetNumberOfPoints());
+    EXPECT(std::abs(largest - filter->GetAchievedMaximumError()) < 1e-12);
+    vtkDataArray* achieved = out->GetFieldData()->GetArray("AchievedReduction");
+    EXPECT(achieved &&
+      std::abs(achieved->GetTuple1(0) - (1 - out->GetNumberOfPolys() / inputTriangles)) < 1e-12);
+  }
+}
+
+void TestErrorBound(vtkPolyData* cow)
+{
+  const double diagonal = cow->GetLength();
+  double previousCount = 0;
+  for (const double epsilon : { 0.03, 0.01, 0.003 })
+  {
+    vtkNew<vtkOctreeVertexClustering> filter;
+    filter->SetInputData(cow);
+    filter->SetTargetModeToMaximumError();
+    filter->SetMaximumError(epsilon);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    EXPECT(filter->GetAchievedMaximumError() <= epsilon * diagonal * (1 + 1e-9));
+    vtkDataArray* errors = out->GetPointData()->GetArray("ClusterError");
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      EXPECT(errors->GetTuple1(i) <= epsilon * diagonal * (1 + 1e-9));
+    }
+    // A tighter bound keeps more triangles.
+    EXPECT(out->GetNumberOfPolys() > previousCount);
+    EXPECT(out->GetNumberOfPolys() < cow->GetNumberOfPolys());
+    previousCount = out->GetNumberOfPolys();
+  }
+  // The absolute bound means the same thing in input units.
+  vtkNew<vtkOctreeVertexClustering> absolute;
+  absolute->SetInputData(cow);
+  absolute->SetTargetModeToMaximumError();
+  absolute->SetMaximumError(0.01 * diagonal);
+  absolute->RelativeErrorOff();
+  absolute->Update();
+  EXPECT(absolute->GetAchievedMaximumError() <= 0.01 * diagonal * (1 + 1e-9));
+}
+
+void TestThreadsAndInput(vtkPolyData* cow)
+{
+  vtkNew<vtkPolyData> before;
+  before->DeepCopy(cow);
+  const vtkMTimeType mtime = cow->GetMTime();
+  vtkSmartPointer<vtkPolyData> outputs[3];
+  const int threads[3] = { 1, 2, 4 };
+  for (int k = 0; k < 3; ++k)
+  {
+    vtkNew<vtkOctreeVertexClustering> filter;
+    filter->SetInputData(cow);
+    filter->SetTargetReduction(0.9);
+    filter->SetNumberOfThreads(threads[k]);
+    filter->Update();
+    outputs[k] = filter->GetOutput();
+  }
+  for (int k = 1; k < 3; ++k)
+  {
+    EXPECT(outputs[k]->GetNumberOfPoints() == outputs[0]->GetNumberOfPoints());
+    EXPECT(outputs[k]->GetNumberOfPolys() == outputs[0]->GetNumberOfPolys());
+    for (vtkIdType i = 0; i < outputs[0]->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      outputs[0]->GetPoint(i, a);
+      outputs[k]->GetPoint(i, b);
+      EXPECT(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+    }
+  }
+  // The input is never modified.
+  EXPECT(cow->GetMTime() == mtime);
+  EXPECT(cow->GetNumberOfPoints() == before->GetNumberOfPoints());
+  EXPECT(cow->GetNumberOfCells() == before->GetNumberOfCells());
+  for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    cow->GetPoint(i, a);
+    before->GetPoint(i, b);
+    EXPECT(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+  }
+  EXPECT(cow->GetPointData()->GetNumberOfArrays() == before->GetPointData()->GetNumberOfArrays());
+}
+
+void TestTriangleCountMode(vtkPolyData* cow)
+{
+  vtkNew<vtkOctreeVertexClustering> filter;
+  filter->SetInputData(cow);
+  filter->SetTargetModeToTriangleCount();
+  filter->SetTargetTriangleCount(1000);
+  filter->Update();
+  EXPECT(std::abs(filter->GetOutput()->GetNumberOfPolys() - 1000) <= 30);
+}
+}
+
+int TestOctreeVertexClustering(int, char*[])
+{
+  vtkSmartPointer<vtkPolyData> cow = DecoratedCow();
+  EXPECT(cow->GetNumberOfPolys() == 5804);
+  TestTargetsAndAttributes(cow);
+  TestErrorBound(cow);
+  TestThreadsAndInput(cow);
+  TestTriangleCountMode(cow);
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
