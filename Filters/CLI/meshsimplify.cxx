@@ -11,7 +11,10 @@
 #include "vtkOFFReader.h"
 #include "vtkOctreeVertexClustering.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -106,9 +109,16 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& path)
   {
     Fail("cannot open '" + path + "'");
   }
+  // Readers report a bad file through error events, not always through their error code.
+  bool failed = false;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&failed);
+  onError->SetCallback([](vtkObject*, unsigned long, void* flag, void*) { *static_cast<bool*>(flag) = true; });
+  reader->AddObserver(vtkCommand::ErrorEvent, onError);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
   reader->Update();
   vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (reader->GetErrorCode() != 0 || !output)
+  if (failed || reader->GetErrorCode() != 0 || !output)
   {
     Fail("cannot read '" + path + "'");
   }
@@ -177,6 +187,8 @@ void Write(vtkPolyData* mesh, const std::string& path)
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetFileName(path.c_str());
     writer->SetInputData(mesh);
+    // Inline binary: VTK 9.2's reader rejects some appended base64 files its writer makes.
+    writer->SetDataModeToBinary();
     ok = writer->Write();
   }
   else if (extension == "vtk")

@@ -37,6 +37,8 @@ struct OctreeNode
   double Half;
   std::int32_t Begin, End; // range of Clusterer::Order
   std::int32_t Depth;
+  std::int32_t FirstCluster, ClusterCount; // its clusters while it is a leaf
+  std::int32_t Serial;                     // unique, so heap entries of undone nodes are seen
 };
 
 struct HeapEntry
@@ -44,6 +46,11 @@ struct HeapEntry
   double Key;  // leaf error, or one of the split keys above
   double Half; // ties: larger cells first
   std::int32_t Node;
+  std::int32_t Serial;
+  double Error;       // the leaf's cluster error
+  double Vanishing;   // error of its clusters that lose every triangle (see VanishingError)
+  bool FlipChecked;   // the §2.4 test runs only when a leaf reaches the top
+  bool Flipped;
   bool operator<(const HeapEntry& o) const
   {
     if (this->Key != o.Key)
@@ -72,14 +79,18 @@ public:
   bool Run(OctreeClusteringResult& result);
 
 private:
+  /// Per-thread scratch of EvaluateLeaf: the members of each cluster of a leaf (CSR).
+  struct Scratch
+  {
+    std::vector<std::int32_t> Offsets, Fill, Members;
+  };
+
   /// ε in the normalised coordinates.
   double Bound() const
   {
     return this->Options.RelativeError ? this->Options.MaximumError
                                        : this->Options.MaximumError * this->Scale;
   }
-
-private:
   void PrepareGeometry();
   void PrepareQuadrics();
   bool InRange(std::int32_t v, std::int32_t begin, std::int32_t end) const
@@ -95,16 +106,32 @@ private:
     }
     return i;
   }
-  double EvaluateLeaf(std::int32_t node, bool& canSplit);
-  bool LeafFlips(std::int32_t begin, std::int32_t end) const;
+  std::int32_t EvaluateLeaf(std::int32_t node, std::int32_t firstCluster, Scratch& scratch,
+    double& key, bool& canSplit);
+  bool LeafFlips(std::int32_t node) const;
+  double VanishingError(std::int32_t node) const;
+  HeapEntry MakeEntry(std::int32_t node, double error, bool counting) const;
+  void SetKey(HeapEntry& entry, bool counting) const;
   Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
   Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
     const std::int32_t* members, std::int32_t count, bool byPosition) const;
   double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count) const;
   std::int64_t CountSurviving(std::int32_t begin, std::int32_t end) const;
-  void SplitLeaf(std::int32_t node, std::vector<HeapEntry>& children);
-  void UndoSplit();
+  std::int32_t PartitionNode(std::int32_t node);
+  void SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& children);
+  void UndoLastSplit();
+  std::int32_t AddNode(OctreeNode node)
+  {
+    node.Serial = this->NextSerial++;
+    this->Nodes.push_back(node);
+    return static_cast<std::int32_t>(this->Nodes.size() - 1);
+  }
+  bool IsLeaf(const HeapEntry& entry) const
+  {
+    return entry.Node < static_cast<std::int32_t>(this->Nodes.size()) &&
+      this->Nodes[entry.Node].Serial == entry.Serial && this->Nodes[entry.Node].ClusterCount > 0;
+  }
   std::vector<std::int32_t> SurvivingTriangles() const;
   bool Refine(std::int64_t target, double bound);
   void Finalize(const std::vector<std::int32_t>& survivors, OctreeClusteringResult& result);
@@ -140,17 +167,22 @@ private:
   std::vector<Vec3> ClusterPositions;
   std::vector<std::int32_t> ClusterNodes;
 
-  // Scratch of EvaluateLeaf and SplitLeaf; UnionParent and RootCluster are indexed by Order position.
-  std::vector<std::int32_t> UnionParent, RootCluster;
-  std::vector<std::int32_t> LocalOffsets, LocalFill, LocalMembers;
+  // Scratch indexed by Order position (leaves own disjoint ranges, so threads share them).
+  std::vector<std::int32_t> UnionParent, RootCluster, Reordered;
+  Scratch SerialScratch;
 
-  // What SplitLeaf changed, so that an overshooting split can be undone.
-  struct
+  // Every split, so that splits can be undone last-first: an overshooting one, or cheap late
+  // ones that make room for a leaf of much larger error (see Refine).
+  struct SplitRecord
   {
-    std::size_t Nodes = 0, Clusters = 0;
-    std::int64_t SurvivingCount = 0;
-    std::vector<std::pair<std::int32_t, std::int32_t>> Saved; // vertex, previous cluster
-  } Undo;
+    HeapEntry Leaf; // as it was popped
+    std::size_t Nodes, Clusters, Saved;
+    std::int64_t SurvivingCount;
+    std::int32_t FirstCluster, ClusterCount; // of the split leaf
+  };
+  std::vector<SplitRecord> Splits;
+  std::vector<std::pair<std::int32_t, std::int32_t>> SavedClusters; // vertex, previous cluster
+  std::int32_t NextSerial = 0;
 };
 
 void Clusterer::PrepareGeometry()
@@ -219,7 +251,7 @@ void Clusterer::PrepareQuadrics()
   if (this->Options.BoundaryPlanes)
   {
     const std::vector<BoundaryEdge> edges =
-      FindBoundaryEdges(this->Mesh, this->Usable, this->Adjacency);
+      FindBoundaryEdges(this->Mesh, this->Usable, this->Adjacency, this->Context);
     this->BoundaryPlanes.resize(edges.size());
     this->BoundaryWeights.assign(edges.size(), 0.0);
     for (std::size_t i = 0; i < edges.size(); ++i)
@@ -340,12 +372,17 @@ double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::
   return error;
 }
 
-double Clusterer::EvaluateLeaf(std::int32_t node, bool& canSplit)
+std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluster,
+  Scratch& scratch, double& key, bool& canSplit)
 {
-  const OctreeNode cell = this->Nodes[node];
+  // Clusters the leaf's vertices into clusters firstCluster, firstCluster + 1, ... (the caller
+  // reserved one per vertex) and returns how many. Writes only the leaf's own range of the
+  // shared arrays, so leaves can be evaluated concurrently.
+  OctreeNode& cell = this->Nodes[node];
   const std::int32_t begin = cell.Begin, end = cell.End;
 
-  // Clusters are the connected components of the leaf's vertices (edges inside the leaf only).
+  // Clusters are the connected components of the leaf's vertices (edges inside the leaf
+  // only); each triangle edge is visited once, from its first corner.
   for (std::int32_t i = begin; i < end; ++i)
   {
     this->UnionParent[i] = i;
@@ -356,54 +393,49 @@ double Clusterer::EvaluateLeaf(std::int32_t node, bool& canSplit)
     for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
     {
       const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      for (int k = 0; k < 3; ++k)
+      const std::int32_t next = tri[0] == v ? tri[1] : tri[1] == v ? tri[2] : tri[0];
+      if (this->InRange(next, begin, end))
       {
-        if (tri[k] != v && this->InRange(tri[k], begin, end))
+        const std::int32_t a = this->Find(i), b = this->Find(this->Position[next]);
+        if (a != b)
         {
-          const std::int32_t a = this->Find(i), b = this->Find(this->Position[tri[k]]);
-          if (a != b)
-          {
-            this->UnionParent[std::max(a, b)] = std::min(a, b);
-          }
+          this->UnionParent[std::max(a, b)] = std::min(a, b);
         }
       }
     }
   }
-  const std::int32_t first = static_cast<std::int32_t>(this->ClusterPositions.size());
+  std::int32_t count = 0;
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t root = this->Find(i);
-    if (root == i)
-    {
-      this->RootCluster[i] = static_cast<std::int32_t>(this->ClusterPositions.size());
-      this->ClusterPositions.emplace_back(Vec3::Zero());
-      this->ClusterNodes.push_back(node);
-    }
-    this->VertexCluster[this->Order[i]] = this->RootCluster[root];
+    this->RootCluster[i] = root == i ? count++ : this->RootCluster[root];
   }
-  const std::int32_t count = static_cast<std::int32_t>(this->ClusterPositions.size()) - first;
 
-  // Members of each cluster (counting sort) and their quadrics, eq. (6).
-  this->LocalOffsets.assign(count + 1, 0);
+  cell.FirstCluster = firstCluster;
+  cell.ClusterCount = count;
+
+  // Members of each cluster (counting sort), their quadric (eq. 6) and representative.
+  scratch.Offsets.assign(count + 1, 0);
   for (std::int32_t i = begin; i < end; ++i)
   {
-    ++this->LocalOffsets[this->VertexCluster[this->Order[i]] - first + 1];
+    ++scratch.Offsets[this->RootCluster[i] + 1];
   }
-  std::partial_sum(this->LocalOffsets.begin(), this->LocalOffsets.end(), this->LocalOffsets.begin());
-  this->LocalFill.assign(this->LocalOffsets.begin(), this->LocalOffsets.end() - 1);
-  this->LocalMembers.resize(end - begin);
+  std::partial_sum(scratch.Offsets.begin(), scratch.Offsets.end(), scratch.Offsets.begin());
+  scratch.Fill.assign(scratch.Offsets.begin(), scratch.Offsets.end() - 1);
+  scratch.Members.resize(end - begin);
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    this->LocalMembers[this->LocalFill[this->VertexCluster[v] - first]++] = v;
+    scratch.Members[scratch.Fill[this->RootCluster[i]]++] = v;
+    this->VertexCluster[v] = firstCluster + this->RootCluster[i];
   }
-
-  double key = 0.0;
+  key = 0.0;
   for (std::int32_t c = 0; c < count; ++c)
   {
-    const std::int32_t* members = this->LocalMembers.data() + this->LocalOffsets[c];
-    const std::int32_t size = this->LocalOffsets[c + 1] - this->LocalOffsets[c];
-    Vec3& x = this->ClusterPositions[first + c];
+    const std::int32_t* members = scratch.Members.data() + scratch.Offsets[c];
+    const std::int32_t size = scratch.Offsets[c + 1] - scratch.Offsets[c];
+    Vec3& x = this->ClusterPositions[firstCluster + c];
+    this->ClusterNodes[firstCluster + c] = node;
     if (size == 1)
     {
       x = this->P[members[0]];
@@ -412,15 +444,6 @@ double Clusterer::EvaluateLeaf(std::int32_t node, bool& canSplit)
     x = this->PlaceRepresentative(
       this->ClusterQuadric(members, size), this->ClusterCentre(members, size), cell, members, size, true);
     key = std::max(key, this->ClusterError(x, members, size));
-  }
-
-  // §2.4: clustering must not turn a related triangle against its original normal. Only
-  // triangles with one corner in the leaf survive; the corners outside keep their positions.
-  // With an error bound a flipping leaf is always split; with a count target it is split
-  // earlier than its error alone would order it.
-  if (this->Options.PreventFlips && this->LeafFlips(begin, end))
-  {
-    key = this->Options.TargetTriangles >= 0 ? 2.0 * key + MinimumCellHalfSize : FlipSplitKey;
   }
 
   canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
@@ -434,29 +457,29 @@ double Clusterer::EvaluateLeaf(std::int32_t node, bool& canSplit)
     key = ForcedSplitKey;
     canSplit = cell.Half > MinimumCellHalfSize && cell.Depth < MaximumDepth;
   }
-  return key;
+  return count;
 }
 
-bool Clusterer::LeafFlips(std::int32_t begin, std::int32_t end) const
+bool Clusterer::LeafFlips(std::int32_t node) const
 {
+  // §2.4: clustering must not turn a related triangle against its original normal. Only
+  // triangles with one corner in the leaf survive; the corners outside keep their positions.
+  const std::int32_t begin = this->Nodes[node].Begin, end = this->Nodes[node].End;
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
+    const Vec3& x = this->ClusterPositions[this->VertexCluster[v]];
     for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
     {
       const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      const int inside = this->InRange(tri[0], begin, end) + this->InRange(tri[1], begin, end) +
-        this->InRange(tri[2], begin, end);
-      if (inside != 1 || this->TriangleAreas[*t] <= 0.0)
+      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      const std::int32_t b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
+      if (this->InRange(b, begin, end) || this->InRange(c, begin, end) ||
+        this->TriangleAreas[*t] <= 0.0)
       {
         continue;
       }
-      Vec3 corner[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        corner[k] = tri[k] == v ? this->ClusterPositions[this->VertexCluster[v]] : this->P[tri[k]];
-      }
-      const Vec3 normal = (corner[1] - corner[0]).cross(corner[2] - corner[0]);
+      const Vec3 normal = (this->P[b] - x).cross(this->P[c] - x);
       if (normal.dot(this->TrianglePlanes[*t].Normal) <= 0.0)
       {
         return true;
@@ -464,6 +487,87 @@ bool Clusterer::LeafFlips(std::int32_t begin, std::int32_t end) const
     }
   }
   return false;
+}
+
+double Clusterer::VanishingError(std::int32_t node) const
+{
+  // A cluster none of whose triangles keeps three distinct clusters disappears from the output
+  // (a leg or a corner folded onto its neighbours): its vertices end up about as far from the
+  // surface as from the nearest neighbouring cluster's point. Refining elsewhere can only
+  // bring it back, so this value never grows while the leaf waits in the heap.
+  const OctreeNode& cell = this->Nodes[node];
+  std::vector<std::uint8_t> survives(cell.ClusterCount, 0);
+  std::vector<std::int32_t> neighbours; // (cluster, neighbouring cluster) pairs
+  for (std::int32_t i = cell.Begin; i < cell.End; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    const std::int32_t c = this->VertexCluster[v];
+    std::uint8_t& flag = survives[c - cell.FirstCluster];
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v) && !flag; ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+      const std::int32_t c0 = this->VertexCluster[tri[0]], c1 = this->VertexCluster[tri[1]],
+                         c2 = this->VertexCluster[tri[2]];
+      flag = (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
+      for (const std::int32_t other : { c0, c1, c2 })
+      {
+        if (other != c)
+        {
+          neighbours.push_back(c);
+          neighbours.push_back(other);
+        }
+      }
+    }
+  }
+  if (std::find(survives.begin(), survives.end(), 0) == survives.end())
+  {
+    return 0.0;
+  }
+  double error = 0.0;
+  for (std::int32_t i = cell.Begin; i < cell.End; ++i)
+  {
+    const std::int32_t v = this->Order[i];
+    const std::int32_t c = this->VertexCluster[v];
+    if (survives[c - cell.FirstCluster])
+    {
+      continue;
+    }
+    double nearest = (this->P[v] - this->ClusterPositions[c]).norm();
+    bool found = false;
+    for (std::size_t k = 0; k < neighbours.size(); k += 2)
+    {
+      if (neighbours[k] == c)
+      {
+        const double d = (this->P[v] - this->ClusterPositions[neighbours[k + 1]]).norm();
+        nearest = found ? std::min(nearest, d) : d;
+        found = true;
+      }
+    }
+    error = std::max(error, nearest);
+  }
+  return error;
+}
+
+void Clusterer::SetKey(HeapEntry& entry, bool counting) const
+{
+  if (entry.Key == ForcedSplitKey)
+  {
+    return;
+  }
+  const double base = std::max(entry.Error, entry.Vanishing);
+  entry.Key = !entry.Flipped ? base : counting ? 2.0 * base + MinimumCellHalfSize : FlipSplitKey;
+}
+
+HeapEntry Clusterer::MakeEntry(std::int32_t node, double error, bool counting) const
+{
+  HeapEntry entry{ error, this->Nodes[node].Half, node, this->Nodes[node].Serial, error, 0.0,
+    false, false };
+  if (error != ForcedSplitKey)
+  {
+    entry.Vanishing = this->VanishingError(node);
+    this->SetKey(entry, counting);
+  }
+  return entry;
 }
 
 Quadric Clusterer::ClusterQuadric(const std::int32_t* members, std::int32_t count) const
@@ -493,8 +597,10 @@ Vec3 Clusterer::ClusterCentre(const std::int32_t* members, std::int32_t count) c
 
 std::int64_t Clusterer::CountSurviving(std::int32_t begin, std::int32_t end) const
 {
-  // Triangles related to the range, each counted once (from its first corner in the range),
-  // that keep three distinct clusters.
+  // Triangles with two or more corners in the range, each counted once (from its first corner
+  // in the range), that have three distinct clusters. Before a split such triangles were
+  // degenerate (their corners were joined by an edge inside one leaf, hence one cluster), and
+  // triangles with one corner in the range keep their status, so this is the split's gain.
   std::int64_t surviving = 0;
   for (std::int32_t i = begin; i < end; ++i)
   {
@@ -502,12 +608,14 @@ std::int64_t Clusterer::CountSurviving(std::int32_t begin, std::int32_t end) con
     for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
     {
       const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      bool firstInRange = true;
-      for (int k = 0; k < 3 && tri[k] != v; ++k)
+      int before = 0, inside = 0;
+      for (int k = 0; k < 3; ++k)
       {
-        firstInRange = firstInRange && !this->InRange(tri[k], begin, end);
+        const bool in = tri[k] == v || this->InRange(tri[k], begin, end);
+        inside += in ? 1 : 0;
+        before += (in && tri[k] != v && k < (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)) ? 1 : 0;
       }
-      if (!firstInRange)
+      if (before > 0 || inside < 2)
       {
         continue;
       }
@@ -519,21 +627,12 @@ std::int64_t Clusterer::CountSurviving(std::int32_t begin, std::int32_t end) con
   return surviving;
 }
 
-void Clusterer::SplitLeaf(std::int32_t node, std::vector<HeapEntry>& children)
+std::int32_t Clusterer::PartitionNode(std::int32_t node)
 {
+  // Distribute the node's vertices to its octants, keeping their order (stable counting sort),
+  // and append the non-empty children to Nodes. Returns the id of the first child.
   const OctreeNode cell = this->Nodes[node];
   const std::int32_t begin = cell.Begin, end = cell.End;
-  this->Undo.Nodes = this->Nodes.size();
-  this->Undo.Clusters = this->ClusterPositions.size();
-  this->Undo.SurvivingCount = this->SurvivingCount;
-  this->Undo.Saved.clear();
-  for (std::int32_t i = begin; i < end; ++i)
-  {
-    this->Undo.Saved.emplace_back(this->Order[i], this->VertexCluster[this->Order[i]]);
-  }
-  const std::int64_t before = this->CountSurviving(begin, end);
-
-  // Distribute the vertices to the octants, keeping their order (stable counting sort).
   auto octant = [&](std::int32_t v) {
     const Vec3& p = this->P[v];
     return (p.x() > cell.Center.x() ? 1 : 0) | (p.y() > cell.Center.y() ? 2 : 0) |
@@ -547,19 +646,17 @@ void Clusterer::SplitLeaf(std::int32_t node, std::vector<HeapEntry>& children)
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::array<std::int32_t, 8> fill;
   std::copy(start.begin(), start.begin() + 8, fill.begin());
-  this->LocalMembers.resize(end - begin);
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    this->LocalMembers[fill[octant(v)]++] = v;
+    this->Reordered[begin + fill[octant(v)]++] = v;
   }
   for (std::int32_t i = begin; i < end; ++i)
   {
-    this->Order[i] = this->LocalMembers[i - begin];
+    this->Order[i] = this->Reordered[i];
     this->Position[this->Order[i]] = i;
   }
-
-  children.clear();
+  const std::int32_t first = static_cast<std::int32_t>(this->Nodes.size());
   const double half = 0.5 * cell.Half;
   for (int o = 0; o < 8; ++o)
   {
@@ -574,28 +671,65 @@ void Clusterer::SplitLeaf(std::int32_t node, std::vector<HeapEntry>& children)
     child.Begin = begin + start[o];
     child.End = begin + start[o + 1];
     child.Depth = cell.Depth + 1;
-    const std::int32_t id = static_cast<std::int32_t>(this->Nodes.size());
-    this->Nodes.push_back(child);
-    bool canSplit = false;
-    const double key = this->EvaluateLeaf(id, canSplit);
-    if (canSplit)
-    {
-      children.push_back({ key, half, id });
-    }
+    child.FirstCluster = child.ClusterCount = 0;
+    this->AddNode(child);
   }
-  this->SurvivingCount += this->CountSurviving(begin, end) - before;
+  return first;
 }
 
-void Clusterer::UndoSplit()
+void Clusterer::SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& children)
 {
-  for (const auto& saved : this->Undo.Saved)
+  const std::int32_t node = leaf.Node;
+  const OctreeNode cell = this->Nodes[node];
+  this->Splits.push_back({ leaf, this->Nodes.size(), this->ClusterPositions.size(),
+    this->SavedClusters.size(), this->SurvivingCount, cell.FirstCluster, cell.ClusterCount });
+  for (std::int32_t i = cell.Begin; i < cell.End; ++i)
   {
-    this->VertexCluster[saved.first] = saved.second;
+    this->SavedClusters.emplace_back(this->Order[i], this->VertexCluster[this->Order[i]]);
   }
-  this->Nodes.resize(this->Undo.Nodes);
-  this->ClusterPositions.resize(this->Undo.Clusters);
-  this->ClusterNodes.resize(this->Undo.Clusters);
-  this->SurvivingCount = this->Undo.SurvivingCount;
+  this->Nodes[node].ClusterCount = 0; // no longer a leaf
+  children.clear();
+  const std::int32_t first = this->PartitionNode(node);
+  const std::int32_t last = static_cast<std::int32_t>(this->Nodes.size());
+  std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
+  this->ClusterPositions.resize(clusters + (cell.End - cell.Begin));
+  this->ClusterNodes.resize(clusters + (cell.End - cell.Begin));
+  for (std::int32_t child = first; child < last; ++child)
+  {
+    double key = 0.0;
+    bool canSplit = false;
+    clusters += this->EvaluateLeaf(child, clusters, this->SerialScratch, key, canSplit);
+    if (canSplit)
+    {
+      children.push_back({ key, 0.0, child, 0, key, 0.0, false, false });
+    }
+  }
+  this->ClusterPositions.resize(clusters);
+  this->ClusterNodes.resize(clusters);
+  for (HeapEntry& entry : children)
+  {
+    entry = this->MakeEntry(entry.Node, entry.Error, this->Options.TargetTriangles >= 0);
+  }
+  this->SurvivingCount += this->CountSurviving(cell.Begin, cell.End);
+}
+
+void Clusterer::UndoLastSplit()
+{
+  // The nodes and clusters made after the split are exactly those past its marks, since
+  // splits are undone last-first; their heap entries become stale (IsLeaf).
+  const SplitRecord record = this->Splits.back();
+  this->Splits.pop_back();
+  for (std::size_t k = record.Saved; k < this->SavedClusters.size(); ++k)
+  {
+    this->VertexCluster[this->SavedClusters[k].first] = this->SavedClusters[k].second;
+  }
+  this->SavedClusters.resize(record.Saved);
+  this->Nodes.resize(record.Nodes);
+  this->ClusterPositions.resize(record.Clusters);
+  this->ClusterNodes.resize(record.Clusters);
+  this->SurvivingCount = record.SurvivingCount;
+  this->Nodes[record.Leaf.Node].FirstCluster = record.FirstCluster;
+  this->Nodes[record.Leaf.Node].ClusterCount = record.ClusterCount;
 }
 
 bool Clusterer::Refine(std::int64_t target, double bound)
@@ -608,24 +742,94 @@ bool Clusterer::Refine(std::int64_t target, double bound)
   {
     const HeapEntry top = this->Heap.top();
     const bool forced = top.Key == ForcedSplitKey;
-    if (!forced && (target >= 0 ? this->SurvivingCount >= target : top.Key <= bound))
+    const bool counting = target >= 0;
+    if (!forced && counting && this->SurvivingCount >= target)
+    {
+      break;
+    }
+    if (!forced && !counting && top.Key <= bound && !this->Options.PreventFlips)
     {
       break;
     }
     this->Heap.pop();
-    const std::int64_t before = this->SurvivingCount;
-    this->SplitLeaf(top.Node, children);
-    // With a count target, a split that overshoots further than stopping short is undone and
-    // smaller leaves are tried instead.
-    if (target >= 0 && !forced && this->SurvivingCount > target &&
-      this->SurvivingCount - target > target - before)
+    if (!this->IsLeaf(top))
     {
-      this->UndoSplit();
+      continue; // its node was undone
+    }
+    if (!forced && top.Vanishing > top.Error)
+    {
+      // Neighbours split since the leaf was queued may have brought its clusters back.
+      HeapEntry entry = top;
+      entry.Vanishing = this->VanishingError(top.Node);
+      this->SetKey(entry, counting);
+      if (entry.Key < top.Key)
+      {
+        this->Heap.push(entry);
+        continue;
+      }
+    }
+    if (!forced && this->Options.PreventFlips && !top.FlipChecked)
+    {
+      // §2.4, tested when the leaf comes up: a flipping leaf is always split with an error
+      // bound, and moves ahead with a count target.
+      HeapEntry entry = top;
+      entry.FlipChecked = true;
+      entry.Flipped = this->LeafFlips(top.Node);
+      if (entry.Flipped)
+      {
+        this->SetKey(entry, counting);
+        this->Heap.push(entry);
+        continue;
+      }
+      if (!counting && top.Key <= bound)
+      {
+        continue; // final: within the bound and no flip
+      }
+    }
+    this->SplitLeaf(top, children);
+    // With a count target, a split may overshoot by 2 %. One that overshoots further is undone;
+    // then the latest splits of far smaller error (a third or less) are undone, last first,
+    // until it fits, and it is split again; failing that, smaller leaves are tried instead.
+    const std::int64_t ceiling = target + target / 50;
+    if (counting && !forced && this->SurvivingCount > ceiling)
+    {
+      const std::int64_t gain = this->SurvivingCount - this->Splits.back().SurvivingCount;
+      this->UndoLastSplit();
       if (++rejections > 64)
       {
         break;
       }
-      continue;
+      const OctreeNode& cell = this->Nodes[top.Node];
+      std::size_t undo = this->Splits.size();
+      std::int64_t count = this->SurvivingCount;
+      while (undo > 0 && count + gain > ceiling)
+      {
+        const SplitRecord& record = this->Splits[undo - 1];
+        const OctreeNode& other = this->Nodes[record.Leaf.Node];
+        const bool ancestor = other.Begin <= cell.Begin && cell.End <= other.End;
+        if (ancestor || record.Leaf.Key == ForcedSplitKey || record.Leaf.Key * 3.0 > top.Key)
+        {
+          break;
+        }
+        count = record.SurvivingCount;
+        --undo;
+      }
+      if (count + gain > ceiling)
+      {
+        continue; // the leaf stays as it is
+      }
+      while (this->Splits.size() > undo)
+      {
+        const HeapEntry undone = this->Splits.back().Leaf;
+        this->UndoLastSplit();
+        this->Heap.push(undone);
+      }
+      this->SplitLeaf(top, children);
+      if (this->SurvivingCount > ceiling)
+      {
+        this->UndoLastSplit();
+        continue;
+      }
     }
     for (const HeapEntry& child : children)
     {
@@ -885,6 +1089,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   this->VertexCluster.assign(n, -1);
   this->UnionParent.resize(this->Order.size());
   this->RootCluster.resize(this->Order.size());
+  this->Reordered.resize(this->Order.size());
 
   OctreeNode root;
   root.Center = 0.5 * (lo + hi);
@@ -892,18 +1097,76 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   root.Begin = 0;
   root.End = static_cast<std::int32_t>(this->Order.size());
   root.Depth = 0;
-  this->Nodes.push_back(root);
-  bool canSplit = false;
-  const double key = this->EvaluateLeaf(0, canSplit);
-  this->SurvivingCount = this->CountSurviving(0, root.End);
-  if (canSplit)
-  {
-    this->Heap.push({ key, root.Half, 0 });
-  }
+  root.FirstCluster = root.ClusterCount = 0;
+  this->AddNode(root);
 
-  // A count target is approached on the estimate (triangles with three distinct clusters);
-  // duplicates removed at the end may leave it short, so refinement resumes up to 3 times.
+  // With a count target, the top levels are split without evaluating them while they hold
+  // far fewer cells than the target needs clusters (about target / 2): the error-ordered
+  // refinement would split each of them anyway, so only their leaves are evaluated.
+  std::vector<std::int32_t> frontier = { 0 };
   const std::int64_t target = this->Options.TargetTriangles;
+  while (target >= 0)
+  {
+    const std::size_t mark = this->Nodes.size();
+    std::vector<std::int32_t> next;
+    for (const std::int32_t node : frontier)
+    {
+      if (this->Nodes[node].End - this->Nodes[node].Begin < 2)
+      {
+        next.push_back(node);
+        continue;
+      }
+      const std::int32_t first = this->PartitionNode(node);
+      for (std::int32_t child = first; child < static_cast<std::int32_t>(this->Nodes.size()); ++child)
+      {
+        next.push_back(child);
+      }
+    }
+    if (static_cast<std::int64_t>(next.size()) * 4 > target || next.size() == frontier.size())
+    {
+      this->Nodes.resize(mark);
+      break;
+    }
+    frontier.swap(next);
+  }
+  // The frontier's leaves are evaluated in parallel; leaf i owns cluster ids Begin..End − 1 of
+  // its range, so ids, and the whole result, do not depend on the thread count.
+  this->ClusterPositions.resize(this->Order.size());
+  this->ClusterNodes.resize(this->Order.size());
+  std::vector<double> keys(frontier.size());
+  std::vector<std::uint8_t> splittable(frontier.size());
+  this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
+    Scratch scratch;
+    for (std::int64_t i = b; i < e; ++i)
+    {
+      bool canSplit = false;
+      this->EvaluateLeaf(frontier[i], this->Nodes[frontier[i]].Begin, scratch, keys[i], canSplit);
+      splittable[i] = canSplit ? 1 : 0;
+    }
+  });
+  std::vector<HeapEntry> entries(frontier.size());
+  this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t i = b; i < e; ++i)
+    {
+      if (splittable[i])
+      {
+        entries[i] = this->MakeEntry(frontier[i], keys[i], target >= 0);
+      }
+    }
+  });
+  for (std::size_t i = 0; i < frontier.size(); ++i)
+  {
+    if (splittable[i])
+    {
+      this->Heap.push(entries[i]);
+    }
+  }
+  this->SurvivingCount = this->CountSurviving(0, root.End);
+
+  // A count target is approached on the estimate (triangles with three distinct clusters).
+  // Duplicates removed at the end make the real count lower, so the estimate's target is
+  // corrected and refinement resumes, or the latest splits are undone, until the real count is
+  // within 2 % of the target (at most 6 rounds).
   std::int64_t internalTarget = target;
   std::vector<std::int32_t> survivors;
   for (int round = 0;; ++round)
@@ -914,12 +1177,27 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       return false;
     }
     survivors = this->SurvivingTriangles();
-    const std::int64_t shortfall = target - static_cast<std::int64_t>(survivors.size());
-    if (target < 0 || round == 3 || this->Heap.empty() || shortfall <= target / 200)
+    const std::int64_t excess = static_cast<std::int64_t>(survivors.size()) - target;
+    if (target < 0 || round == 5 || std::abs(excess) <= target / 50)
     {
       break;
     }
-    internalTarget += shortfall;
+    if (excess < 0)
+    {
+      if (this->Heap.empty())
+      {
+        break;
+      }
+      internalTarget = this->SurvivingCount - excess;
+      continue;
+    }
+    internalTarget = this->SurvivingCount - excess;
+    while (!this->Splits.empty() && this->SurvivingCount > internalTarget)
+    {
+      const HeapEntry undone = this->Splits.back().Leaf;
+      this->UndoLastSplit();
+      this->Heap.push(undone);
+    }
   }
   if (!this->Context.Report(0.85))
   {

@@ -10,6 +10,8 @@
 #ifndef MeshSimplification_TriangleMesh_h
 #define MeshSimplification_TriangleMesh_h
 
+#include "Execution.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -60,7 +62,8 @@ struct BoundaryEdge
 
 /// Boundary edges in triangle order (an edge shared by three or more triangles is not one).
 std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
-  const std::vector<std::uint8_t>& usable, const VertexTriangleAdjacency& adjacency);
+  const std::vector<std::uint8_t>& usable, const VertexTriangleAdjacency& adjacency,
+  const ExecutionContext& context = {});
 
 } // namespace meshsimp
 

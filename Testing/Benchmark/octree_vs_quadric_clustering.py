@@ -49,6 +49,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--threads", type=int, default=0, help="--threads for our CLI (0: all cores)")
     ap.add_argument("--workdir", default=tempfile.mkdtemp(prefix="octree-bench-"))
+    ap.add_argument("--peers", default=PEERS, help="regex of the kit's methods to run (default: %(default)s)")
     ap.add_argument("--out", help="also write the markdown here")
     a = ap.parse_args()
 
@@ -60,7 +61,7 @@ def main():
         result = os.path.join(a.workdir, name + ".json")
         command = ["/usr/bin/python3", os.path.join(a.kit, "compare.py"), mesh,
                    "--reduction", *map(str, a.reduction), "--repeat", str(a.repeat),
-                   "--only", PEERS + "|^ours$", "--extra", "ours=" + ours,
+                   "--only", a.peers + "|^ours$", "--extra", "ours=" + ours,
                    "--workdir", os.path.join(a.workdir, name), "--json", result]
         if a.bin:
             command += ["--bin", a.bin]
