@@ -116,7 +116,15 @@ private:
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
   Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
     const std::int32_t* members, std::int32_t count, bool byPosition) const;
-  double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count) const;
+  double ClusterError(
+    const Vec3& x, const std::int32_t* members, std::int32_t count, const Vec3* ring) const;
+  double Coherence(const std::int32_t* members, std::int32_t count) const;
+  bool RingCentre(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
+    Vec3& centre, double& radius) const;
+  bool ProtrudingTip(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
+    std::int32_t& tip, Vec3& ring) const;
+  double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
+    const std::int32_t* members, std::int32_t count, bool placeByQuadric, Vec3& x) const;
   std::int64_t CountSurviving(std::int32_t begin, std::int32_t end) const;
   std::int32_t PartitionNode(std::int32_t node);
   void SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& children);
@@ -337,12 +345,113 @@ Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const 
   return best;
 }
 
-double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count) const
+double Clusterer::Coherence(const std::int32_t* members, std::int32_t count) const
+{
+  // Length of the cluster's area-weighted mean unit normal: 1 for a flat patch, small where the
+  // normals spread over all directions (a tip, a thin tube, a folded sheet).
+  double weight = 0.0;
+  Vec3 areaNormal = Vec3::Zero();
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    weight += this->VertexWeights[members[i]];
+    areaNormal += this->VertexAreaNormals[members[i]];
+  }
+  return weight > 0.0 ? areaNormal.norm() / weight : 0.0;
+}
+
+bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
+  Vec3& centre, double& radius) const
+{
+  // Mean of the members with a neighbour in another cluster: where the cluster meets the rest.
+  Vec3 sum = Vec3::Zero();
+  std::int32_t ring = 0;
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    const std::int32_t v = members[i];
+    bool touches = false;
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v) && !touches; ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+      touches = this->VertexCluster[tri[0]] != cluster || this->VertexCluster[tri[1]] != cluster ||
+        this->VertexCluster[tri[2]] != cluster;
+    }
+    if (touches)
+    {
+      sum += this->P[v];
+      ++ring;
+    }
+  }
+  if (ring == 0)
+  {
+    return false;
+  }
+  centre = sum / ring;
+  radius = 0.0;
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    const std::int32_t v = members[i];
+    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+      if (this->VertexCluster[tri[0]] != cluster || this->VertexCluster[tri[1]] != cluster ||
+        this->VertexCluster[tri[2]] != cluster)
+      {
+        radius = std::max(radius, (this->P[v] - centre).norm());
+        break;
+      }
+    }
+  }
+  return true;
+}
+
+bool Clusterer::ProtrudingTip(std::int32_t cluster, const std::int32_t* members,
+  std::int32_t count, std::int32_t& tip, Vec3& ring) const
+{
+  // A folded cluster (|mean normal| < 1/2) sticks out when its member farthest from where it
+  // meets its neighbours (the ring) lies farther than the ring is wide: a leg, a finger.
+  double radius = 0.0;
+  if (count < 2 || this->Coherence(members, count) >= 0.5 ||
+    !this->RingCentre(cluster, members, count, ring, radius))
+  {
+    return false;
+  }
+  tip = members[0];
+  for (std::int32_t i = 1; i < count; ++i)
+  {
+    if ((this->P[members[i]] - ring).squaredNorm() > (this->P[tip] - ring).squaredNorm())
+    {
+      tip = members[i];
+    }
+  }
+  return (this->P[tip] - ring).norm() > radius;
+}
+
+double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
+  const std::int32_t* members, std::int32_t count, bool placeByQuadric, Vec3& x) const
+{
+  // A protruding cluster collapses to its tip, so a leg becomes a cone instead of vanishing
+  // into a point inside it; its error then counts the distance of its members to the segment
+  // from the ring's centre to the tip. Any other takes the quadric's point (eq. 3, or the
+  // fallback).
+  std::int32_t tip;
+  Vec3 ring;
+  if (this->ProtrudingTip(cluster, members, count, tip, ring))
+  {
+    x = this->P[tip];
+    return this->ClusterError(x, members, count, &ring);
+  }
+  if (placeByQuadric)
+  {
+    x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count, true);
+  }
+  return this->ClusterError(x, members, count, nullptr);
+}
+
+double Clusterer::ClusterError(
+  const Vec3& x, const std::int32_t* members, std::int32_t count, const Vec3* ring) const
 {
   // e1: distance of x to the planes of the related triangles and to the boundary planes.
   double error = 0.0;
-  double weight = 0.0;
-  Vec3 areaNormal = Vec3::Zero();
   for (std::int32_t i = 0; i < count; ++i)
   {
     const std::int32_t v = members[i];
@@ -354,19 +463,19 @@ double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::
     {
       error = std::max(error, this->BoundaryPlanes[this->BoundaryOfVertex[k]].Distance(x));
     }
-    weight += this->VertexWeights[v];
-    areaNormal += this->VertexAreaNormals[v];
   }
   // Planes cannot see a cluster that folds a tip or a thin part onto one point (a finger
-  // collapsed to its end keeps every plane distance small). Where the cluster's normals spread
-  // too widely for one side to face outwards (|mean unit normal| < 1/2), the distance of its
-  // vertices to x counts as well.
-  const double coherence = weight > 0.0 ? areaNormal.norm() / weight : 0.0;
-  if (count > 1 && coherence < 0.5)
+  // collapsed to its end keeps every plane distance small): for a folded cluster the distance
+  // of its members to x - or to the segment from its ring to x - counts as well.
+  if (count > 1 && this->Coherence(members, count) < 0.5)
   {
+    const Vec3 axis = ring ? Vec3(x - *ring) : Vec3::Zero();
+    const double length2 = axis.squaredNorm();
     for (std::int32_t i = 0; i < count; ++i)
     {
-      error = std::max(error, (this->P[members[i]] - x).norm());
+      const Vec3 offset = this->P[members[i]] - x;
+      const double along = length2 > 0.0 ? std::min(std::max(-offset.dot(axis) / length2, 0.0), 1.0) : 0.0;
+      error = std::max(error, (offset + along * axis).norm());
     }
   }
   return error;
@@ -441,9 +550,8 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
       x = this->P[members[0]];
       continue; // a lone vertex stays where it is: no error
     }
-    x = this->PlaceRepresentative(
-      this->ClusterQuadric(members, size), this->ClusterCentre(members, size), cell, members, size, true);
-    key = std::max(key, this->ClusterError(x, members, size));
+    key = std::max(key,
+      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), cell, members, size, true, x));
   }
 
   canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
@@ -790,7 +898,7 @@ bool Clusterer::Refine(std::int64_t target, double bound)
     // With a count target, a split may overshoot by 2 %. One that overshoots further is undone;
     // then the latest splits of far smaller error (a third or less) are undone, last first,
     // until it fits, and it is split again; failing that, smaller leaves are tried instead.
-    const std::int64_t ceiling = target + target / 50;
+    const std::int64_t ceiling = target + 3 * target / 100;
     if (counting && !forced && this->SurvivingCount > ceiling)
     {
       const std::int64_t gain = this->SurvivingCount - this->Splits.back().SurvivingCount;
@@ -949,14 +1057,24 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
   auto members = [&](std::int64_t p) { return result.ClusterVertices.data() + result.ClusterOffsets[p]; };
   auto size = [&](std::int64_t p) { return result.ClusterOffsets[p + 1] - result.ClusterOffsets[p]; };
 
+  // Protruding clusters take their tip again (the clusters around them may have changed
+  // since); the others start from their refinement point.
   std::vector<Vec3> position(numberOfPoints), centre(numberOfPoints);
   std::vector<Quadric> faceQuadric(numberOfPoints);
+  std::vector<std::uint8_t> folded(numberOfPoints, 0); // protruding: keeps its tip
   this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t p = b; p < e; ++p)
     {
       position[p] = this->ClusterPositions[clusterOfPoint[p]];
       centre[p] = this->ClusterCentre(members(p), size(p));
       faceQuadric[p] = this->ClusterQuadric(members(p), size(p));
+      std::int32_t tip;
+      Vec3 ring;
+      if (this->ProtrudingTip(clusterOfPoint[p], members(p), size(p), tip, ring))
+      {
+        position[p] = this->P[tip];
+        folded[p] = 1;
+      }
     }
   });
 
@@ -999,13 +1117,13 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
       for (std::int64_t p = b; p < e; ++p)
       {
         next[p] = position[p];
-        if (size(p) == 1)
+        if (size(p) == 1 || folded[p])
         {
           continue;
         }
         const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
         const Vec3 x = this->PlaceRepresentative(quadric[p], centre[p], cell, members(p), size(p), true);
-        if (!bounded || this->ClusterError(x, members(p), size(p)) <= bound)
+        if (!bounded || this->ClusterError(x, members(p), size(p), nullptr) <= bound)
         {
           next[p] = x;
         }
@@ -1025,7 +1143,10 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
       {
         result.Points[3 * p + k] = x[k];
       }
-      result.ClusterErrors[p] = this->ClusterError(position[p], members(p), size(p)) / this->Scale;
+      Vec3 x0 = position[p];
+      const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
+      result.ClusterErrors[p] =
+        this->Represent(clusterOfPoint[p], faceQuadric[p], cell, members(p), size(p), false, x0) / this->Scale;
       double total = 0.0;
       for (std::int32_t i = 0; i < size(p); ++i)
       {

@@ -57,7 +57,7 @@ struct OctreeClusteringOptions
   int ErrorIterations = 3;
   /// Add planes perpendicular to boundary edges (paper §3) so open borders are kept.
   bool BoundaryPlanes = true;
-  double BoundaryWeight = 1.0;
+  double BoundaryWeight = 10.0;
   /// Split leaves whose clustering would flip a related triangle (§2.4).
   bool PreventFlips = true;
 };
