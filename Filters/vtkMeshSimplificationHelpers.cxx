@@ -17,7 +17,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <limits>
 #include <thread>
 
@@ -67,9 +69,37 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
     out.Triangles.push_back(static_cast<std::int32_t>(c));
     out.SourceCells.push_back(source);
   };
+  vtkCellArray* polyCells = input->GetPolys();
+  if (polyCells->IsHomogeneous() == 3 && input->GetNumberOfStrips() == 0)
+  {
+    // Triangles only, the common case: copy the connectivity as it is.
+    const vtkIdType count = polyCells->GetNumberOfCells();
+    if (count >= std::numeric_limits<std::int32_t>::max())
+    {
+      error = "the input has more than 2^31 - 1 triangles";
+      return false;
+    }
+    out.Triangles.resize(3 * count);
+    out.SourceCells.resize(count);
+    if (polyCells->IsStorage64Bit())
+    {
+      const auto* ids = polyCells->GetConnectivityArray64()->GetPointer(0);
+      std::transform(ids, ids + 3 * count, out.Triangles.begin(),
+        [](vtkTypeInt64 id) { return static_cast<std::int32_t>(id); });
+    }
+    else
+    {
+      const auto* ids = polyCells->GetConnectivityArray32()->GetPointer(0);
+      std::copy(ids, ids + 3 * count, out.Triangles.begin());
+    }
+    std::iota(out.SourceCells.begin(), out.SourceCells.end(), cellId);
+    out.View.Triangles = out.Triangles.data();
+    out.View.NumberOfTriangles = count;
+    return true;
+  }
   vtkNew<vtkPolygon> polygon;
   vtkNew<vtkIdList> triangleIds;
-  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  auto polys = vtk::TakeSmartPointer(polyCells->NewIterator());
   for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
   {
     vtkIdType size;
@@ -142,6 +172,11 @@ meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int num
   {
     context.ParallelFor = [threads](std::int64_t n,
                             const std::function<void(std::int64_t, std::int64_t)>& body) {
+      if (n < 4096)
+      {
+        body(0, n); // too little work to pay for waking threads
+        return;
+      }
       vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
         vtkSMPTools::For(0, static_cast<vtkIdType>(n),
           [&](vtkIdType begin, vtkIdType end) { body(begin, end); });

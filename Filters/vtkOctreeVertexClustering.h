@@ -19,11 +19,16 @@
  *   paper's e2 iteration; when the quadric is near singular the best of the cluster's vertices
  *   and its weighted centre is used.
  *
+ * Beyond the paper: a cluster that would lose all its triangles (a leg folded onto its
+ * neighbours) is split first; a folded cluster that sticks out collapses to its tip, so thin
+ * parts become cones instead of vanishing; and with a count target late cheap splits can be
+ * undone to afford a split of far larger error.
+ *
  * The cluster error (a distance) is the largest distance from the representative to the plane
- * of any input triangle touching the cluster and to its boundary planes; where the cluster's
- * normals spread widely (a tip or a thin part folded onto one point), also the largest distance
- * from the representative to the clustered points. With TargetMode = MaximumError every output
- * point's cluster error is at most the bound.
+ * of any input triangle touching the cluster and to its boundary planes; for a folded cluster
+ * (normals spread over more than a half-space: a tip or a thin part) also the largest distance
+ * of its points to the representative, or to the segment to it when it collapsed to its tip.
+ * With TargetMode = MaximumError every output point's cluster error is at most the bound.
  *
  * Polygons are triangulated and strips decomposed first. Vertices and lines are not simplified
  * and are dropped (a warning says how many). Degenerate triangles (repeated point ids, points
@@ -129,7 +134,7 @@ public:
   ///@{
   /**
    * Add planes perpendicular to boundary edges so that open borders keep their shape
-   * (default on), with this weight relative to the face planes (default 1).
+   * (default on), with this weight relative to the face planes (default 10).
    */
   vtkSetMacro(BoundaryPlanes, bool);
   vtkGetMacro(BoundaryPlanes, bool);
@@ -186,7 +191,7 @@ protected:
   int MaximumVerticesPerCell = 0;
   int ErrorIterations = 3;
   bool BoundaryPlanes = true;
-  double BoundaryWeight = 1.0;
+  double BoundaryWeight = 10.0;
   bool PreventFlips = true;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;

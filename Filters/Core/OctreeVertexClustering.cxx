@@ -1282,7 +1282,30 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       this->Heap.push(entries[i]);
     }
   }
-  this->SurvivingCount = this->CountSurviving(0, root.End);
+  // Every triangle has all corners in the root's range: count them in parallel chunks.
+  std::vector<std::int64_t> chunkCounts(std::max<std::int64_t>(1, this->Order.size() / 4096 + 1), 0);
+  this->Context.For(static_cast<std::int64_t>(chunkCounts.size()), [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t chunk = b; chunk < e; ++chunk)
+    {
+      const std::int64_t first = chunk * 4096;
+      const std::int64_t last = std::min<std::int64_t>(first + 4096, this->Order.size());
+      for (std::int64_t i = first; i < last; ++i)
+      {
+        const std::int32_t v = this->Order[i];
+        for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+        {
+          const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
+          if (std::min({ this->Position[tri[0]], this->Position[tri[1]], this->Position[tri[2]] }) == i)
+          {
+            const std::int32_t c0 = this->VertexCluster[tri[0]], c1 = this->VertexCluster[tri[1]],
+                               c2 = this->VertexCluster[tri[2]];
+            chunkCounts[chunk] += (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
+          }
+        }
+      }
+    }
+  });
+  this->SurvivingCount = std::accumulate(chunkCounts.begin(), chunkCounts.end(), std::int64_t(0));
 
   // A count target is approached on the estimate (triangles with three distinct clusters).
   // Duplicates removed at the end make the real count lower, so the estimate's target is

@@ -19,13 +19,20 @@
  *  - the second error term e2 (squared distances of the cluster's vertices to the new triangles
  *    around the representative, eq. 8–11) is added by the paper's fixed-point iteration.
  *
+ * Beyond the paper, three rules keep thin parts: a cluster none of whose triangles survives
+ * (a leg folded onto its neighbours) is charged the distance of its vertices to the nearest
+ * neighbouring representative, so its leaf is split first; a folded cluster (its normals
+ * spread, |area-weighted mean unit normal| < 1/2) that sticks out of the surface collapses to
+ * its tip, not to a point inside it; and a split log lets late, cheap splits be undone to make
+ * room for a leaf of far larger error when a count target is tight.
+ *
  * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
  * the supporting plane of any triangle of its cluster's related set (every input triangle with
- * a vertex in the cluster) and to the boundary planes of its boundary edges; where the
- * cluster's normals spread widely (the length of their area-weighted mean is below 1/2: a tip,
- * a thin part) it is also the largest distance from v0 to the cluster's vertices. With an error
- * bound, every leaf is refined until each cluster error is at most ε, unless the leaf holds a
- * single vertex (error 0) or coincident points.
+ * a vertex in the cluster) and to the boundary planes of its boundary edges; for a folded
+ * cluster it is also the largest distance of its vertices to v0 (to the segment from where it
+ * meets its neighbours to v0 when it collapsed to its tip). With an error bound, leaves are
+ * refined until every cluster error, and the error of every cluster that would vanish, is at
+ * most ε, unless a leaf holds a single vertex (error 0) or coincident points.
  */
 #ifndef MeshSimplification_OctreeVertexClustering_h
 #define MeshSimplification_OctreeVertexClustering_h

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TriangleMesh.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace meshsimp
@@ -60,35 +61,46 @@ std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
   const std::vector<std::uint8_t>& usable, const VertexTriangleAdjacency& adjacency,
   const ExecutionContext& context)
 {
-  // Bit k of mask[t]: edge (k, k+1) of triangle t belongs to no other triangle.
-  std::vector<std::uint8_t> mask(mesh.NumberOfTriangles, 0);
-  context.For(mesh.NumberOfTriangles, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t t = begin; t < end; ++t)
+  // Edge (a, b) of triangle t, with a = t[k] and b = t[k + 1], is a boundary edge when no other
+  // triangle around a contains b. Vertex a decides for the edges that start at it, so each
+  // flag has one writer and vertices can be processed concurrently.
+  std::vector<std::uint8_t> isBoundary(3 * mesh.NumberOfTriangles, 0);
+  context.For(mesh.NumberOfPoints, [&](std::int64_t begin, std::int64_t end) {
+    std::vector<std::int32_t> next, previous; // the other corners of each triangle around a
+    for (std::int64_t a = begin; a < end; ++a)
     {
-      if (!usable[t])
+      const std::int32_t* first = adjacency.Begin(a);
+      const std::size_t degree = static_cast<std::size_t>(adjacency.End(a) - first);
+      next.resize(degree);
+      previous.resize(degree);
+      for (std::size_t i = 0; i < degree; ++i)
       {
-        continue;
+        const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(first[i]);
+        const int k = tri[0] == a ? 0 : tri[1] == a ? 1 : 2;
+        next[i] = tri[(k + 1) % 3];
+        previous[i] = tri[(k + 2) % 3];
       }
-      const std::int32_t* tri = mesh.Triangles + 3 * t;
-      for (int k = 0; k < 3; ++k)
+      for (std::size_t i = 0; i < degree; ++i)
       {
-        const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
         int uses = 0;
-        for (const std::int32_t* s = adjacency.Begin(a); s != adjacency.End(a) && uses < 2; ++s)
+        for (std::size_t j = 0; j < degree; ++j)
         {
-          const std::int32_t* other = mesh.Triangles + 3 * static_cast<std::int64_t>(*s);
-          uses += (other[0] == b || other[1] == b || other[2] == b) ? 1 : 0;
+          uses += (next[j] == next[i]) + (previous[j] == next[i]);
         }
-        mask[t] |= uses == 1 ? (1 << k) : 0;
+        if (uses == 1)
+        {
+          const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(first[i]);
+          isBoundary[3 * static_cast<std::int64_t>(first[i]) + (tri[0] == a ? 0 : tri[1] == a ? 1 : 2)] = 1;
+        }
       }
     }
   });
   std::vector<BoundaryEdge> edges;
   for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
   {
-    for (int k = 0; k < 3 && mask[t]; ++k)
+    for (int k = 0; k < 3; ++k)
     {
-      if (mask[t] & (1 << k))
+      if (usable[t] && isBoundary[3 * t + k])
       {
         edges.push_back({ mesh.Triangles[3 * t + k], mesh.Triangles[3 * t + (k + 1) % 3],
           static_cast<std::int32_t>(t) });
