@@ -15,6 +15,7 @@ parser.add_argument("--data", required=True)
 parser.add_argument("--output", required=True)
 args, _ = parser.parse_known_args()
 LoadPlugin(args.plugin, ns=globals())
+os.makedirs(args.output, exist_ok=True)
 
 
 def side_by_side(before, after, color_array, title, png, camera):
