@@ -49,8 +49,7 @@ struct HeapEntry
   std::int32_t Serial;
   double Error;       // the leaf's cluster error
   double Vanishing;   // error of its clusters that lose every triangle (see VanishingError)
-  bool FlipChecked;   // the §2.4 test runs only when a leaf reaches the top
-  bool Flipped;
+  bool Flipped;       // clustering the leaf turns a neighbouring triangle over (§2.4)
   bool operator<(const HeapEntry& o) const
   {
     if (this->Key != o.Key)
@@ -570,24 +569,28 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
 
 bool Clusterer::LeafFlips(std::int32_t node) const
 {
-  // §2.4: clustering must not turn a related triangle against its original normal. Only
-  // triangles with one corner in the leaf survive; the corners outside keep their positions.
+  // §2.4: clustering must not turn a related triangle against its original normal. The test
+  // runs when the leaf comes up, on the triangles that survive with one corner in the leaf,
+  // with the corners outside at their own clusters' current points.
   const std::int32_t begin = this->Nodes[node].Begin, end = this->Nodes[node].End;
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    const Vec3& x = this->ClusterPositions[this->VertexCluster[v]];
+    const std::int32_t cluster = this->VertexCluster[v];
+    const Vec3& x = this->ClusterPositions[cluster];
     for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
     {
       const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
       const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
       const std::int32_t b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
-      if (this->InRange(b, begin, end) || this->InRange(c, begin, end) ||
+      const std::int32_t cb = this->VertexCluster[b], cc = this->VertexCluster[c];
+      if (this->InRange(b, begin, end) || this->InRange(c, begin, end) || cb == cc ||
         this->TriangleAreas[*t] <= 0.0)
       {
         continue;
       }
-      const Vec3 normal = (this->P[b] - x).cross(this->P[c] - x);
+      const Vec3 normal =
+        (this->ClusterPositions[cb] - x).cross(this->ClusterPositions[cc] - x);
       if (normal.dot(this->TrianglePlanes[*t].Normal) <= 0.0)
       {
         return true;
@@ -658,21 +661,25 @@ double Clusterer::VanishingError(std::int32_t node) const
 
 void Clusterer::SetKey(HeapEntry& entry, bool counting) const
 {
+  // The leaf's error, or the error of clusters it would lose. A leaf that flips a neighbouring
+  // triangle (§2.4) is always split under an error bound; under a count target, where every
+  // split spends triangles, it goes as if its error were 10 % larger.
   if (entry.Key == ForcedSplitKey)
   {
     return;
   }
   const double base = std::max(entry.Error, entry.Vanishing);
-  entry.Key = !entry.Flipped ? base : counting ? 2.0 * base + MinimumCellHalfSize : FlipSplitKey;
+  entry.Key = !entry.Flipped ? base : counting ? 1.1 * base + MinimumCellHalfSize : FlipSplitKey;
 }
 
 HeapEntry Clusterer::MakeEntry(std::int32_t node, double error, bool counting) const
 {
   HeapEntry entry{ error, this->Nodes[node].Half, node, this->Nodes[node].Serial, error, 0.0,
-    false, false };
+    false };
   if (error != ForcedSplitKey)
   {
     entry.Vanishing = this->VanishingError(node);
+    entry.Flipped = this->Options.PreventFlips && this->LeafFlips(node);
     this->SetKey(entry, counting);
   }
   return entry;
@@ -809,7 +816,7 @@ void Clusterer::SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& childre
     clusters += this->EvaluateLeaf(child, clusters, this->SerialScratch, key, canSplit);
     if (canSplit)
     {
-      children.push_back({ key, 0.0, child, 0, key, 0.0, false, false });
+      children.push_back({ key, 0.0, child, 0, key, 0.0, false });
     }
   }
   this->ClusterPositions.resize(clusters);
@@ -855,9 +862,9 @@ bool Clusterer::Refine(std::int64_t target, double bound)
     {
       break;
     }
-    if (!forced && !counting && top.Key <= bound && !this->Options.PreventFlips)
+    if (!forced && !counting && top.Key <= bound)
     {
-      break;
+      break; // every leaf left is within the bound and flips nothing
     }
     this->Heap.pop();
     if (!this->IsLeaf(top))
@@ -874,24 +881,6 @@ bool Clusterer::Refine(std::int64_t target, double bound)
       {
         this->Heap.push(entry);
         continue;
-      }
-    }
-    if (!forced && this->Options.PreventFlips && !top.FlipChecked)
-    {
-      // §2.4, tested when the leaf comes up: a flipping leaf is always split with an error
-      // bound, and moves ahead with a count target.
-      HeapEntry entry = top;
-      entry.FlipChecked = true;
-      entry.Flipped = this->LeafFlips(top.Node);
-      if (entry.Flipped)
-      {
-        this->SetKey(entry, counting);
-        this->Heap.push(entry);
-        continue;
-      }
-      if (!counting && top.Key <= bound)
-      {
-        continue; // final: within the bound and no flip
       }
     }
     this->SplitLeaf(top, children);

@@ -10,7 +10,8 @@
  *  - a leaf is split where it is too large (MaximumCellSize), too full (MaximumVerticesPerCell),
  *    where clustering it would flip a triangle of its related set (§2.4), and where its error
  *    exceeds the bound ε (§2.5 step 3); with a triangle-count target, leaves are split in
- *    decreasing order of error until the count is met;
+ *    decreasing order of error until the count is met, a flipping leaf as if its error were
+ *    10 % larger;
  *  - vertices of a leaf that are not connected by edges inside it form separate clusters, so
  *    distinct parts of the surface are never merged (the distortion of Figure 1);
  *  - the representative minimises the quadric of its related triangles' planes (eq. 2–3, 5–7)

@@ -349,6 +349,78 @@ void ErrorBoundIsRespected()
   }
 }
 
+Mesh Cow()
+{
+  meshsimp::PolygonMesh cow;
+  std::string error;
+  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/cow.off", cow, error));
+  Mesh mesh;
+  mesh.Points = cow.Points;
+  mesh.Triangles.assign(cow.FaceIds.begin(), cow.FaceIds.end());
+  return mesh;
+}
+
+void CellLimitsAreAlwaysApplied()
+{
+  // §2.4 rules (a) and (b) hold whatever the target: no cluster spans more than one cell of
+  // at most MaximumCellSize, none holds more than MaximumVerticesPerCell points.
+  const Mesh cow = Cow();
+  const TriangleMeshView view = cow.View();
+  OctreeClusteringOptions options = Target(50);
+  options.MaximumVerticesPerCell = 12;
+  OctreeClusteringResult result = Simplify(cow, options);
+  for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+  {
+    CHECK(result.ClusterOffsets[p + 1] - result.ClusterOffsets[p] <= 12);
+  }
+  CHECK(result.Triangles.size() / 3 > 50); // the limit overrides the target
+
+  options = Target(50);
+  options.MaximumCellSize = 0.05; // of the diagonal 1.2170847
+  result = Simplify(cow, options);
+  const double cellEdge = 0.05 * 1.2170847;
+  for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+  {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
+    for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+    {
+      lo = lo.cwiseMin(view.Point(result.ClusterVertices[k]));
+      hi = hi.cwiseMax(view.Point(result.ClusterVertices[k]));
+    }
+    CHECK((hi - lo).maxCoeff() <= cellEdge * (1 + 1e-9));
+  }
+}
+
+void FlipRuleReducesFlippedTriangles()
+{
+  // §2.4: with PreventFlips, fewer output triangles face against the input triangle they come
+  // from than without.
+  const Mesh cow = Cow();
+  auto flipped = [&](bool prevent) {
+    OctreeClusteringOptions options = Target(580);
+    options.PreventFlips = prevent;
+    const OctreeClusteringResult result = Simplify(cow, options);
+    int count = 0;
+    for (std::size_t i = 0; i < result.SourceTriangles.size(); ++i)
+    {
+      auto point = [&](std::int32_t p) {
+        return Eigen::Vector3d(result.Points[3 * p], result.Points[3 * p + 1], result.Points[3 * p + 2]);
+      };
+      const std::int32_t* t = &result.Triangles[3 * i];
+      const std::int32_t* s = &cow.Triangles[3 * static_cast<std::size_t>(result.SourceTriangles[i])];
+      const Eigen::Vector3d now = (point(t[1]) - point(t[0])).cross(point(t[2]) - point(t[0]));
+      const TriangleMeshView view = cow.View();
+      const Eigen::Vector3d before =
+        (view.Point(s[1]) - view.Point(s[0])).cross(view.Point(s[2]) - view.Point(s[0]));
+      count += now.dot(before) < 0 ? 1 : 0;
+    }
+    return count;
+  };
+  const int with = flipped(true), without = flipped(false);
+  std::printf("flipped triangles: %d with the rule, %d without\n", with, without);
+  CHECK(with < without);
+}
+
 void SameResultForAnyThreadCount()
 {
   const Mesh cube = Cube(10);
@@ -413,6 +485,8 @@ int main()
     { "DisconnectedPartsInOneCellStayApart", DisconnectedPartsInOneCellStayApart },
     { "TargetCountIsMet", TargetCountIsMet },
     { "ErrorBoundIsRespected", ErrorBoundIsRespected },
+    { "CellLimitsAreAlwaysApplied", CellLimitsAreAlwaysApplied },
+    { "FlipRuleReducesFlippedTriangles", FlipRuleReducesFlippedTriangles },
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "InvalidTrianglesAreSkipped", InvalidTrianglesAreSkipped },
     { "AbortStopsEarly", AbortStopsEarly },
