@@ -114,7 +114,7 @@ private:
   Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
   Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
-    const std::int32_t* members, std::int32_t count, bool byPosition) const;
+    const std::int32_t* members, std::int32_t count) const;
   double ClusterError(
     const Vec3& x, const std::int32_t* members, std::int32_t count, const Vec3* ring) const;
   double Coherence(const std::int32_t* members, std::int32_t count) const;
@@ -318,13 +318,13 @@ void Clusterer::PrepareQuadrics()
 }
 
 Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
-  const std::int32_t* members, std::int32_t count, bool useQuadricMinimum) const
+  const std::int32_t* members, std::int32_t count) const
 {
   // Eq. (3) when the system is well conditioned and its solution stays near the cell (the
   // cell grown by half its size on each side); otherwise the paper's fallback: the weighted
   // centre or one of the cluster's vertices, whichever has the least error. Ties keep the centre.
   Vec3 x;
-  if (useQuadricMinimum && MinimizeQuadric(q, x) &&
+  if (MinimizeQuadric(q, x) &&
     (x - cell.Center).cwiseAbs().maxCoeff() <= 2.0 * cell.Half)
   {
     return x;
@@ -441,7 +441,7 @@ double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Octree
   }
   if (placeByQuadric)
   {
-    x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count, true);
+    x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count);
   }
   return this->ClusterError(x, members, count, nullptr);
 }
@@ -1097,6 +1097,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
         {
           continue;
         }
+        // Capped, so that a nearly degenerate new triangle does not outweigh all the others.
         const double ratio = areaNew > 0.0 ? std::min(areaThrough / areaNew, 2.0) : 2.0;
         const Vec3 normal = through / areaThrough;
         quadric[pa] += Quadric::FromPlane(normal, -normal.dot(this->P[a]), 0.5 * areaThrough * ratio * ratio);
@@ -1111,7 +1112,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
           continue;
         }
         const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
-        const Vec3 x = this->PlaceRepresentative(quadric[p], centre[p], cell, members(p), size(p), true);
+        const Vec3 x = this->PlaceRepresentative(quadric[p], centre[p], cell, members(p), size(p));
         if (!bounded || this->ClusterError(x, members(p), size(p), nullptr) <= bound)
         {
           next[p] = x;

@@ -67,6 +67,7 @@ std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
   std::vector<std::uint8_t> isBoundary(3 * mesh.NumberOfTriangles, 0);
   context.For(mesh.NumberOfPoints, [&](std::int64_t begin, std::int64_t end) {
     std::vector<std::int32_t> next, previous; // the other corners of each triangle around a
+    std::vector<std::int32_t> sortedNext, sortedPrevious;
     for (std::int64_t a = begin; a < end; ++a)
     {
       const std::int32_t* first = adjacency.Begin(a);
@@ -79,6 +80,16 @@ std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
         const int k = tri[0] == a ? 0 : tri[1] == a ? 1 : 2;
         next[i] = tri[(k + 1) % 3];
         previous[i] = tri[(k + 2) % 3];
+      }
+      // Around an interior manifold vertex every "next" corner is some triangle's "previous"
+      // one: equal multisets leave no boundary edge at a, without the quadratic count.
+      sortedNext.assign(next.begin(), next.end());
+      sortedPrevious.assign(previous.begin(), previous.end());
+      std::sort(sortedNext.begin(), sortedNext.end());
+      std::sort(sortedPrevious.begin(), sortedPrevious.end());
+      if (sortedNext == sortedPrevious)
+      {
+        continue;
       }
       for (std::size_t i = 0; i < degree; ++i)
       {
