@@ -17,22 +17,14 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "TestHelpers.h"
+
 #include <cmath>
 #include <iostream>
 #include <set>
 
 namespace
 {
-int failures = 0;
-#define EXPECT(condition)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << "\n";           \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
 
 /// The cow with point arrays of every kind (scalars, vectors, normals, colours, texture
 /// coordinates, a constant) and a cell-id array.
@@ -98,8 +90,8 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
     filter->Update();
     vtkPolyData* out = filter->GetOutput();
     const double target = std::round(inputTriangles * (1 - reduction));
-    EXPECT(std::abs(out->GetNumberOfPolys() - target) <= 0.03 * target);
-    EXPECT(out->GetNumberOfPolys() == out->GetNumberOfCells());
+    CHECK(std::abs(out->GetNumberOfPolys() - target) <= 0.03 * target);
+    CHECK(out->GetNumberOfPolys() == out->GetNumberOfCells());
 
     // Every input point array arrives with its type and components; attributes stay active.
     vtkPointData* pd = out->GetPointData();
@@ -107,12 +99,12 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
     {
       vtkDataArray* in = cow->GetPointData()->GetArray(a);
       vtkDataArray* carried = pd->GetArray(in->GetName());
-      EXPECT(carried && carried->GetDataType() == in->GetDataType() &&
+      CHECK(carried && carried->GetDataType() == in->GetDataType() &&
         carried->GetNumberOfComponents() == in->GetNumberOfComponents() &&
         carried->GetNumberOfTuples() == out->GetNumberOfPoints());
     }
-    EXPECT(pd->GetScalars() && std::string(pd->GetScalars()->GetName()) == "Height");
-    EXPECT(pd->GetTCoords() && pd->GetNormals());
+    CHECK(pd->GetScalars() && std::string(pd->GetScalars()->GetName()) == "Height");
+    CHECK(pd->GetTCoords() && pd->GetNormals());
 
     // Averages: a constant stays exact, a linear field stays within the input's range, and
     // normals are recomputed unit vectors.
@@ -120,40 +112,40 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
     cow->GetPointData()->GetArray("Height")->GetRange(range);
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
     {
-      EXPECT(std::abs(pd->GetArray("Constant")->GetTuple1(i) - 7.25) < 1e-12);
+      CHECK(std::abs(pd->GetArray("Constant")->GetTuple1(i) - 7.25) < 1e-12);
       const double h = pd->GetArray("Height")->GetTuple1(i);
-      EXPECT(h >= range[0] - 1e-12 && h <= range[1] + 1e-12);
-      EXPECT(std::abs(vtkMath::Norm(pd->GetNormals()->GetTuple3(i)) - 1.0) < 1e-5);
+      CHECK(h >= range[0] - 1e-12 && h <= range[1] + 1e-12);
+      CHECK(std::abs(vtkMath::Norm(pd->GetNormals()->GetTuple3(i)) - 1.0) < 1e-5);
     }
 
     // Cell data comes from distinct input cells; cell normals are recomputed.
     vtkDataArray* sourceCells = out->GetCellData()->GetArray("SourceCell");
-    EXPECT(sourceCells && sourceCells->GetNumberOfTuples() == out->GetNumberOfCells());
+    CHECK(sourceCells && sourceCells->GetNumberOfTuples() == out->GetNumberOfCells());
     std::set<vtkIdType> distinct;
     for (vtkIdType c = 0; sourceCells && c < sourceCells->GetNumberOfTuples(); ++c)
     {
       distinct.insert(static_cast<vtkIdType>(sourceCells->GetTuple1(c)));
     }
-    EXPECT(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
-    EXPECT(out->GetCellData()->GetNormals() != nullptr);
+    CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
+    CHECK(out->GetCellData()->GetNormals() != nullptr);
 
     // Error arrays.
     auto* sizes = vtkIntArray::SafeDownCast(pd->GetArray("ClusterSize"));
     auto* errors = vtkDoubleArray::SafeDownCast(pd->GetArray("ClusterError"));
-    EXPECT(sizes && errors);
+    CHECK(sizes && errors);
     vtkIdType merged = 0;
     double largest = 0;
     for (vtkIdType i = 0; sizes && errors && i < out->GetNumberOfPoints(); ++i)
     {
-      EXPECT(sizes->GetValue(i) >= 1);
-      EXPECT(errors->GetValue(i) >= 0);
+      CHECK(sizes->GetValue(i) >= 1);
+      CHECK(errors->GetValue(i) >= 0);
       merged += sizes->GetValue(i);
       largest = std::max(largest, errors->GetValue(i));
     }
-    EXPECT(merged <= cow->GetNumberOfPoints());
-    EXPECT(std::abs(largest - filter->GetAchievedMaximumError()) < 1e-12);
+    CHECK(merged <= cow->GetNumberOfPoints());
+    CHECK(std::abs(largest - filter->GetAchievedMaximumError()) < 1e-12);
     vtkDataArray* achieved = out->GetFieldData()->GetArray("AchievedReduction");
-    EXPECT(achieved &&
+    CHECK(achieved &&
       std::abs(achieved->GetTuple1(0) - (1 - out->GetNumberOfPolys() / inputTriangles)) < 1e-12);
   }
 }
@@ -170,15 +162,15 @@ void TestErrorBound(vtkPolyData* cow)
     filter->SetMaximumError(epsilon);
     filter->Update();
     vtkPolyData* out = filter->GetOutput();
-    EXPECT(filter->GetAchievedMaximumError() <= epsilon * diagonal * (1 + 1e-9));
+    CHECK(filter->GetAchievedMaximumError() <= epsilon * diagonal * (1 + 1e-9));
     vtkDataArray* errors = out->GetPointData()->GetArray("ClusterError");
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
     {
-      EXPECT(errors->GetTuple1(i) <= epsilon * diagonal * (1 + 1e-9));
+      CHECK(errors->GetTuple1(i) <= epsilon * diagonal * (1 + 1e-9));
     }
     // A tighter bound keeps more triangles.
-    EXPECT(out->GetNumberOfPolys() > previousCount);
-    EXPECT(out->GetNumberOfPolys() < cow->GetNumberOfPolys());
+    CHECK(out->GetNumberOfPolys() > previousCount);
+    CHECK(out->GetNumberOfPolys() < cow->GetNumberOfPolys());
     previousCount = out->GetNumberOfPolys();
   }
   // The absolute bound means the same thing in input units.
@@ -188,7 +180,7 @@ void TestErrorBound(vtkPolyData* cow)
   absolute->SetMaximumError(0.01 * diagonal);
   absolute->RelativeErrorOff();
   absolute->Update();
-  EXPECT(absolute->GetAchievedMaximumError() <= 0.01 * diagonal * (1 + 1e-9));
+  CHECK(absolute->GetAchievedMaximumError() <= 0.01 * diagonal * (1 + 1e-9));
 }
 
 void TestThreadsAndInput(vtkPolyData* cow)
@@ -209,28 +201,28 @@ void TestThreadsAndInput(vtkPolyData* cow)
   }
   for (int k = 1; k < 3; ++k)
   {
-    EXPECT(outputs[k]->GetNumberOfPoints() == outputs[0]->GetNumberOfPoints());
-    EXPECT(outputs[k]->GetNumberOfPolys() == outputs[0]->GetNumberOfPolys());
+    CHECK(outputs[k]->GetNumberOfPoints() == outputs[0]->GetNumberOfPoints());
+    CHECK(outputs[k]->GetNumberOfPolys() == outputs[0]->GetNumberOfPolys());
     for (vtkIdType i = 0; i < outputs[0]->GetNumberOfPoints(); ++i)
     {
       double a[3], b[3];
       outputs[0]->GetPoint(i, a);
       outputs[k]->GetPoint(i, b);
-      EXPECT(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+      CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
     }
   }
   // The input is never modified.
-  EXPECT(cow->GetMTime() == mtime);
-  EXPECT(cow->GetNumberOfPoints() == before->GetNumberOfPoints());
-  EXPECT(cow->GetNumberOfCells() == before->GetNumberOfCells());
+  CHECK(cow->GetMTime() == mtime);
+  CHECK(cow->GetNumberOfPoints() == before->GetNumberOfPoints());
+  CHECK(cow->GetNumberOfCells() == before->GetNumberOfCells());
   for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
   {
     double a[3], b[3];
     cow->GetPoint(i, a);
     before->GetPoint(i, b);
-    EXPECT(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+    CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
   }
-  EXPECT(cow->GetPointData()->GetNumberOfArrays() == before->GetPointData()->GetNumberOfArrays());
+  CHECK(cow->GetPointData()->GetNumberOfArrays() == before->GetPointData()->GetNumberOfArrays());
 }
 
 void TestTriangleCountMode(vtkPolyData* cow)
@@ -240,17 +232,17 @@ void TestTriangleCountMode(vtkPolyData* cow)
   filter->SetTargetModeToTriangleCount();
   filter->SetTargetTriangleCount(1000);
   filter->Update();
-  EXPECT(std::abs(filter->GetOutput()->GetNumberOfPolys() - 1000) <= 30);
+  CHECK(std::abs(filter->GetOutput()->GetNumberOfPolys() - 1000) <= 30);
 }
 }
 
 int TestOctreeVertexClustering(int, char*[])
 {
   vtkSmartPointer<vtkPolyData> cow = DecoratedCow();
-  EXPECT(cow->GetNumberOfPolys() == 5804);
+  CHECK(cow->GetNumberOfPolys() == 5804);
   TestTargetsAndAttributes(cow);
   TestErrorBound(cow);
   TestThreadsAndInput(cow);
   TestTriangleCountMode(cow);
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -11,22 +11,14 @@
 #include "vtkSphereSource.h"
 #include "vtkTestErrorObserver.h"
 
+#include "TestHelpers.h"
+
 #include <cmath>
 #include <iostream>
 #include <limits>
 
 namespace
 {
-int failures = 0;
-#define EXPECT(condition)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << "\n";           \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (false)
 
 struct Run
 {
@@ -52,8 +44,8 @@ Run Simplify(vtkPolyData* input, double reduction = 0.5)
   run.Warned = observer->GetWarning();
   run.Failed = observer->GetError();
   // The input is never modified.
-  EXPECT(input->GetNumberOfPoints() == copy->GetNumberOfPoints());
-  EXPECT(input->GetNumberOfCells() == copy->GetNumberOfCells());
+  CHECK(input->GetNumberOfPoints() == copy->GetNumberOfPoints());
+  CHECK(input->GetNumberOfCells() == copy->GetNumberOfCells());
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
     double a[3], b[3];
@@ -61,7 +53,7 @@ Run Simplify(vtkPolyData* input, double reduction = 0.5)
     copy->GetPoint(i, b);
     for (int k = 0; k < 3; ++k)
     {
-      EXPECT(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k])));
+      CHECK(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k])));
     }
   }
   // Whatever happened, the output is well formed.
@@ -69,7 +61,7 @@ Run Simplify(vtkPolyData* input, double reduction = 0.5)
   {
     double p[3];
     run.Output->GetPoint(i, p);
-    EXPECT(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    CHECK(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
   }
   return run;
 }
@@ -92,7 +84,7 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
   {
     vtkNew<vtkPolyData> empty;
     const Run run = Simplify(empty);
-    EXPECT(!run.Failed && run.Output->GetNumberOfPoints() == 0);
+    CHECK(!run.Failed && run.Output->GetNumberOfPoints() == 0);
   }
   // Points only, no cells: nothing to simplify, empty output.
   {
@@ -102,7 +94,7 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     points->InsertNextPoint(1, 0, 0);
     cloud->SetPoints(points);
     const Run run = Simplify(cloud);
-    EXPECT(!run.Failed && run.Output->GetNumberOfCells() == 0);
+    CHECK(!run.Failed && run.Output->GetNumberOfCells() == 0);
   }
   // NaN points: their triangles are ignored with a warning; the rest is simplified.
   {
@@ -110,8 +102,8 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     sphere->GetPoints()->SetPoint(5, std::numeric_limits<double>::quiet_NaN(), 0, 0);
     sphere->GetPoints()->SetPoint(40, 0, std::numeric_limits<double>::infinity(), 0);
     const Run run = Simplify(sphere);
-    EXPECT(run.Warned && !run.Failed);
-    EXPECT(run.Output->GetNumberOfPolys() > 0);
+    CHECK(run.Warned && !run.Failed);
+    CHECK(run.Output->GetNumberOfPolys() > 0);
   }
   // Degenerate (repeated ids, zero area) and non-manifold (three triangles on an edge) triangles.
   {
@@ -126,7 +118,7 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     polys->InsertNextCell(3, flat);
     sphere->Modified();
     const Run run = Simplify(sphere);
-    EXPECT(!run.Failed && run.Output->GetNumberOfPolys() > 0);
+    CHECK(!run.Failed && run.Output->GetNumberOfPolys() > 0);
   }
   // Quads and strips are triangulated first and simplified like triangles.
   {
@@ -168,8 +160,8 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     mixed->SetStrips(strips);
     const Run run = Simplify(mixed, 0.75);
     const double target = 0.25 * 2 * n * n;
-    EXPECT(!run.Failed && std::abs(run.Output->GetNumberOfPolys() - target) <= 0.03 * target);
-    EXPECT(run.Output->GetNumberOfStrips() == 0);
+    CHECK(!run.Failed && std::abs(run.Output->GetNumberOfPolys() - target) <= 0.03 * target);
+    CHECK(run.Output->GetNumberOfStrips() == 0);
   }
   // Lines and vertices only: dropped with a warning, empty output.
   {
@@ -189,7 +181,7 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     wires->SetLines(lines);
     wires->SetVerts(verts);
     const Run run = Simplify(wires);
-    EXPECT(run.Warned && !run.Failed && run.Output->GetNumberOfCells() == 0);
+    CHECK(run.Warned && !run.Failed && run.Output->GetNumberOfCells() == 0);
   }
   // Out-of-range targets are clamped: reduction 1.5 → 1 (no triangle left), −1 → 0 (no
   // triangle removed but duplicates), and a negative error bound → 0 (exact).
@@ -198,19 +190,19 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     vtkNew<vtkOctreeVertexClustering> filter;
     filter->SetInputData(sphere);
     filter->SetTargetReduction(1.5);
-    EXPECT(filter->GetTargetReduction() == 1.0);
+    CHECK(filter->GetTargetReduction() == 1.0);
     filter->Update();
-    EXPECT(filter->GetOutput()->GetNumberOfPolys() == 0);
+    CHECK(filter->GetOutput()->GetNumberOfPolys() == 0);
     filter->SetTargetReduction(-1);
-    EXPECT(filter->GetTargetReduction() == 0.0);
+    CHECK(filter->GetTargetReduction() == 0.0);
     filter->Update();
-    EXPECT(filter->GetOutput()->GetNumberOfPolys() == sphere->GetNumberOfPolys());
+    CHECK(filter->GetOutput()->GetNumberOfPolys() == sphere->GetNumberOfPolys());
     filter->SetTargetModeToMaximumError();
     filter->SetMaximumError(-3);
-    EXPECT(filter->GetMaximumError() == 0.0);
+    CHECK(filter->GetMaximumError() == 0.0);
     filter->Update();
-    EXPECT(filter->GetOutput()->GetNumberOfPolys() > 0.9 * sphere->GetNumberOfPolys());
-    EXPECT(filter->GetAchievedMaximumError() < 1e-9);
+    CHECK(filter->GetOutput()->GetNumberOfPolys() > 0.9 * sphere->GetNumberOfPolys());
+    CHECK(filter->GetAchievedMaximumError() < 1e-9);
   }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
