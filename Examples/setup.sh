@@ -14,7 +14,7 @@ packages=(
   libhdf5-dev libutfcpp-dev libtiff-dev libtheora-dev libpng-dev libnetcdf-dev libxml2-dev
   liblzma-dev liblz4-dev libjpeg-dev libglew-dev libgl2ps-dev libgdal-dev libfreetype-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libexpat1-dev libboost-dev
-  zlib1g-dev libx11-dev libgl-dev libxt-dev libopenmpi-dev python3-mpi4py
+  zlib1g-dev libx11-dev libgl-dev libxt-dev libopenmpi-dev python3-mpi4py python3-numpy
   libdouble-conversion-dev
 )
 missing=()

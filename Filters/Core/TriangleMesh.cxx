@@ -67,7 +67,6 @@ std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
   std::vector<std::uint8_t> isBoundary(3 * mesh.NumberOfTriangles, 0);
   context.For(mesh.NumberOfPoints, [&](std::int64_t begin, std::int64_t end) {
     std::vector<std::int32_t> next, previous; // the other corners of each triangle around a
-    std::vector<std::int32_t> sortedNext, sortedPrevious;
     for (std::int64_t a = begin; a < end; ++a)
     {
       const std::int32_t* first = adjacency.Begin(a);
@@ -81,24 +80,16 @@ std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
         next[i] = tri[(k + 1) % 3];
         previous[i] = tri[(k + 2) % 3];
       }
-      // Around an interior manifold vertex every "next" corner is some triangle's "previous"
-      // one: equal multisets leave no boundary edge at a, without the quadratic count.
-      sortedNext.assign(next.begin(), next.end());
-      sortedPrevious.assign(previous.begin(), previous.end());
-      std::sort(sortedNext.begin(), sortedNext.end());
-      std::sort(sortedPrevious.begin(), sortedPrevious.end());
-      if (sortedNext == sortedPrevious)
-      {
-        continue;
-      }
       for (std::size_t i = 0; i < degree; ++i)
       {
-        int uses = 0;
-        for (std::size_t j = 0; j < degree; ++j)
+        // Common case first: a consistently oriented neighbour triangle has b as its previous
+        // corner, so the edge is shared. Otherwise count every triangle around a with b.
+        const std::int32_t b = next[i];
+        if (std::find(previous.begin(), previous.end(), b) != previous.end())
         {
-          uses += (next[j] == next[i]) + (previous[j] == next[i]);
+          continue;
         }
-        if (uses == 1)
+        if (std::count(next.begin(), next.end(), b) == 1)
         {
           const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(first[i]);
           isBoundary[3 * static_cast<std::int64_t>(first[i]) + (tri[0] == a ? 0 : tri[1] == a ? 1 : 2)] = 1;
