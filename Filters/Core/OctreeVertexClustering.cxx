@@ -18,7 +18,7 @@ using Vec3 = Eigen::Vector3d;
 
 /// Heap keys above every error: leaves that must be split whatever the target.
 constexpr double ForcedSplitKey = std::numeric_limits<double>::infinity();
-/// Leaves whose clustering flips a related triangle (§2.4): split before any error-driven split.
+/// Under an error bound, leaves whose clustering flips a related triangle (§2.4): always split.
 constexpr double FlipSplitKey = std::numeric_limits<double>::max();
 /// Leaves smaller than this (in units of the bounding-box diagonal) hold coincident points.
 constexpr double MinimumCellHalfSize = 1e-9;
