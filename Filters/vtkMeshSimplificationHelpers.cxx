@@ -170,11 +170,11 @@ meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int num
   const int threads = ResolveThreadCount(numberOfThreads);
   if (threads > 1)
   {
-    context.ParallelFor = [threads](std::int64_t n,
+    context.ParallelFor = [threads](std::int64_t n, std::int64_t work,
                             const std::function<void(std::int64_t, std::int64_t)>& body) {
-      if (n < 4096)
+      if (work < 32768)
       {
-        body(0, n); // too little work to pay for waking threads
+        body(0, n); // too little work to pay for starting threads
         return;
       }
       vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {

@@ -19,13 +19,17 @@ namespace meshsimp
 
 struct ExecutionContext
 {
-  /// Calls body(begin, end) over sub-ranges covering [0, n), possibly concurrently.
-  std::function<void(std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body)>
+  /// Calls body(begin, end) over sub-ranges covering [0, n), possibly concurrently; work
+  /// estimates the whole loop's cost in simple per-element steps, so that an implementation can
+  /// run small loops inline rather than wake threads for them.
+  std::function<void(std::int64_t n, std::int64_t work,
+    const std::function<void(std::int64_t, std::int64_t)>& body)>
     ParallelFor;
   /// Receives progress in [0, 1]; returns false when the caller wants to abort.
   std::function<bool(double)> Progress;
 
-  void For(std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body) const
+  void For(std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body,
+    std::int64_t work = -1) const
   {
     if (n <= 0)
     {
@@ -33,7 +37,7 @@ struct ExecutionContext
     }
     if (this->ParallelFor)
     {
-      this->ParallelFor(n, body);
+      this->ParallelFor(n, work < 0 ? n : work, body);
     }
     else
     {

@@ -1065,7 +1065,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
         folded[p] = 1;
       }
     }
-  });
+  }, static_cast<std::int64_t>(result.ClusterVertices.size()));
 
   // e2 by the paper's iteration (eq. 8–11): with the representatives of the previous iterate,
   // the squared distance of a cluster vertex a to a new triangle (v0, b', c') is the squared
@@ -1118,7 +1118,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
           next[p] = x;
         }
       }
-    });
+    }, static_cast<std::int64_t>(result.ClusterVertices.size()));
     position.swap(next);
   }
 
@@ -1148,7 +1148,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
           total > 0.0 ? this->VertexWeights[members(p)[i]] / total : 1.0 / size(p);
       }
     }
-  });
+  }, static_cast<std::int64_t>(result.ClusterVertices.size()));
   result.MaximumClusterError =
     result.ClusterErrors.empty() ? 0.0 : *std::max_element(result.ClusterErrors.begin(), result.ClusterErrors.end());
 
@@ -1246,6 +1246,8 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   this->ClusterNodes.resize(this->Order.size());
   std::vector<double> keys(frontier.size());
   std::vector<std::uint8_t> splittable(frontier.size());
+  // Each leaf costs about its vertex count: the loop's work is the whole mesh.
+  const std::int64_t frontierWork = static_cast<std::int64_t>(this->Order.size());
   this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
     Scratch scratch;
     for (std::int64_t i = b; i < e; ++i)
@@ -1254,7 +1256,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       this->EvaluateLeaf(frontier[i], this->Nodes[frontier[i]].Begin, scratch, keys[i], canSplit);
       splittable[i] = canSplit ? 1 : 0;
     }
-  });
+  }, frontierWork);
   std::vector<HeapEntry> entries(frontier.size());
   this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t i = b; i < e; ++i)
@@ -1264,7 +1266,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
         entries[i] = this->MakeEntry(frontier[i], keys[i], target >= 0);
       }
     }
-  });
+  }, frontierWork);
   for (std::size_t i = 0; i < frontier.size(); ++i)
   {
     if (splittable[i])
@@ -1294,7 +1296,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
         }
       }
     }
-  });
+  }, static_cast<std::int64_t>(this->Adjacency.Triangles.size()));
   this->SurvivingCount = std::accumulate(chunkCounts.begin(), chunkCounts.end(), std::int64_t(0));
 
   // A count target is approached on the estimate (triangles with three distinct clusters).

@@ -417,7 +417,8 @@ void SameResultForAnyThreadCount()
   const Mesh cube = Cube(10);
   meshsimp::ExecutionContext chunked;
   // A "parallel" for that runs chunks in reverse order: results must not depend on scheduling.
-  chunked.ParallelFor = [](std::int64_t n, const std::function<void(std::int64_t, std::int64_t)>& body) {
+  chunked.ParallelFor = [](std::int64_t n, std::int64_t,
+                          const std::function<void(std::int64_t, std::int64_t)>& body) {
     const std::int64_t chunk = std::max<std::int64_t>(1, n / 7);
     for (std::int64_t begin = (n - 1) / chunk * chunk; begin >= 0; begin -= chunk)
     {
