@@ -54,7 +54,7 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
     }
     for (vtkIdType i = 0; i < 3 * numberOfPoints; ++i)
     {
-      out.NumberOfNonFinitePoints += std::isfinite(out.View.Points[i]) ? 0 : 1;
+      out.NumberOfNonFiniteCoordinates += std::isfinite(out.View.Points[i]) ? 0 : 1;
     }
   }
   out.View.NumberOfPoints = numberOfPoints;

@@ -33,7 +33,7 @@ struct TriangleInput
   std::vector<double> PointCopy; // filled only when the input points are not doubles
   std::vector<std::int32_t> Triangles;
   std::vector<vtkIdType> SourceCells; // input cell id of each triangle
-  vtkIdType NumberOfVerts = 0, NumberOfLines = 0, NumberOfNonFinitePoints = 0;
+  vtkIdType NumberOfVerts = 0, NumberOfLines = 0, NumberOfNonFiniteCoordinates = 0;
   meshsimp::TriangleMeshView View;
 };
 

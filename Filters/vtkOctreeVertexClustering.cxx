@@ -41,7 +41,7 @@ int vtkOctreeVertexClustering::RequestData(
                     << triangles.NumberOfLines
                     << " line cells: only triangles, polygons and strips are simplified.");
   }
-  if (triangles.NumberOfNonFinitePoints > 0)
+  if (triangles.NumberOfNonFiniteCoordinates > 0)
   {
     vtkWarningMacro(<< "Ignoring the triangles of points with NaN or infinite coordinates.");
   }
