@@ -1,0 +1,22 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Run by the ParaView GUI (paraview --script=... --exit): load the plugin, simplify the cow, and
+write the triangle count - or the error - to the file MESHSIMPLIFICATION_MARKER names, for
+Testing/GUI/TestParaViewGUI.cmake to check."""
+import os
+import traceback
+
+marker = os.environ["MESHSIMPLIFICATION_MARKER"]
+try:
+    from paraview.simple import *  # noqa: F401,F403
+
+    LoadPlugin(os.environ["MESHSIMPLIFICATION_PLUGIN"], ns=globals())
+    cow = OFFReader(FileName=os.environ["MESHSIMPLIFICATION_COW"])
+    simplified = OctreeVertexClustering(Input=cow, TargetReduction=0.9)
+    simplified.UpdatePipeline()
+    Show(simplified)
+    Render()
+    result = "%d\n" % simplified.GetDataInformation().GetNumberOfCells()
+except Exception:
+    result = "error\n" + traceback.format_exc()
+with open(marker, "w") as out:
+    out.write(result)
