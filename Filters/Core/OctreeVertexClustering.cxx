@@ -570,8 +570,8 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
 bool Clusterer::LeafFlips(std::int32_t node) const
 {
   // §2.4: clustering must not turn a related triangle against its original normal. The test
-  // runs when the leaf comes up, on the triangles that survive with one corner in the leaf,
-  // with the corners outside at their own clusters' current points.
+  // runs when the leaf is made, on the triangles that survive with one corner in the leaf, with
+  // the corners outside at their own clusters' current points.
   const std::int32_t begin = this->Nodes[node].Begin, end = this->Nodes[node].End;
   for (std::int32_t i = begin; i < end; ++i)
   {
