@@ -28,7 +28,7 @@ def side_by_side(before, after, color_array, title, png, camera):
         view.OrientationAxesVisibility = 0
         display = Show(source, view)
         display.SetRepresentationType("Surface With Edges" if source is after else "Surface")
-        if color_array:
+        if color_array and color_array in source.PointData.keys():
             ColorBy(display, ("POINTS", color_array))
         else:
             display.ColorArrayName = ["POINTS", ""]
