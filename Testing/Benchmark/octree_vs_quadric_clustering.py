@@ -53,7 +53,7 @@ def main():
     ap.add_argument("--out", help="also write the markdown here")
     a = ap.parse_args()
 
-    ours = "%s --method octree --target-triangles {target} --threads %d --json {in_vtp} {out_vtp}" % (
+    ours = "%s --method octree --target-triangles {target} --threads %d --repeat {repeat} --json {in_vtp} {out_vtp}" % (
         os.path.abspath(a.cli), a.threads)
     cases = []
     for mesh in a.meshes:
