@@ -80,15 +80,16 @@ struct Quadric
 inline bool MinimizeQuadric(const Quadric& q, Eigen::Vector3d& x, double relativeTolerance = 1e-6)
 {
   const Eigen::Matrix3d a = q.A();
+  // The closed-form eigenvalues suffice to judge conditioning; the solve itself uses a pivoted
+  // LDLT, which is accurate to round-off where the closed-form eigenvectors are not.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(a);
+  eig.computeDirect(a, Eigen::EigenvaluesOnly);
   const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
   if (!(lambda(2) > 0.0) || !(lambda(0) > relativeTolerance * lambda(2)))
   {
     return false;
   }
-  const Eigen::Matrix3d& u = eig.eigenvectors();
-  x = -(u * (u.transpose() * q.B()).cwiseQuotient(lambda));
+  x = a.ldlt().solve(-q.B());
   return x.allFinite();
 }
 
