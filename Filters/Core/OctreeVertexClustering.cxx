@@ -67,9 +67,9 @@ struct HeapEntry
 class Clusterer
 {
 public:
-  Clusterer(const TriangleMeshView& mesh, const OctreeClusteringOptions& options,
+  Clusterer(const TriangleMeshView& input, const OctreeClusteringOptions& options,
     const ExecutionContext& context)
-    : Mesh(mesh)
+    : Input(input)
     , Options(options)
     , Context(context)
   {
@@ -143,15 +143,16 @@ private:
   bool Refine(std::int64_t target, double bound);
   void Finalize(const std::vector<std::int32_t>& survivors, OctreeClusteringResult& result);
 
-  const TriangleMeshView& Mesh;
+  const TriangleMeshView& Input;
   const OctreeClusteringOptions& Options;
   const ExecutionContext& Context;
+  CompactMesh Local; // the usable input, renumbered; every id below is one of its ids
+  TriangleMeshView Mesh;
 
   // Geometry, normalised so that the bounding-box diagonal is 1 and tolerances are relative.
   Vec3 Origin = Vec3::Zero();
   double Scale = 1.0;
   std::vector<Vec3> P;
-  std::vector<std::uint8_t> Usable;
   VertexTriangleAdjacency Adjacency;
   std::vector<Plane> TrianglePlanes;
   std::vector<double> TriangleAreas;
@@ -194,27 +195,18 @@ private:
 
 void Clusterer::PrepareGeometry()
 {
+  this->Local = MakeCompactMesh(this->Input, this->Context);
+  this->Mesh = this->Local.View();
   const std::int64_t n = this->Mesh.NumberOfPoints;
   const std::int64_t m = this->Mesh.NumberOfTriangles;
-  this->Usable.resize(m);
-  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t t = b; t < e; ++t)
-    {
-      this->Usable[t] = IsUsableTriangle(this->Mesh, t) ? 1 : 0;
-    }
-  });
-  this->Adjacency.Build(this->Mesh, this->Usable);
+  this->Adjacency.Build(this->Mesh);
 
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = -lo;
   for (std::int64_t v = 0; v < n; ++v)
   {
-    if (this->Adjacency.Offsets[v + 1] > this->Adjacency.Offsets[v])
-    {
-      const Vec3 p = this->Mesh.Point(v);
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
+    lo = lo.cwiseMin(this->Mesh.Point(v));
+    hi = hi.cwiseMax(this->Mesh.Point(v));
   }
   this->Origin = 0.5 * (lo + hi);
   const double diagonal = (hi - lo).norm();
@@ -232,10 +224,6 @@ void Clusterer::PrepareGeometry()
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
-      if (!this->Usable[t])
-      {
-        continue;
-      }
       const std::int32_t* tri = this->Mesh.Triangles + 3 * t;
       const Vec3 cross = (this->P[tri[1]] - this->P[tri[0]]).cross(this->P[tri[2]] - this->P[tri[0]]);
       const double length = cross.norm();
@@ -258,7 +246,7 @@ void Clusterer::PrepareQuadrics()
   if (this->Options.BoundaryPlanes)
   {
     const std::vector<BoundaryEdge> edges =
-      FindBoundaryEdges(this->Mesh, this->Usable, this->Adjacency, this->Context);
+      FindBoundaryEdges(this->Mesh, this->Adjacency, this->Context);
     this->BoundaryPlanes.resize(edges.size());
     this->BoundaryWeights.assign(edges.size(), 0.0);
     for (std::size_t i = 0; i < edges.size(); ++i)
@@ -297,12 +285,13 @@ void Clusterer::PrepareQuadrics()
       Quadric q;
       double weight = 0.0;
       Vec3 areaNormal = Vec3::Zero();
-      for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+      for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
       {
-        const double third = this->TriangleAreas[*t] / 3.0;
-        q += Quadric::FromPlane(this->TrianglePlanes[*t].Normal, this->TrianglePlanes[*t].Offset, third);
+        const Plane& plane = this->TrianglePlanes[c->Triangle];
+        const double third = this->TriangleAreas[c->Triangle] / 3.0;
+        q += Quadric::FromPlane(plane.Normal, plane.Offset, third);
         weight += third;
-        areaNormal += third * this->TrianglePlanes[*t].Normal;
+        areaNormal += third * plane.Normal;
       }
       for (std::int32_t k = this->BoundaryOffsets[v]; k < this->BoundaryOffsets[v + 1]; ++k)
       {
@@ -368,11 +357,9 @@ bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, st
   {
     const std::int32_t v = members[i];
     bool touches = false;
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v) && !touches; ++t)
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v) && !touches; ++c)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      touches = this->VertexCluster[tri[0]] != cluster || this->VertexCluster[tri[1]] != cluster ||
-        this->VertexCluster[tri[2]] != cluster;
+      touches = this->VertexCluster[c->Next] != cluster || this->VertexCluster[c->Previous] != cluster;
     }
     if (touches)
     {
@@ -389,11 +376,9 @@ bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, st
   for (std::int32_t i = 0; i < count; ++i)
   {
     const std::int32_t v = members[i];
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      if (this->VertexCluster[tri[0]] != cluster || this->VertexCluster[tri[1]] != cluster ||
-        this->VertexCluster[tri[2]] != cluster)
+      if (this->VertexCluster[c->Next] != cluster || this->VertexCluster[c->Previous] != cluster)
       {
         radius = std::max(radius, (this->P[v] - centre).norm());
         break;
@@ -454,9 +439,9 @@ double Clusterer::ClusterError(
   for (std::int32_t i = 0; i < count; ++i)
   {
     const std::int32_t v = members[i];
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      error = std::max(error, this->TrianglePlanes[*t].Distance(x));
+      error = std::max(error, this->TrianglePlanes[c->Triangle].Distance(x));
     }
     for (std::int32_t k = this->BoundaryOffsets[v]; k < this->BoundaryOffsets[v + 1]; ++k)
     {
@@ -498,13 +483,11 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      const std::int32_t next = tri[0] == v ? tri[1] : tri[1] == v ? tri[2] : tri[0];
-      if (this->InRange(next, begin, end))
+      if (this->InRange(c->Next, begin, end))
       {
-        const std::int32_t a = this->Find(i), b = this->Find(this->Position[next]);
+        const std::int32_t a = this->Find(i), b = this->Find(this->Position[c->Next]);
         if (a != b)
         {
           this->UnionParent[std::max(a, b)] = std::min(a, b);
@@ -578,20 +561,17 @@ bool Clusterer::LeafFlips(std::int32_t node) const
     const std::int32_t v = this->Order[i];
     const std::int32_t cluster = this->VertexCluster[v];
     const Vec3& x = this->ClusterPositions[cluster];
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-      const std::int32_t b = tri[(k + 1) % 3], c = tri[(k + 2) % 3];
-      const std::int32_t cb = this->VertexCluster[b], cc = this->VertexCluster[c];
-      if (this->InRange(b, begin, end) || this->InRange(c, begin, end) || cb == cc ||
-        this->TriangleAreas[*t] <= 0.0)
+      const std::int32_t cb = this->VertexCluster[c->Next], cc = this->VertexCluster[c->Previous];
+      if (this->InRange(c->Next, begin, end) || this->InRange(c->Previous, begin, end) || cb == cc ||
+        this->TriangleAreas[c->Triangle] <= 0.0)
       {
         continue;
       }
       const Vec3 normal =
         (this->ClusterPositions[cb] - x).cross(this->ClusterPositions[cc] - x);
-      if (normal.dot(this->TrianglePlanes[*t].Normal) <= 0.0)
+      if (normal.dot(this->TrianglePlanes[c->Triangle].Normal) <= 0.0)
       {
         return true;
       }
@@ -614,13 +594,12 @@ double Clusterer::VanishingError(std::int32_t node) const
     const std::int32_t v = this->Order[i];
     const std::int32_t c = this->VertexCluster[v];
     std::uint8_t& flag = survives[c - cell.FirstCluster];
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v) && !flag; ++t)
+    for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v) && !flag; ++corner)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      const std::int32_t c0 = this->VertexCluster[tri[0]], c1 = this->VertexCluster[tri[1]],
-                         c2 = this->VertexCluster[tri[2]];
-      flag = (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
-      for (const std::int32_t other : { c0, c1, c2 })
+      const std::int32_t c1 = this->VertexCluster[corner->Next],
+                         c2 = this->VertexCluster[corner->Previous];
+      flag = (c != c1 && c1 != c2 && c != c2) ? 1 : 0;
+      for (const std::int32_t other : { c1, c2 })
       {
         if (other != c)
         {
@@ -720,22 +699,16 @@ std::int64_t Clusterer::CountSurviving(std::int32_t begin, std::int32_t end) con
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+    const std::int32_t c0 = this->VertexCluster[v];
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-      int before = 0, inside = 0;
-      for (int k = 0; k < 3; ++k)
-      {
-        const bool in = tri[k] == v || this->InRange(tri[k], begin, end);
-        inside += in ? 1 : 0;
-        before += (in && tri[k] != v && k < (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)) ? 1 : 0;
-      }
-      if (before > 0 || inside < 2)
+      const std::int32_t next = this->Position[c->Next], previous = this->Position[c->Previous];
+      const bool nextIn = next >= begin && next < end, previousIn = previous >= begin && previous < end;
+      if ((!nextIn && !previousIn) || (nextIn && next < i) || (previousIn && previous < i))
       {
         continue;
       }
-      const std::int32_t c0 = this->VertexCluster[tri[0]], c1 = this->VertexCluster[tri[1]],
-                         c2 = this->VertexCluster[tri[2]];
+      const std::int32_t c1 = this->VertexCluster[c->Next], c2 = this->VertexCluster[c->Previous];
       surviving += (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
     }
   }
@@ -955,30 +928,27 @@ bool Clusterer::Refine(std::int64_t target, double bound)
 std::vector<std::int32_t> Clusterer::SurvivingTriangles() const
 {
   // Triangles with three distinct clusters, minus duplicates (the same three clusters in either
-  // orientation): the lowest input triangle of each set survives.
+  // orientation): the lowest input triangle of each set survives. In input triangle order.
   struct Key
   {
     std::array<std::int32_t, 3> Clusters;
-    std::int32_t Triangle;
+    std::int32_t InputTriangle, Triangle;
     bool operator<(const Key& o) const
     {
-      return this->Clusters != o.Clusters ? this->Clusters < o.Clusters : this->Triangle < o.Triangle;
+      return this->Clusters != o.Clusters ? this->Clusters < o.Clusters
+                                          : this->InputTriangle < o.InputTriangle;
     }
   };
   std::vector<Key> keys;
   for (std::int64_t t = 0; t < this->Mesh.NumberOfTriangles; ++t)
   {
-    if (!this->Usable[t])
-    {
-      continue;
-    }
     const std::int32_t* tri = this->Mesh.Triangles + 3 * t;
     std::array<std::int32_t, 3> c = { this->VertexCluster[tri[0]], this->VertexCluster[tri[1]],
       this->VertexCluster[tri[2]] };
     if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
     {
       std::sort(c.begin(), c.end());
-      keys.push_back({ c, static_cast<std::int32_t>(t) });
+      keys.push_back({ c, this->Local.InputTriangle[t], static_cast<std::int32_t>(t) });
     }
   }
   std::sort(keys.begin(), keys.end());
@@ -990,7 +960,9 @@ std::vector<std::int32_t> Clusterer::SurvivingTriangles() const
       survivors.push_back(keys[i].Triangle);
     }
   }
-  std::sort(survivors.begin(), survivors.end());
+  std::sort(survivors.begin(), survivors.end(), [this](std::int32_t a, std::int32_t b) {
+    return this->Local.InputTriangle[a] < this->Local.InputTriangle[b];
+  });
   return survivors;
 }
 
@@ -1008,11 +980,11 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
   }
   std::vector<std::int32_t> pointOfCluster(this->ClusterPositions.size(), -1);
   std::vector<std::int32_t> clusterOfPoint;
-  result.VertexToPoint.assign(n, -1);
+  std::vector<std::int32_t> pointOf(n, -1); // vertex → output point
   for (std::int64_t v = 0; v < n; ++v)
   {
     const std::int32_t c = this->VertexCluster[v];
-    if (c < 0 || !referenced[c])
+    if (!referenced[c])
     {
       continue;
     }
@@ -1021,29 +993,29 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
       pointOfCluster[c] = static_cast<std::int32_t>(clusterOfPoint.size());
       clusterOfPoint.push_back(c);
     }
-    result.VertexToPoint[v] = pointOfCluster[c];
+    pointOf[v] = pointOfCluster[c];
   }
   const std::int64_t numberOfPoints = static_cast<std::int64_t>(clusterOfPoint.size());
   result.ClusterOffsets.assign(numberOfPoints + 1, 0);
   for (std::int64_t v = 0; v < n; ++v)
   {
-    if (result.VertexToPoint[v] >= 0)
+    if (pointOf[v] >= 0)
     {
-      ++result.ClusterOffsets[result.VertexToPoint[v] + 1];
+      ++result.ClusterOffsets[pointOf[v] + 1];
     }
   }
   std::partial_sum(
     result.ClusterOffsets.begin(), result.ClusterOffsets.end(), result.ClusterOffsets.begin());
-  result.ClusterVertices.resize(result.ClusterOffsets.back());
+  std::vector<std::int32_t> clusterVertices(result.ClusterOffsets.back());
   std::vector<std::int32_t> fill(result.ClusterOffsets.begin(), result.ClusterOffsets.end() - 1);
   for (std::int64_t v = 0; v < n; ++v)
   {
-    if (result.VertexToPoint[v] >= 0)
+    if (pointOf[v] >= 0)
     {
-      result.ClusterVertices[fill[result.VertexToPoint[v]]++] = static_cast<std::int32_t>(v);
+      clusterVertices[fill[pointOf[v]]++] = static_cast<std::int32_t>(v);
     }
   }
-  auto members = [&](std::int64_t p) { return result.ClusterVertices.data() + result.ClusterOffsets[p]; };
+  auto members = [&](std::int64_t p) { return clusterVertices.data() + result.ClusterOffsets[p]; };
   auto size = [&](std::int64_t p) { return result.ClusterOffsets[p + 1] - result.ClusterOffsets[p]; };
 
   // Protruding clusters take their tip again (the clusters around them may have changed
@@ -1065,7 +1037,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
         folded[p] = 1;
       }
     }
-  }, static_cast<std::int64_t>(result.ClusterVertices.size()));
+  }, static_cast<std::int64_t>(clusterVertices.size()));
 
   // e2 by the paper's iteration (eq. 8–11): with the representatives of the previous iterate,
   // the squared distance of a cluster vertex a to a new triangle (v0, b', c') is the squared
@@ -1083,13 +1055,13 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
       for (int k = 0; k < 3; ++k)
       {
         const std::int32_t a = tri[k];
-        const std::int32_t pa = result.VertexToPoint[a];
+        const std::int32_t pa = pointOf[a];
         if (size(pa) == 1)
         {
           continue; // a lone vertex is its own representative
         }
-        const Vec3& xb = position[result.VertexToPoint[tri[(k + 1) % 3]]];
-        const Vec3& xc = position[result.VertexToPoint[tri[(k + 2) % 3]]];
+        const Vec3& xb = position[pointOf[tri[(k + 1) % 3]]];
+        const Vec3& xc = position[pointOf[tri[(k + 2) % 3]]];
         const Vec3 through = (xb - this->P[a]).cross(xc - this->P[a]);
         const double areaThrough = through.norm();
         const double areaNew = (xb - position[pa]).cross(xc - position[pa]).norm();
@@ -1118,13 +1090,13 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
           next[p] = x;
         }
       }
-    }, static_cast<std::int64_t>(result.ClusterVertices.size()));
+    }, static_cast<std::int64_t>(clusterVertices.size()));
     position.swap(next);
   }
 
   result.Points.resize(3 * numberOfPoints);
   result.ClusterErrors.resize(numberOfPoints);
-  result.ClusterWeights.resize(result.ClusterVertices.size());
+  result.ClusterWeights.resize(clusterVertices.size());
   this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t p = b; p < e; ++p)
     {
@@ -1148,19 +1120,31 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
           total > 0.0 ? this->VertexWeights[members(p)[i]] / total : 1.0 / size(p);
       }
     }
-  }, static_cast<std::int64_t>(result.ClusterVertices.size()));
+  }, static_cast<std::int64_t>(clusterVertices.size()));
   result.MaximumClusterError =
     result.ClusterErrors.empty() ? 0.0 : *std::max_element(result.ClusterErrors.begin(), result.ClusterErrors.end());
 
   result.Triangles.resize(3 * survivors.size());
-  result.SourceTriangles = survivors;
+  result.SourceTriangles.resize(survivors.size());
   for (std::size_t i = 0; i < survivors.size(); ++i)
   {
+    result.SourceTriangles[i] = this->Local.InputTriangle[survivors[i]];
     for (int k = 0; k < 3; ++k)
     {
       result.Triangles[3 * i + k] =
-        result.VertexToPoint[this->Mesh.Triangles[3 * static_cast<std::int64_t>(survivors[i]) + k]];
+        pointOf[this->Mesh.Triangles[3 * static_cast<std::int64_t>(survivors[i]) + k]];
     }
+  }
+  // Back to input ids.
+  result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    result.VertexToPoint[this->Local.InputVertex[v]] = pointOf[v];
+  }
+  result.ClusterVertices.resize(clusterVertices.size());
+  for (std::size_t i = 0; i < clusterVertices.size(); ++i)
+  {
+    result.ClusterVertices[i] = this->Local.InputVertex[clusterVertices[i]];
   }
 }
 
@@ -1178,21 +1162,19 @@ bool Clusterer::Run(OctreeClusteringResult& result)
     return false;
   }
 
+  // Every vertex of the compact mesh is used; its order is already spatial.
   const std::int64_t n = this->Mesh.NumberOfPoints;
-  this->Position.assign(n, -1);
+  this->Order.resize(n);
+  std::iota(this->Order.begin(), this->Order.end(), 0);
+  this->Position = this->Order;
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = -lo;
   for (std::int64_t v = 0; v < n; ++v)
   {
-    if (this->Adjacency.Offsets[v + 1] > this->Adjacency.Offsets[v])
-    {
-      this->Position[v] = static_cast<std::int32_t>(this->Order.size());
-      this->Order.push_back(static_cast<std::int32_t>(v));
-      lo = lo.cwiseMin(this->P[v]);
-      hi = hi.cwiseMax(this->P[v]);
-    }
+    lo = lo.cwiseMin(this->P[v]);
+    hi = hi.cwiseMax(this->P[v]);
   }
-  result.UsableInputTriangles = std::count(this->Usable.begin(), this->Usable.end(), 1);
+  result.UsableInputTriangles = this->Mesh.NumberOfTriangles;
   if (this->Order.empty())
   {
     return true;
@@ -1284,19 +1266,18 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       for (std::int64_t i = first; i < last; ++i)
       {
         const std::int32_t v = this->Order[i];
-        for (const std::int32_t* t = this->Adjacency.Begin(v); t != this->Adjacency.End(v); ++t)
+        const std::int32_t c0 = this->VertexCluster[v];
+        for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
         {
-          const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(*t);
-          if (std::min({ this->Position[tri[0]], this->Position[tri[1]], this->Position[tri[2]] }) == i)
+          if (this->Position[c->Next] > i && this->Position[c->Previous] > i)
           {
-            const std::int32_t c0 = this->VertexCluster[tri[0]], c1 = this->VertexCluster[tri[1]],
-                               c2 = this->VertexCluster[tri[2]];
+            const std::int32_t c1 = this->VertexCluster[c->Next], c2 = this->VertexCluster[c->Previous];
             chunkCounts[chunk] += (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
           }
         }
       }
     }
-  }, static_cast<std::int64_t>(this->Adjacency.Triangles.size()));
+  }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
   this->SurvivingCount = std::accumulate(chunkCounts.begin(), chunkCounts.end(), std::int64_t(0));
 
   // A count target is approached on the estimate (triangles with three distinct clusters).

@@ -3,96 +3,198 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 
 namespace meshsimp
 {
 
-bool IsUsableTriangle(const TriangleMeshView& mesh, std::int64_t t)
+CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context)
 {
-  const std::int32_t* tri = mesh.Triangles + 3 * t;
-  for (int k = 0; k < 3; ++k)
-  {
-    if (tri[k] < 0 || tri[k] >= mesh.NumberOfPoints)
+  const std::int64_t n = input.NumberOfPoints;
+  const std::int64_t m = input.NumberOfTriangles;
+  std::vector<std::uint8_t> finite(n);
+  context.For(n, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t v = begin; v < end; ++v)
     {
-      return false;
+      const double* p = input.Points + 3 * v;
+      finite[v] = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? 1 : 0;
     }
-    const double* p = mesh.Points + 3 * static_cast<std::int64_t>(tri[k]);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+  });
+  std::vector<std::uint8_t> usable(m);
+  context.For(m, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t t = begin; t < end; ++t)
     {
-      return false;
+      const std::int32_t* tri = input.Triangles + 3 * t;
+      bool ok = tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2];
+      for (int k = 0; k < 3 && ok; ++k)
+      {
+        ok = tri[k] >= 0 && tri[k] < n && finite[tri[k]];
+      }
+      usable[t] = ok ? 1 : 0;
     }
-  }
-  return tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2];
-}
+  });
 
-void VertexTriangleAdjacency::Build(
-  const TriangleMeshView& mesh, const std::vector<std::uint8_t>& usable)
-{
-  this->Offsets.assign(mesh.NumberOfPoints + 1, 0);
-  for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
+  // Used vertices (marked 0 in vertexOf) and their bounding cube.
+  std::vector<std::int32_t> vertexOf(n, -1);
+  for (std::int64_t t = 0; t < m; ++t)
   {
     if (usable[t])
     {
       for (int k = 0; k < 3; ++k)
       {
-        ++this->Offsets[mesh.Triangles[3 * t + k] + 1];
+        vertexOf[input.Triangles[3 * t + k]] = 0;
       }
     }
   }
-  for (std::int64_t v = 0; v < mesh.NumberOfPoints; ++v)
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector3d hi = -lo;
+  std::int64_t used = 0;
+  for (std::int64_t v = 0; v < n; ++v)
   {
-    this->Offsets[v + 1] += this->Offsets[v];
+    if (vertexOf[v] == 0)
+    {
+      lo = lo.cwiseMin(input.Point(v));
+      hi = hi.cwiseMax(input.Point(v));
+      ++used;
+    }
   }
-  this->Triangles.resize(this->Offsets.back());
+
+  // Morton code of each used vertex's cell in a grid of about one cell per vertex, then a
+  // counting sort by code that keeps input order inside a cell.
+  int bits = 1;
+  while (bits < 7 && (std::int64_t(1) << (3 * (bits + 1))) <= used)
+  {
+    ++bits;
+  }
+  const std::int32_t side = 1 << bits;
+  const double extent = used > 0 ? (hi - lo).maxCoeff() : 0.0;
+  const double toCell = extent > 0.0 ? side / extent : 0.0;
+  const Eigen::Vector3d corner = 0.5 * (lo + hi) - Eigen::Vector3d::Constant(0.5 * extent);
+  std::vector<std::int32_t> code(n, -1);
+  context.For(n, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t v = begin; v < end; ++v)
+    {
+      if (vertexOf[v] < 0)
+      {
+        continue;
+      }
+      const Eigen::Vector3d cell = (input.Point(v) - corner) * toCell;
+      std::int32_t morton = 0;
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const std::int32_t i = std::min(std::max(static_cast<std::int32_t>(cell[axis]), 0), side - 1);
+        for (int b = 0; b < bits; ++b)
+        {
+          morton |= ((i >> b) & 1) << (3 * b + axis);
+        }
+      }
+      code[v] = morton;
+    }
+  });
+  std::vector<std::int32_t> start((std::size_t(1) << (3 * bits)) + 1, 0);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (code[v] >= 0)
+    {
+      ++start[code[v] + 1];
+    }
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  CompactMesh mesh;
+  mesh.InputVertex.resize(used);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (code[v] >= 0)
+    {
+      vertexOf[v] = start[code[v]]++;
+      mesh.InputVertex[vertexOf[v]] = static_cast<std::int32_t>(v);
+    }
+  }
+  mesh.Points.resize(3 * used);
+  context.For(used, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t v = begin; v < end; ++v)
+    {
+      std::copy_n(input.Points + 3 * static_cast<std::int64_t>(mesh.InputVertex[v]), 3,
+        mesh.Points.data() + 3 * v);
+    }
+  });
+
+  // Triangles by their lowest vertex (counting sort, input order among equals), corners kept.
+  std::vector<std::int32_t> first(used + 1, 0);
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    if (usable[t])
+    {
+      const std::int32_t* tri = input.Triangles + 3 * t;
+      ++first[std::min({ vertexOf[tri[0]], vertexOf[tri[1]], vertexOf[tri[2]] }) + 1];
+    }
+  }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  mesh.InputTriangle.resize(first.back());
+  mesh.Triangles.resize(3 * static_cast<std::size_t>(first.back()));
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    if (usable[t])
+    {
+      const std::int32_t* tri = input.Triangles + 3 * t;
+      const std::int32_t a = vertexOf[tri[0]], b = vertexOf[tri[1]], c = vertexOf[tri[2]];
+      const std::int32_t slot = first[std::min({ a, b, c })]++;
+      mesh.InputTriangle[slot] = static_cast<std::int32_t>(t);
+      mesh.Triangles[3 * static_cast<std::size_t>(slot)] = a;
+      mesh.Triangles[3 * static_cast<std::size_t>(slot) + 1] = b;
+      mesh.Triangles[3 * static_cast<std::size_t>(slot) + 2] = c;
+    }
+  }
+  return mesh;
+}
+
+void VertexTriangleAdjacency::Build(const TriangleMeshView& mesh)
+{
+  this->Offsets.assign(mesh.NumberOfPoints + 1, 0);
+  for (std::int64_t i = 0; i < 3 * mesh.NumberOfTriangles; ++i)
+  {
+    ++this->Offsets[mesh.Triangles[i] + 1];
+  }
+  std::partial_sum(this->Offsets.begin(), this->Offsets.end(), this->Offsets.begin());
+  this->Corners.resize(this->Offsets.back());
   std::vector<std::int32_t> fill(this->Offsets.begin(), this->Offsets.end() - 1);
   for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
   {
-    if (usable[t])
+    const std::int32_t* tri = mesh.Triangles + 3 * t;
+    for (int k = 0; k < 3; ++k)
     {
-      for (int k = 0; k < 3; ++k)
-      {
-        this->Triangles[fill[mesh.Triangles[3 * t + k]]++] = static_cast<std::int32_t>(t);
-      }
+      this->Corners[fill[tri[k]]++] = { static_cast<std::int32_t>(t), tri[(k + 1) % 3], tri[(k + 2) % 3] };
     }
   }
 }
 
 std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
-  const std::vector<std::uint8_t>& usable, const VertexTriangleAdjacency& adjacency,
-  const ExecutionContext& context)
+  const VertexTriangleAdjacency& adjacency, const ExecutionContext& context)
 {
-  // Edge (a, b) of triangle t, with a = t[k] and b = t[k + 1], is a boundary edge when no other
-  // triangle around a contains b. Vertex a decides for the edges that start at it, so each
-  // flag has one writer and vertices can be processed concurrently.
+  // Edge (a, b) of a triangle around a, b its Next corner, is a boundary edge when no other
+  // triangle around a has b as a corner. Vertex a decides for the edges that start at it, so
+  // each flag has one writer and vertices can be processed concurrently.
   std::vector<std::uint8_t> isBoundary(3 * mesh.NumberOfTriangles, 0);
   context.For(mesh.NumberOfPoints, [&](std::int64_t begin, std::int64_t end) {
-    std::vector<std::int32_t> next, previous; // the other corners of each triangle around a
     for (std::int64_t a = begin; a < end; ++a)
     {
-      const std::int32_t* first = adjacency.Begin(a);
-      const std::size_t degree = static_cast<std::size_t>(adjacency.End(a) - first);
-      next.resize(degree);
-      previous.resize(degree);
-      for (std::size_t i = 0; i < degree; ++i)
-      {
-        const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(first[i]);
-        const int k = tri[0] == a ? 0 : tri[1] == a ? 1 : 2;
-        next[i] = tri[(k + 1) % 3];
-        previous[i] = tri[(k + 2) % 3];
-      }
-      for (std::size_t i = 0; i < degree; ++i)
+      const Corner* first = adjacency.Begin(a);
+      const Corner* last = adjacency.End(a);
+      for (const Corner* c = first; c != last; ++c)
       {
         // Common case first: a consistently oriented neighbour triangle has b as its previous
-        // corner, so the edge is shared. Otherwise count every triangle around a with b.
-        const std::int32_t b = next[i];
-        if (std::find(previous.begin(), previous.end(), b) != previous.end())
+        // corner, so the edge is shared. Otherwise look for b as any other triangle's corner.
+        const std::int32_t b = c->Next;
+        bool shared = std::any_of(first, last, [b](const Corner& o) { return o.Previous == b; });
+        for (const Corner* o = first; o != last && !shared; ++o)
         {
-          continue;
+          shared = o != c && o->Next == b;
         }
-        if (std::count(next.begin(), next.end(), b) == 1)
+        if (!shared)
         {
-          const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(first[i]);
-          isBoundary[3 * static_cast<std::int64_t>(first[i]) + (tri[0] == a ? 0 : tri[1] == a ? 1 : 2)] = 1;
+          const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(c->Triangle);
+          isBoundary[3 * static_cast<std::int64_t>(c->Triangle) + (tri[0] == a ? 0 : tri[1] == a ? 1 : 2)] = 1;
         }
       }
     }
@@ -102,7 +204,7 @@ std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
   {
     for (int k = 0; k < 3; ++k)
     {
-      if (usable[t] && isBoundary[3 * t + k])
+      if (isBoundary[3 * t + k])
       {
         edges.push_back({ mesh.Triangles[3 * t + k], mesh.Triangles[3 * t + (k + 1) % 3],
           static_cast<std::int32_t>(t) });

@@ -36,22 +36,45 @@ struct TriangleMeshView
 };
 
 /**
- * True when triangle t has three distinct in-range indices and finite corner coordinates.
- * Invalid triangles are skipped by every algorithm (they count as dropped input).
+ * The usable part of an input mesh, renumbered for memory locality. A triangle is usable when
+ * its three indices are distinct and in range and its corners are finite; every algorithm skips
+ * the others (they count as dropped input). Vertices used by a usable triangle are ordered by
+ * the Morton code of a coarse grid over their bounding cube (input order within a grid cell), and
+ * triangles by their lowest vertex, so walks over the adjacency of one region of space touch
+ * nearby memory: on a badly ordered scan this halves the run time of the octree clustering.
+ * Each octree cell of the grid's depth or less holds a contiguous range of vertices.
  */
-bool IsUsableTriangle(const TriangleMeshView& mesh, std::int64_t t);
+struct CompactMesh
+{
+  std::vector<double> Points;              // 3 per vertex, input coordinates
+  std::vector<std::int32_t> Triangles;     // 3 per triangle
+  std::vector<std::int32_t> InputVertex;   // vertex → input point
+  std::vector<std::int32_t> InputTriangle; // triangle → input triangle
+  TriangleMeshView View() const
+  {
+    return { this->Points.data(), static_cast<std::int64_t>(this->InputVertex.size()),
+      this->Triangles.data(), static_cast<std::int64_t>(this->InputTriangle.size()) };
+  }
+};
 
-/// Vertex → incident triangles, as CSR arrays.
+CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});
+
+/// One triangle around a vertex v: its id and its other corners, so that the triangle reads
+/// (v, Next, Previous) in its own orientation.
+struct Corner
+{
+  std::int32_t Triangle, Next, Previous;
+};
+
+/// Vertex → incident triangles with their other corners, as CSR arrays, so that walks around a
+/// vertex never go back to the triangle list.
 struct VertexTriangleAdjacency
 {
-  std::vector<std::int32_t> Offsets;   // NumberOfPoints + 1
-  std::vector<std::int32_t> Triangles; // incident triangle ids, ascending per vertex
-
-  /// Only triangles with usable[t] != 0 are linked.
-  void Build(const TriangleMeshView& mesh, const std::vector<std::uint8_t>& usable);
-
-  const std::int32_t* Begin(std::int64_t v) const { return this->Triangles.data() + this->Offsets[v]; }
-  const std::int32_t* End(std::int64_t v) const { return this->Triangles.data() + this->Offsets[v + 1]; }
+  std::vector<std::int32_t> Offsets; // NumberOfPoints + 1
+  std::vector<Corner> Corners;       // ascending triangle id per vertex
+  void Build(const TriangleMeshView& mesh);
+  const Corner* Begin(std::int64_t v) const { return this->Corners.data() + this->Offsets[v]; }
+  const Corner* End(std::int64_t v) const { return this->Corners.data() + this->Offsets[v + 1]; }
 };
 
 /// An edge used by exactly one triangle, oriented as in that triangle.
@@ -62,8 +85,7 @@ struct BoundaryEdge
 
 /// Boundary edges in triangle order (an edge shared by three or more triangles is not one).
 std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
-  const std::vector<std::uint8_t>& usable, const VertexTriangleAdjacency& adjacency,
-  const ExecutionContext& context = {});
+  const VertexTriangleAdjacency& adjacency, const ExecutionContext& context = {});
 
 } // namespace meshsimp
 
