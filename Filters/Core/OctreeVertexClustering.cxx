@@ -48,7 +48,7 @@ struct HeapEntry
   std::int32_t Node;
   std::int32_t Serial;
   double Error;       // the leaf's cluster error
-  double Vanishing;   // error of its clusters that lose every triangle (see VanishingError)
+  double Vanishing;   // error of its clusters that lose every triangle (see ScanLeaf)
   bool Flipped;       // clustering the leaf turns a neighbouring triangle over (§2.4)
   bool operator<(const HeapEntry& o) const
   {
@@ -62,6 +62,14 @@ struct HeapEntry
     }
     return this->Node > o.Node; // older nodes first: the order never depends on threads
   }
+};
+
+/// What one pass over the corners of a leaf's vertices finds (see Clusterer::ScanLeaf).
+struct LeafScan
+{
+  double Vanishing = 0.0;       // error of its clusters that lose every triangle
+  bool Flipped = false;         // clustering it turns a neighbouring triangle over (§2.4)
+  std::int64_t Surviving = 0;   // triangles with three distinct clusters in the count range
 };
 
 class Clusterer
@@ -92,6 +100,7 @@ private:
   }
   void PrepareGeometry();
   void PrepareQuadrics();
+  Plane BoundaryPlane(std::int32_t a, std::int32_t b, std::int32_t triangle, double& weight) const;
   bool InRange(std::int32_t v, std::int32_t begin, std::int32_t end) const
   {
     const std::int32_t p = this->Position[v];
@@ -107,9 +116,12 @@ private:
   }
   std::int32_t EvaluateLeaf(std::int32_t node, std::int32_t firstCluster, Scratch& scratch,
     double& key, bool& canSplit);
-  bool LeafFlips(std::int32_t node) const;
-  double VanishingError(std::int32_t node) const;
-  HeapEntry MakeEntry(std::int32_t node, double error, bool counting) const;
+  /// One pass over the corners of a leaf's vertices. With forEntry, the vanishing error and the
+  /// flip test of its heap entry; always, the triangles with three distinct clusters that have
+  /// another corner in [countBegin, countEnd), each counted from its first corner there.
+  LeafScan ScanLeaf(std::int32_t node, bool forEntry, std::int32_t countBegin,
+    std::int32_t countEnd) const;
+  HeapEntry MakeEntry(std::int32_t node, double error, const LeafScan& scan, bool counting) const;
   void SetKey(HeapEntry& entry, bool counting) const;
   Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
@@ -124,7 +136,6 @@ private:
     std::int32_t& tip, Vec3& ring) const;
   double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
     const std::int32_t* members, std::int32_t count, bool placeByQuadric, Vec3& x) const;
-  std::int64_t CountSurviving(std::int32_t begin, std::int32_t end) const;
   std::int32_t PartitionNode(std::int32_t node);
   void SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& children);
   void UndoLastSplit();
@@ -159,9 +170,7 @@ private:
   std::vector<Quadric> VertexQuadrics;
   std::vector<double> VertexWeights; // a third of the incident area
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
-  std::vector<Plane> BoundaryPlanes;
-  std::vector<double> BoundaryWeights;
-  std::vector<std::int32_t> BoundaryOffsets, BoundaryOfVertex; // vertex → boundary planes
+  std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot, empty without boundary planes
 
   // Octree: every node owns a contiguous range of Order (used vertices, input order within a
   // leaf); Position is the inverse permutation.
@@ -237,48 +246,37 @@ void Clusterer::PrepareGeometry()
   });
 }
 
+Plane Clusterer::BoundaryPlane(
+  std::int32_t a, std::int32_t b, std::int32_t triangle, double& weight) const
+{
+  // Perpendicular to triangle through its boundary edge (a, b) (paper 000 §3), weighted by the
+  // squared edge length so that it scales like the area-weighted face planes.
+  Plane plane;
+  weight = 0.0;
+  const Vec3 edge = this->P[b] - this->P[a];
+  const Vec3 normal = edge.cross(this->TrianglePlanes[triangle].Normal);
+  const double length = normal.norm();
+  if (length > 0.0)
+  {
+    plane.Normal = normal / length;
+    plane.Offset = -plane.Normal.dot(this->P[a]);
+    weight = this->Options.BoundaryWeight * edge.squaredNorm();
+  }
+  return plane;
+}
+
 void Clusterer::PrepareQuadrics()
 {
-  const std::int64_t n = this->Mesh.NumberOfPoints;
-  // Boundary planes: perpendicular to the triangle through each boundary edge (paper 000 §3),
-  // weighted by the squared edge length so they scale like the area-weighted face planes.
-  this->BoundaryOffsets.assign(n + 1, 0);
-  if (this->Options.BoundaryPlanes)
-  {
-    const std::vector<BoundaryEdge> edges =
-      FindBoundaryEdges(this->Mesh, this->Adjacency, this->Context);
-    this->BoundaryPlanes.resize(edges.size());
-    this->BoundaryWeights.assign(edges.size(), 0.0);
-    for (std::size_t i = 0; i < edges.size(); ++i)
-    {
-      const Vec3 edge = this->P[edges[i].V1] - this->P[edges[i].V0];
-      const Vec3 normal = edge.cross(this->TrianglePlanes[edges[i].Triangle].Normal);
-      const double length = normal.norm();
-      if (length > 0.0)
-      {
-        this->BoundaryPlanes[i].Normal = normal / length;
-        this->BoundaryPlanes[i].Offset = -this->BoundaryPlanes[i].Normal.dot(this->P[edges[i].V0]);
-        this->BoundaryWeights[i] = this->Options.BoundaryWeight * edge.squaredNorm();
-      }
-      ++this->BoundaryOffsets[edges[i].V0 + 1];
-      ++this->BoundaryOffsets[edges[i].V1 + 1];
-    }
-    std::partial_sum(
-      this->BoundaryOffsets.begin(), this->BoundaryOffsets.end(), this->BoundaryOffsets.begin());
-    this->BoundaryOfVertex.resize(this->BoundaryOffsets.back());
-    std::vector<std::int32_t> fill(this->BoundaryOffsets.begin(), this->BoundaryOffsets.end() - 1);
-    for (std::size_t i = 0; i < edges.size(); ++i)
-    {
-      this->BoundaryOfVertex[fill[edges[i].V0]++] = static_cast<std::int32_t>(i);
-      this->BoundaryOfVertex[fill[edges[i].V1]++] = static_cast<std::int32_t>(i);
-    }
-  }
-
   // Vertex quadrics, gathered per vertex (eq. 6): each triangle gives a third of its
   // area-weighted plane quadric to each corner, each boundary edge half its plane to each end.
-  this->VertexQuadrics.assign(n, Quadric());
-  this->VertexWeights.assign(n, 0.0);
-  this->VertexAreaNormals.assign(n, Vec3::Zero());
+  const std::int64_t n = this->Mesh.NumberOfPoints;
+  this->VertexQuadrics.resize(n);
+  this->VertexWeights.resize(n);
+  this->VertexAreaNormals.resize(n);
+  if (this->Options.BoundaryPlanes)
+  {
+    this->BoundaryCorners.resize(this->Adjacency.Corners.size());
+  }
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
@@ -293,17 +291,30 @@ void Clusterer::PrepareQuadrics()
         weight += third;
         areaNormal += third * plane.Normal;
       }
-      for (std::int32_t k = this->BoundaryOffsets[v]; k < this->BoundaryOffsets[v + 1]; ++k)
+      if (this->Options.BoundaryPlanes)
       {
-        const std::int32_t i = this->BoundaryOfVertex[k];
-        q += Quadric::FromPlane(this->BoundaryPlanes[i].Normal, this->BoundaryPlanes[i].Offset,
-          0.5 * this->BoundaryWeights[i]);
+        std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
+        MarkBoundaryCorners(this->Adjacency, v, flags);
+        for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c, ++flags)
+        {
+          double edgeWeight;
+          if (*flags & OutgoingBoundaryEdge)
+          {
+            const Plane plane = this->BoundaryPlane(static_cast<std::int32_t>(v), c->Next, c->Triangle, edgeWeight);
+            q += Quadric::FromPlane(plane.Normal, plane.Offset, 0.5 * edgeWeight);
+          }
+          if (*flags & IncomingBoundaryEdge)
+          {
+            const Plane plane = this->BoundaryPlane(c->Previous, static_cast<std::int32_t>(v), c->Triangle, edgeWeight);
+            q += Quadric::FromPlane(plane.Normal, plane.Offset, 0.5 * edgeWeight);
+          }
+        }
       }
       this->VertexQuadrics[v] = q;
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
     }
-  });
+  }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
 }
 
 Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
@@ -443,9 +454,22 @@ double Clusterer::ClusterError(
     {
       error = std::max(error, this->TrianglePlanes[c->Triangle].Distance(x));
     }
-    for (std::int32_t k = this->BoundaryOffsets[v]; k < this->BoundaryOffsets[v + 1]; ++k)
+    if (this->BoundaryCorners.empty())
     {
-      error = std::max(error, this->BoundaryPlanes[this->BoundaryOfVertex[k]].Distance(x));
+      continue;
+    }
+    const std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
+    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c, ++flags)
+    {
+      double weight;
+      if (*flags & OutgoingBoundaryEdge)
+      {
+        error = std::max(error, this->BoundaryPlane(v, c->Next, c->Triangle, weight).Distance(x));
+      }
+      if (*flags & IncomingBoundaryEdge)
+      {
+        error = std::max(error, this->BoundaryPlane(c->Previous, v, c->Triangle, weight).Distance(x));
+      }
     }
   }
   // Planes cannot see a cluster that folds a tip or a thin part onto one point (a finger
@@ -550,71 +574,77 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   return count;
 }
 
-bool Clusterer::LeafFlips(std::int32_t node) const
+LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t countBegin,
+  std::int32_t countEnd) const
 {
-  // §2.4: clustering must not turn a related triangle against its original normal. The test
-  // runs when the leaf is made, on the triangles that survive with one corner in the leaf, with
-  // the corners outside at their own clusters' current points.
-  const std::int32_t begin = this->Nodes[node].Begin, end = this->Nodes[node].End;
+  const OctreeNode& cell = this->Nodes[node];
+  const std::int32_t begin = cell.Begin, end = cell.End;
+  const bool flips = forEntry && this->Options.PreventFlips;
+  LeafScan scan;
+  std::vector<std::uint8_t> survives(forEntry ? cell.ClusterCount : 0, 0);
+  std::vector<std::int32_t> neighbours; // (cluster, neighbouring cluster) pairs
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    const std::int32_t cluster = this->VertexCluster[v];
-    const Vec3& x = this->ClusterPositions[cluster];
-    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
+    const std::int32_t c0 = this->VertexCluster[v];
+    for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
     {
-      const std::int32_t cb = this->VertexCluster[c->Next], cc = this->VertexCluster[c->Previous];
-      if (this->InRange(c->Next, begin, end) || this->InRange(c->Previous, begin, end) || cb == cc ||
-        this->TriangleAreas[c->Triangle] <= 0.0)
+      const std::int32_t next = this->Position[corner->Next];
+      const std::int32_t previous = this->Position[corner->Previous];
+      const std::int32_t c1 = this->VertexCluster[corner->Next];
+      const std::int32_t c2 = this->VertexCluster[corner->Previous];
+      const bool distinct = c0 != c1 && c1 != c2 && c0 != c2;
+
+      // The count: each triangle once, from its first corner in the count range.
+      const bool nextCounted = next >= countBegin && next < countEnd;
+      const bool previousCounted = previous >= countBegin && previous < countEnd;
+      if ((nextCounted || previousCounted) && !(nextCounted && next < i) &&
+        !(previousCounted && previous < i))
+      {
+        scan.Surviving += distinct ? 1 : 0;
+      }
+      if (!forEntry)
       {
         continue;
       }
-      const Vec3 normal =
-        (this->ClusterPositions[cb] - x).cross(this->ClusterPositions[cc] - x);
-      if (normal.dot(this->TrianglePlanes[c->Triangle].Normal) <= 0.0)
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
 
-double Clusterer::VanishingError(std::int32_t node) const
-{
-  // A cluster none of whose triangles keeps three distinct clusters disappears from the output
-  // (a leg or a corner folded onto its neighbours): its vertices end up about as far from the
-  // surface as from the nearest neighbouring cluster's point. Refining elsewhere can only
-  // bring it back, so this value never grows while the leaf waits in the heap.
-  const OctreeNode& cell = this->Nodes[node];
-  std::vector<std::uint8_t> survives(cell.ClusterCount, 0);
-  std::vector<std::int32_t> neighbours; // (cluster, neighbouring cluster) pairs
-  for (std::int32_t i = cell.Begin; i < cell.End; ++i)
-  {
-    const std::int32_t v = this->Order[i];
-    const std::int32_t c = this->VertexCluster[v];
-    std::uint8_t& flag = survives[c - cell.FirstCluster];
-    for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v) && !flag; ++corner)
-    {
-      const std::int32_t c1 = this->VertexCluster[corner->Next],
-                         c2 = this->VertexCluster[corner->Previous];
-      flag = (c != c1 && c1 != c2 && c != c2) ? 1 : 0;
-      for (const std::int32_t other : { c1, c2 })
+      // Vanishing clusters: a cluster survives when one of its triangles has three clusters.
+      std::uint8_t& survivesFlag = survives[c0 - cell.FirstCluster];
+      if (!survivesFlag)
       {
-        if (other != c)
+        survivesFlag = distinct ? 1 : 0;
+        for (const std::int32_t other : { c1, c2 })
         {
-          neighbours.push_back(c);
-          neighbours.push_back(other);
+          if (other != c0)
+          {
+            neighbours.push_back(c0);
+            neighbours.push_back(other);
+          }
         }
+      }
+
+      // §2.4: clustering must not turn a related triangle against its original normal; tested
+      // on the triangles that survive with one corner in the leaf, with the corners outside at
+      // their own clusters' current points.
+      if (flips && !scan.Flipped && (next < begin || next >= end) &&
+        (previous < begin || previous >= end) && c1 != c2 &&
+        this->TriangleAreas[corner->Triangle] > 0.0)
+      {
+        const Vec3& x = this->ClusterPositions[c0];
+        const Vec3 normal = (this->ClusterPositions[c1] - x).cross(this->ClusterPositions[c2] - x);
+        scan.Flipped = normal.dot(this->TrianglePlanes[corner->Triangle].Normal) <= 0.0;
       }
     }
   }
   if (std::find(survives.begin(), survives.end(), 0) == survives.end())
   {
-    return 0.0;
+    return scan;
   }
-  double error = 0.0;
-  for (std::int32_t i = cell.Begin; i < cell.End; ++i)
+  // A cluster none of whose triangles keeps three distinct clusters disappears from the output
+  // (a leg or a corner folded onto its neighbours): its vertices end up about as far from the
+  // surface as from the nearest neighbouring cluster's point. Refining elsewhere can only
+  // bring it back, so this value never grows while the leaf waits in the heap.
+  for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
     const std::int32_t c = this->VertexCluster[v];
@@ -633,9 +663,9 @@ double Clusterer::VanishingError(std::int32_t node) const
         found = true;
       }
     }
-    error = std::max(error, nearest);
+    scan.Vanishing = std::max(scan.Vanishing, nearest);
   }
-  return error;
+  return scan;
 }
 
 void Clusterer::SetKey(HeapEntry& entry, bool counting) const
@@ -651,14 +681,15 @@ void Clusterer::SetKey(HeapEntry& entry, bool counting) const
   entry.Key = !entry.Flipped ? base : counting ? 1.1 * base + MinimumCellHalfSize : FlipSplitKey;
 }
 
-HeapEntry Clusterer::MakeEntry(std::int32_t node, double error, bool counting) const
+HeapEntry Clusterer::MakeEntry(
+  std::int32_t node, double error, const LeafScan& scan, bool counting) const
 {
   HeapEntry entry{ error, this->Nodes[node].Half, node, this->Nodes[node].Serial, error, 0.0,
     false };
   if (error != ForcedSplitKey)
   {
-    entry.Vanishing = this->VanishingError(node);
-    entry.Flipped = this->Options.PreventFlips && this->LeafFlips(node);
+    entry.Vanishing = scan.Vanishing;
+    entry.Flipped = scan.Flipped;
     this->SetKey(entry, counting);
   }
   return entry;
@@ -687,32 +718,6 @@ Vec3 Clusterer::ClusterCentre(const std::int32_t* members, std::int32_t count) c
     weight += w;
   }
   return weight > 0.0 ? Vec3(sum / weight) : Vec3(plain / count);
-}
-
-std::int64_t Clusterer::CountSurviving(std::int32_t begin, std::int32_t end) const
-{
-  // Triangles with two or more corners in the range, each counted once (from its first corner
-  // in the range), that have three distinct clusters. Before a split such triangles were
-  // degenerate (their corners were joined by an edge inside one leaf, hence one cluster), and
-  // triangles with one corner in the range keep their status, so this is the split's gain.
-  std::int64_t surviving = 0;
-  for (std::int32_t i = begin; i < end; ++i)
-  {
-    const std::int32_t v = this->Order[i];
-    const std::int32_t c0 = this->VertexCluster[v];
-    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
-    {
-      const std::int32_t next = this->Position[c->Next], previous = this->Position[c->Previous];
-      const bool nextIn = next >= begin && next < end, previousIn = previous >= begin && previous < end;
-      if ((!nextIn && !previousIn) || (nextIn && next < i) || (previousIn && previous < i))
-      {
-        continue;
-      }
-      const std::int32_t c1 = this->VertexCluster[c->Next], c2 = this->VertexCluster[c->Previous];
-      surviving += (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
-    }
-  }
-  return surviving;
 }
 
 std::int32_t Clusterer::PartitionNode(std::int32_t node)
@@ -782,23 +787,30 @@ void Clusterer::SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& childre
   std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
   this->ClusterPositions.resize(clusters + (cell.End - cell.Begin));
   this->ClusterNodes.resize(clusters + (cell.End - cell.Begin));
+  std::array<double, 8> keys;
+  std::array<bool, 8> splittable;
   for (std::int32_t child = first; child < last; ++child)
   {
-    double key = 0.0;
     bool canSplit = false;
-    clusters += this->EvaluateLeaf(child, clusters, this->SerialScratch, key, canSplit);
-    if (canSplit)
-    {
-      children.push_back({ key, 0.0, child, 0, key, 0.0, false });
-    }
+    clusters += this->EvaluateLeaf(child, clusters, this->SerialScratch, keys[child - first], canSplit);
+    splittable[child - first] = canSplit;
   }
   this->ClusterPositions.resize(clusters);
   this->ClusterNodes.resize(clusters);
-  for (HeapEntry& entry : children)
+  // Once every child has its clusters: their heap entries, and the split's gain in triangles
+  // (those with two or more corners in the leaf were degenerate before it, the others keep
+  // their status).
+  for (std::int32_t child = first; child < last; ++child)
   {
-    entry = this->MakeEntry(entry.Node, entry.Error, this->Options.TargetTriangles >= 0);
+    const double key = keys[child - first];
+    const bool forEntry = splittable[child - first] && key != ForcedSplitKey;
+    const LeafScan scan = this->ScanLeaf(child, forEntry, cell.Begin, cell.End);
+    this->SurvivingCount += scan.Surviving;
+    if (splittable[child - first])
+    {
+      children.push_back(this->MakeEntry(child, key, scan, this->Options.TargetTriangles >= 0));
+    }
   }
-  this->SurvivingCount += this->CountSurviving(cell.Begin, cell.End);
 }
 
 void Clusterer::UndoLastSplit()
@@ -848,7 +860,7 @@ bool Clusterer::Refine(std::int64_t target, double bound)
     {
       // Neighbours split since the leaf was queued may have brought its clusters back.
       HeapEntry entry = top;
-      entry.Vanishing = this->VanishingError(top.Node);
+      entry.Vanishing = this->ScanLeaf(top.Node, true, 0, 0).Vanishing;
       this->SetKey(entry, counting);
       if (entry.Key < top.Key)
       {
@@ -1239,13 +1251,19 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       splittable[i] = canSplit ? 1 : 0;
     }
   }, frontierWork);
+  // Their heap entries, and the triangle count: each triangle once, from its first corner.
   std::vector<HeapEntry> entries(frontier.size());
+  std::vector<std::int64_t> surviving(frontier.size());
+  const std::int32_t all = static_cast<std::int32_t>(this->Order.size());
   this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t i = b; i < e; ++i)
     {
+      const LeafScan scan =
+        this->ScanLeaf(frontier[i], splittable[i] && keys[i] != ForcedSplitKey, 0, all);
+      surviving[i] = scan.Surviving;
       if (splittable[i])
       {
-        entries[i] = this->MakeEntry(frontier[i], keys[i], target >= 0);
+        entries[i] = this->MakeEntry(frontier[i], keys[i], scan, target >= 0);
       }
     }
   }, frontierWork);
@@ -1256,29 +1274,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       this->Heap.push(entries[i]);
     }
   }
-  // Every triangle has all corners in the root's range: count them in parallel chunks.
-  std::vector<std::int64_t> chunkCounts(std::max<std::int64_t>(1, this->Order.size() / 4096 + 1), 0);
-  this->Context.For(static_cast<std::int64_t>(chunkCounts.size()), [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t chunk = b; chunk < e; ++chunk)
-    {
-      const std::int64_t first = chunk * 4096;
-      const std::int64_t last = std::min<std::int64_t>(first + 4096, this->Order.size());
-      for (std::int64_t i = first; i < last; ++i)
-      {
-        const std::int32_t v = this->Order[i];
-        const std::int32_t c0 = this->VertexCluster[v];
-        for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
-        {
-          if (this->Position[c->Next] > i && this->Position[c->Previous] > i)
-          {
-            const std::int32_t c1 = this->VertexCluster[c->Next], c2 = this->VertexCluster[c->Previous];
-            chunkCounts[chunk] += (c0 != c1 && c1 != c2 && c0 != c2) ? 1 : 0;
-          }
-        }
-      }
-    }
-  }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
-  this->SurvivingCount = std::accumulate(chunkCounts.begin(), chunkCounts.end(), std::int64_t(0));
+  this->SurvivingCount = std::accumulate(surviving.begin(), surviving.end(), std::int64_t(0));
 
   // A count target is approached on the estimate (triangles with three distinct clusters).
   // Duplicates removed at the end make the real count lower, so the estimate's target is

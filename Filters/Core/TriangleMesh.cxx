@@ -83,11 +83,13 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
       std::int32_t morton = 0;
       for (int axis = 0; axis < 3; ++axis)
       {
-        const std::int32_t i = std::min(std::max(static_cast<std::int32_t>(cell[axis]), 0), side - 1);
-        for (int b = 0; b < bits; ++b)
-        {
-          morton |= ((i >> b) & 1) << (3 * b + axis);
-        }
+        // Spread the (at most 7) bits of the cell index to every third bit.
+        std::uint32_t i = static_cast<std::uint32_t>(
+          std::min(std::max(static_cast<std::int32_t>(cell[axis]), 0), side - 1));
+        i = (i | (i << 8)) & 0x0300F00Fu;
+        i = (i | (i << 4)) & 0x030C30C3u;
+        i = (i | (i << 2)) & 0x09249249u;
+        morton |= static_cast<std::int32_t>(i << axis);
       }
       code[v] = morton;
     }
@@ -167,51 +169,6 @@ void VertexTriangleAdjacency::Build(const TriangleMeshView& mesh)
       this->Corners[fill[tri[k]]++] = { static_cast<std::int32_t>(t), tri[(k + 1) % 3], tri[(k + 2) % 3] };
     }
   }
-}
-
-std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
-  const VertexTriangleAdjacency& adjacency, const ExecutionContext& context)
-{
-  // Edge (a, b) of a triangle around a, b its Next corner, is a boundary edge when no other
-  // triangle around a has b as a corner. Vertex a decides for the edges that start at it, so
-  // each flag has one writer and vertices can be processed concurrently.
-  std::vector<std::uint8_t> isBoundary(3 * mesh.NumberOfTriangles, 0);
-  context.For(mesh.NumberOfPoints, [&](std::int64_t begin, std::int64_t end) {
-    for (std::int64_t a = begin; a < end; ++a)
-    {
-      const Corner* first = adjacency.Begin(a);
-      const Corner* last = adjacency.End(a);
-      for (const Corner* c = first; c != last; ++c)
-      {
-        // Common case first: a consistently oriented neighbour triangle has b as its previous
-        // corner, so the edge is shared. Otherwise look for b as any other triangle's corner.
-        const std::int32_t b = c->Next;
-        bool shared = std::any_of(first, last, [b](const Corner& o) { return o.Previous == b; });
-        for (const Corner* o = first; o != last && !shared; ++o)
-        {
-          shared = o != c && o->Next == b;
-        }
-        if (!shared)
-        {
-          const std::int32_t* tri = mesh.Triangles + 3 * static_cast<std::int64_t>(c->Triangle);
-          isBoundary[3 * static_cast<std::int64_t>(c->Triangle) + (tri[0] == a ? 0 : tri[1] == a ? 1 : 2)] = 1;
-        }
-      }
-    }
-  });
-  std::vector<BoundaryEdge> edges;
-  for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      if (isBoundary[3 * t + k])
-      {
-        edges.push_back({ mesh.Triangles[3 * t + k], mesh.Triangles[3 * t + (k + 1) % 3],
-          static_cast<std::int32_t>(t) });
-      }
-    }
-  }
-  return edges;
 }
 
 } // namespace meshsimp

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -77,15 +78,60 @@ struct VertexTriangleAdjacency
   const Corner* End(std::int64_t v) const { return this->Corners.data() + this->Offsets[v + 1]; }
 };
 
-/// An edge used by exactly one triangle, oriented as in that triangle.
-struct BoundaryEdge
+/// Boundary flags of a corner slot: the triangle's edge (v, Next), resp. (Previous, v), belongs
+/// to no other triangle.
+enum BoundaryCorner : std::uint8_t
 {
-  std::int32_t V0, V1, Triangle;
+  OutgoingBoundaryEdge = 1,
+  IncomingBoundaryEdge = 2
 };
 
-/// Boundary edges in triangle order (an edge shared by three or more triangles is not one).
-std::vector<BoundaryEdge> FindBoundaryEdges(const TriangleMeshView& mesh,
-  const VertexTriangleAdjacency& adjacency, const ExecutionContext& context = {});
+/**
+ * Writes the BoundaryCorner flags of every corner slot around v to flags[0 .. degree(v)). An
+ * edge shared by three or more triangles, or by two of opposite orientations, is not a
+ * boundary. Works one vertex at a time, so callers fuse it into their own vertex loops and
+ * vertices can be processed concurrently.
+ */
+inline void MarkBoundaryCorners(
+  const VertexTriangleAdjacency& adjacency, std::int64_t v, std::uint8_t* flags)
+{
+  const Corner* first = adjacency.Begin(v);
+  const Corner* last = adjacency.End(v);
+  const std::size_t degree = static_cast<std::size_t>(last - first);
+  std::fill(flags, flags + degree, static_cast<std::uint8_t>(OutgoingBoundaryEdge | IncomingBoundaryEdge));
+  // A consistently oriented neighbour o shares c's edge (v, Next) as its (Previous, v): both
+  // flags are cleared at once. What is left takes the general test: another triangle around v
+  // with the edge's far end as any corner.
+  for (std::size_t i = 0; i < degree; ++i)
+  {
+    for (std::size_t j = 0; j < degree; ++j)
+    {
+      if (first[j].Previous == first[i].Next)
+      {
+        flags[i] &= static_cast<std::uint8_t>(~OutgoingBoundaryEdge);
+        flags[j] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
+        break;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < degree; ++i)
+  {
+    for (std::size_t j = 0; j < degree && flags[i]; ++j)
+    {
+      const Corner& o = first[j];
+      if ((flags[i] & OutgoingBoundaryEdge) &&
+        (o.Previous == first[i].Next || (j != i && o.Next == first[i].Next)))
+      {
+        flags[i] &= static_cast<std::uint8_t>(~OutgoingBoundaryEdge);
+      }
+      if ((flags[i] & IncomingBoundaryEdge) &&
+        (o.Next == first[i].Previous || (j != i && o.Previous == first[i].Previous)))
+      {
+        flags[i] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
+      }
+    }
+  }
+}
 
 } // namespace meshsimp
 
