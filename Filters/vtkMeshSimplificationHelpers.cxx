@@ -6,6 +6,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -19,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <limits>
 #include <thread>
 
@@ -39,9 +39,14 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   {
     vtkDataArray* coordinates = input->GetPoints()->GetData();
     auto* doubles = vtkDoubleArray::SafeDownCast(coordinates);
+    auto* floats = vtkFloatArray::SafeDownCast(coordinates);
     if (doubles && doubles->GetNumberOfComponents() == 3)
     {
       out.View.Points = doubles->GetPointer(0);
+    }
+    else if (floats && floats->GetNumberOfComponents() == 3)
+    {
+      out.View.FloatPoints = floats->GetPointer(0);
     }
     else
     {
@@ -52,9 +57,9 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
       }
       out.View.Points = out.PointCopy.data();
     }
-    for (vtkIdType i = 0; i < 3 * numberOfPoints; ++i)
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
-      out.NumberOfNonFiniteCoordinates += std::isfinite(out.View.Points[i]) ? 0 : 1;
+      out.NumberOfNonFiniteCoordinates += out.View.Point(i).allFinite() ? 0 : 1;
     }
   }
   out.View.NumberOfPoints = numberOfPoints;
@@ -72,28 +77,22 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   vtkCellArray* polyCells = input->GetPolys();
   if (polyCells->IsHomogeneous() == 3 && input->GetNumberOfStrips() == 0)
   {
-    // Triangles only, the common case: copy the connectivity as it is.
+    // Triangles only, the common case: the connectivity is viewed in place.
     const vtkIdType count = polyCells->GetNumberOfCells();
     if (count >= std::numeric_limits<std::int32_t>::max())
     {
       error = "the input has more than 2^31 - 1 triangles";
       return false;
     }
-    out.Triangles.resize(3 * count);
-    out.SourceCells.resize(count);
     if (polyCells->IsStorage64Bit())
     {
-      const auto* ids = polyCells->GetConnectivityArray64()->GetPointer(0);
-      std::transform(ids, ids + 3 * count, out.Triangles.begin(),
-        [](vtkTypeInt64 id) { return static_cast<std::int32_t>(id); });
+      out.View.Triangles64 = polyCells->GetConnectivityArray64()->GetPointer(0);
     }
     else
     {
-      const auto* ids = polyCells->GetConnectivityArray32()->GetPointer(0);
-      std::copy(ids, ids + 3 * count, out.Triangles.begin());
+      out.View.Triangles = polyCells->GetConnectivityArray32()->GetPointer(0);
     }
-    std::iota(out.SourceCells.begin(), out.SourceCells.end(), cellId);
-    out.View.Triangles = out.Triangles.data();
+    out.FirstCell = cellId;
     out.View.NumberOfTriangles = count;
     return true;
   }

@@ -27,14 +27,20 @@ class vtkPolyData;
 namespace vtkMeshSimplificationHelpers
 {
 
-/// The triangles of a vtkPolyData: polygons are triangulated, strips decomposed.
+/// The triangles of a vtkPolyData: polygons are triangulated, strips decomposed. A triangle-only
+/// input with float or double points is viewed in place, without copies.
 struct TriangleInput
 {
-  std::vector<double> PointCopy; // filled only when the input points are not doubles
-  std::vector<std::int32_t> Triangles;
-  std::vector<vtkIdType> SourceCells; // input cell id of each triangle
+  std::vector<double> PointCopy; // filled only when the points are neither floats nor doubles
+  std::vector<std::int32_t> Triangles; // filled only when cells had to be triangulated
+  std::vector<vtkIdType> SourceCells;  // input cell of each triangle, with Triangles
+  vtkIdType FirstCell = 0;             // input cell of triangle 0 when viewed in place
   vtkIdType NumberOfVerts = 0, NumberOfLines = 0, NumberOfNonFiniteCoordinates = 0;
   meshsimp::TriangleMeshView View;
+  vtkIdType SourceCell(std::int64_t triangle) const
+  {
+    return this->SourceCells.empty() ? this->FirstCell + triangle : this->SourceCells[triangle];
+  }
 };
 
 /// False with a message in error when the input cannot be processed at all (too large).

@@ -133,7 +133,7 @@ int vtkOctreeVertexClustering::RequestData(
   outCD->CopyAllocate(inCD, numberOfTriangles);
   for (vtkIdType i = 0; i < numberOfTriangles; ++i)
   {
-    outCD->CopyData(inCD, triangles.SourceCells[result.SourceTriangles[i]], i);
+    outCD->CopyData(inCD, triangles.SourceCell(result.SourceTriangles[i]), i);
   }
   if (vtkDataArray* normals = outCD->GetNormals())
   {

@@ -210,21 +210,23 @@ void Clusterer::PrepareGeometry()
   const std::int64_t m = this->Mesh.NumberOfTriangles;
   this->Adjacency.Build(this->Mesh);
 
+  // The compact mesh's points become the normalised coordinates.
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
   Vec3 hi = -lo;
-  for (std::int64_t v = 0; v < n; ++v)
+  for (const Vec3& p : this->Local.Points)
   {
-    lo = lo.cwiseMin(this->Mesh.Point(v));
-    hi = hi.cwiseMax(this->Mesh.Point(v));
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
   }
   this->Origin = 0.5 * (lo + hi);
   const double diagonal = (hi - lo).norm();
   this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
-  this->P.resize(n);
+  this->P = std::move(this->Local.Points);
+  this->Mesh.Points = nullptr;
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
-      this->P[v] = (this->Mesh.Point(v) - this->Origin) * this->Scale;
+      this->P[v] = (this->P[v] - this->Origin) * this->Scale;
     }
   });
 

@@ -17,15 +17,14 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
   context.For(n, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v)
     {
-      const double* p = input.Points + 3 * v;
-      finite[v] = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? 1 : 0;
+      finite[v] = input.Point(v).allFinite() ? 1 : 0;
     }
   });
   std::vector<std::uint8_t> usable(m);
   context.For(m, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t t = begin; t < end; ++t)
     {
-      const std::int32_t* tri = input.Triangles + 3 * t;
+      const std::int64_t tri[3] = { input.Id(3 * t), input.Id(3 * t + 1), input.Id(3 * t + 2) };
       bool ok = tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2];
       for (int k = 0; k < 3 && ok; ++k)
       {
@@ -43,7 +42,7 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
     {
       for (int k = 0; k < 3; ++k)
       {
-        vertexOf[input.Triangles[3 * t + k]] = 0;
+        vertexOf[input.Id(3 * t + k)] = 0;
       }
     }
   }
@@ -113,12 +112,11 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
       mesh.InputVertex[vertexOf[v]] = static_cast<std::int32_t>(v);
     }
   }
-  mesh.Points.resize(3 * used);
+  mesh.Points.resize(used);
   context.For(used, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v)
     {
-      std::copy_n(input.Points + 3 * static_cast<std::int64_t>(mesh.InputVertex[v]), 3,
-        mesh.Points.data() + 3 * v);
+      mesh.Points[v] = input.Point(mesh.InputVertex[v]);
     }
   });
 
@@ -128,8 +126,8 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
   {
     if (usable[t])
     {
-      const std::int32_t* tri = input.Triangles + 3 * t;
-      ++first[std::min({ vertexOf[tri[0]], vertexOf[tri[1]], vertexOf[tri[2]] }) + 1];
+      ++first[std::min({ vertexOf[input.Id(3 * t)], vertexOf[input.Id(3 * t + 1)],
+                vertexOf[input.Id(3 * t + 2)] }) + 1];
     }
   }
   std::partial_sum(first.begin(), first.end(), first.begin());
@@ -139,8 +137,8 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
   {
     if (usable[t])
     {
-      const std::int32_t* tri = input.Triangles + 3 * t;
-      const std::int32_t a = vertexOf[tri[0]], b = vertexOf[tri[1]], c = vertexOf[tri[2]];
+      const std::int32_t a = vertexOf[input.Id(3 * t)], b = vertexOf[input.Id(3 * t + 1)],
+                         c = vertexOf[input.Id(3 * t + 2)];
       const std::int32_t slot = first[std::min({ a, b, c })]++;
       mesh.InputTriangle[slot] = static_cast<std::int32_t>(t);
       mesh.Triangles[3 * static_cast<std::size_t>(slot)] = a;

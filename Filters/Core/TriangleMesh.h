@@ -22,17 +22,31 @@
 namespace meshsimp
 {
 
-/// A read-only view of an indexed triangle mesh: 3 doubles per point, 3 ids per triangle.
+/// A read-only view of an indexed triangle mesh: 3 coordinates per point, 3 ids per triangle.
+/// Input meshes may give single-precision points (FloatPoints instead of Points) and 64-bit ids
+/// (Triangles64 instead of Triangles), so that callers need not copy them; algorithms read an
+/// input through MakeCompactMesh, which accepts either.
 struct TriangleMeshView
 {
   const double* Points = nullptr;
   std::int64_t NumberOfPoints = 0;
   const std::int32_t* Triangles = nullptr;
   std::int64_t NumberOfTriangles = 0;
+  const float* FloatPoints = nullptr;
+  const long long* Triangles64 = nullptr; // the type of VTK's 64-bit ids
 
   Eigen::Vector3d Point(std::int64_t i) const
   {
-    return { this->Points[3 * i], this->Points[3 * i + 1], this->Points[3 * i + 2] };
+    if (this->Points)
+    {
+      return { this->Points[3 * i], this->Points[3 * i + 1], this->Points[3 * i + 2] };
+    }
+    return { this->FloatPoints[3 * i], this->FloatPoints[3 * i + 1], this->FloatPoints[3 * i + 2] };
+  }
+  /// Id number i of the flat triangle list (corner i % 3 of triangle i / 3).
+  std::int64_t Id(std::int64_t i) const
+  {
+    return this->Triangles ? this->Triangles[i] : static_cast<std::int64_t>(this->Triangles64[i]);
   }
 };
 
@@ -47,13 +61,15 @@ struct TriangleMeshView
  */
 struct CompactMesh
 {
-  std::vector<double> Points;              // 3 per vertex, input coordinates
+  std::vector<Eigen::Vector3d> Points;     // input coordinates
   std::vector<std::int32_t> Triangles;     // 3 per triangle
   std::vector<std::int32_t> InputVertex;   // vertex → input point
   std::vector<std::int32_t> InputTriangle; // triangle → input triangle
   TriangleMeshView View() const
   {
-    return { this->Points.data(), static_cast<std::int64_t>(this->InputVertex.size()),
+    static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "points must be contiguous");
+    return { this->Points.empty() ? nullptr : this->Points.data()->data(),
+      static_cast<std::int64_t>(this->InputVertex.size()),
       this->Triangles.data(), static_cast<std::int64_t>(this->InputTriangle.size()) };
   }
 };
