@@ -455,6 +455,87 @@ void InvalidTrianglesAreSkipped()
   CHECK(result.Points.empty() && result.Triangles.empty());
 }
 
+void CompactMeshIsSpatialAndMapsBack()
+{
+  // A grid with an unused point and an invalid triangle: the compact mesh keeps the usable part,
+  // in Morton order, with maps back to the input, corners in their input orientation.
+  Mesh mesh = Grid(8);
+  mesh.Points.insert(mesh.Points.end(), { 5.0, 5.0, 5.0 });
+  mesh.Triangles.insert(mesh.Triangles.end(), { 0, 0, 1 });
+  const meshsimp::CompactMesh compact = meshsimp::MakeCompactMesh(mesh.View());
+  CHECK(compact.InputVertex.size() == 81);
+  CHECK(compact.InputTriangle.size() == 128);
+  for (std::size_t v = 0; v < compact.InputVertex.size(); ++v)
+  {
+    CHECK(compact.Points[v] == mesh.View().Point(compact.InputVertex[v]));
+  }
+  std::int32_t previousLowest = 0;
+  for (std::size_t t = 0; t < compact.InputTriangle.size(); ++t)
+  {
+    const std::int32_t* corners = compact.Triangles.data() + 3 * t;
+    for (int k = 0; k < 3; ++k)
+    {
+      CHECK(compact.InputVertex[corners[k]] == mesh.Triangles[3 * compact.InputTriangle[t] + k]);
+    }
+    const std::int32_t lowest = *std::min_element(corners, corners + 3);
+    CHECK(lowest >= previousLowest);
+    previousLowest = lowest;
+  }
+  // Spatial order: the first quarter of the vertices lies in one quadrant of the grid.
+  for (std::size_t v = 0; v < 16; ++v)
+  {
+    CHECK(compact.Points[v].x() <= 0.5 && compact.Points[v].y() <= 0.5);
+  }
+
+  // Single-precision points and 64-bit ids give the same result (the grid is exact in floats).
+  const std::vector<float> floats(mesh.Points.begin(), mesh.Points.end());
+  const std::vector<long long> ids(mesh.Triangles.begin(), mesh.Triangles.end());
+  TriangleMeshView view;
+  view.FloatPoints = floats.data();
+  view.NumberOfPoints = static_cast<std::int64_t>(floats.size() / 3);
+  view.Triangles64 = ids.data();
+  view.NumberOfTriangles = static_cast<std::int64_t>(ids.size() / 3);
+  OctreeClusteringResult narrow;
+  CHECK(meshsimp::OctreeVertexClustering(view, Target(30), narrow));
+  const OctreeClusteringResult wide = Simplify(mesh, Target(30));
+  CHECK(narrow.Points == wide.Points && narrow.Triangles == wide.Triangles);
+  CHECK(narrow.VertexToPoint == wide.VertexToPoint && narrow.SourceTriangles == wide.SourceTriangles);
+}
+
+void BoundaryCornersMarkEachBorderEdgeOnce()
+{
+  // An n × n grid has 4n border edges, each flagged at its start (outgoing) and at its end
+  // (incoming); inner edges are not flagged.
+  const Mesh grid = Grid(6);
+  meshsimp::VertexTriangleAdjacency adjacency;
+  adjacency.Build(grid.View());
+  std::vector<std::uint8_t> flags(adjacency.Corners.size());
+  int outgoing = 0, incoming = 0;
+  auto onBorder = [&](std::int32_t v) {
+    const Eigen::Vector3d p = grid.View().Point(v);
+    return p.x() == 0.0 || p.x() == 1.0 || p.y() == 0.0 || p.y() == 1.0;
+  };
+  for (std::int64_t v = 0; v < grid.View().NumberOfPoints; ++v)
+  {
+    std::uint8_t* vertexFlags = flags.data() + adjacency.Offsets[v];
+    meshsimp::MarkBoundaryCorners(adjacency, v, vertexFlags);
+    for (const meshsimp::Corner* c = adjacency.Begin(v); c != adjacency.End(v); ++c, ++vertexFlags)
+    {
+      if (*vertexFlags & meshsimp::OutgoingBoundaryEdge)
+      {
+        ++outgoing;
+        CHECK(onBorder(static_cast<std::int32_t>(v)) && onBorder(c->Next));
+      }
+      if (*vertexFlags & meshsimp::IncomingBoundaryEdge)
+      {
+        ++incoming;
+        CHECK(onBorder(static_cast<std::int32_t>(v)) && onBorder(c->Previous));
+      }
+    }
+  }
+  CHECK(outgoing == 24 && incoming == 24);
+}
+
 void AbortStopsEarly()
 {
   const Mesh grid = Grid(40);
@@ -482,5 +563,7 @@ int main()
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "InvalidTrianglesAreSkipped", InvalidTrianglesAreSkipped },
     { "AbortStopsEarly", AbortStopsEarly },
+    { "CompactMeshIsSpatialAndMapsBack", CompactMeshIsSpatialAndMapsBack },
+    { "BoundaryCornersMarkEachBorderEdgeOnce", BoundaryCornersMarkEachBorderEdgeOnce },
   });
 }

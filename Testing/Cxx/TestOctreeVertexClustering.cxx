@@ -4,6 +4,7 @@
 #include "vtkOFFReader.h"
 #include "vtkOctreeVertexClustering.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -13,12 +14,14 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TestHelpers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <set>
@@ -225,6 +228,58 @@ void TestThreadsAndInput(vtkPolyData* cow)
   CHECK(cow->GetPointData()->GetNumberOfArrays() == before->GetPointData()->GetNumberOfArrays());
 }
 
+void TestInputStorageKinds(vtkPolyData* cow)
+{
+  // The input is read in place whatever its storage: 32- or 64-bit cell ids, float or double
+  // points give the same output (the points are made exact in floats first).
+  auto simplify = [](vtkPolyData* input) {
+    vtkNew<vtkOctreeVertexClustering> filter;
+    filter->SetInputData(input);
+    filter->SetTargetReduction(0.9);
+    filter->Update();
+    return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
+  };
+  vtkNew<vtkPoints> floats;
+  floats->SetDataTypeToFloat();
+  floats->DeepCopy(cow->GetPoints());
+  vtkNew<vtkPoints> doubles;
+  doubles->SetDataTypeToDouble();
+  doubles->DeepCopy(floats);
+  vtkNew<vtkPolyData> wide; // double points, 64-bit ids
+  wide->ShallowCopy(cow);
+  wide->SetPoints(doubles);
+  vtkNew<vtkPolyData> single; // float points
+  single->ShallowCopy(cow);
+  single->SetPoints(floats);
+  vtkNew<vtkPolyData> narrow; // 32-bit ids
+  narrow->DeepCopy(wide);
+  CHECK(narrow->GetPolys()->ConvertTo32BitStorage() && !narrow->GetPolys()->IsStorage64Bit());
+  CHECK(wide->GetPolys()->IsStorage64Bit());
+  CHECK(single->GetPoints()->GetDataType() == VTK_FLOAT && wide->GetPoints()->GetDataType() == VTK_DOUBLE);
+  const vtkSmartPointer<vtkPolyData> reference = simplify(wide);
+  for (vtkPolyData* input : { static_cast<vtkPolyData*>(narrow), static_cast<vtkPolyData*>(single) })
+  {
+    const vtkSmartPointer<vtkPolyData> out = simplify(input);
+    CHECK(out->GetNumberOfPoints() == reference->GetNumberOfPoints());
+    CHECK(out->GetNumberOfPolys() == reference->GetNumberOfPolys());
+    for (vtkIdType i = 0; i < std::min(out->GetNumberOfPoints(), reference->GetNumberOfPoints()); ++i)
+    {
+      double a[3], b[3];
+      out->GetPoint(i, a);
+      reference->GetPoint(i, b);
+      CHECK(std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) < 1e-6);
+    }
+    for (vtkIdType i = 0; i < std::min(out->GetNumberOfPolys(), reference->GetNumberOfPolys()); ++i)
+    {
+      vtkIdType na, nb;
+      const vtkIdType *ia, *ib;
+      out->GetPolys()->GetCellAtId(i, na, ia);
+      reference->GetPolys()->GetCellAtId(i, nb, ib);
+      CHECK(na == 3 && nb == 3 && std::equal(ia, ia + 3, ib));
+    }
+  }
+}
+
 void TestTriangleCountMode(vtkPolyData* cow)
 {
   vtkNew<vtkOctreeVertexClustering> filter;
@@ -244,5 +299,6 @@ int TestOctreeVertexClustering(int, char*[])
   TestErrorBound(cow);
   TestThreadsAndInput(cow);
   TestTriangleCountMode(cow);
+  TestInputStorageKinds(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
