@@ -135,7 +135,7 @@ private:
   bool ProtrudingTip(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
     std::int32_t& tip, Vec3& ring) const;
   double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
-    const std::int32_t* members, std::int32_t count, bool placeByQuadric, Vec3& x) const;
+    const std::int32_t* members, std::int32_t count, Vec3& x) const;
   std::int32_t PartitionNode(std::int32_t node);
   void SplitLeaf(const HeapEntry& leaf, std::vector<HeapEntry>& children);
   void UndoLastSplit();
@@ -424,7 +424,7 @@ bool Clusterer::ProtrudingTip(std::int32_t cluster, const std::int32_t* members,
 }
 
 double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
-  const std::int32_t* members, std::int32_t count, bool placeByQuadric, Vec3& x) const
+  const std::int32_t* members, std::int32_t count, Vec3& x) const
 {
   // A protruding cluster collapses to its tip, so a leg becomes a cone instead of vanishing
   // into a point inside it; its error then counts the distance of its members to the segment
@@ -437,10 +437,7 @@ double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Octree
     x = this->P[tip];
     return this->ClusterError(x, members, count, &ring);
   }
-  if (placeByQuadric)
-  {
-    x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count);
-  }
+  x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count);
   return this->ClusterError(x, members, count, nullptr);
 }
 
@@ -559,7 +556,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
       continue; // a lone vertex stays where it is: no error
     }
     key = std::max(key,
-      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), cell, members, size, true, x));
+      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), cell, members, size, x));
   }
 
   canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
@@ -1037,6 +1034,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
   std::vector<Vec3> position(numberOfPoints), centre(numberOfPoints);
   std::vector<Quadric> faceQuadric(numberOfPoints);
   std::vector<std::uint8_t> folded(numberOfPoints, 0); // protruding: keeps its tip
+  std::vector<Vec3> ring(numberOfPoints);             // where a protruding cluster meets the rest
   this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t p = b; p < e; ++p)
     {
@@ -1044,8 +1042,7 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
       centre[p] = this->ClusterCentre(members(p), size(p));
       faceQuadric[p] = this->ClusterQuadric(members(p), size(p));
       std::int32_t tip;
-      Vec3 ring;
-      if (this->ProtrudingTip(clusterOfPoint[p], members(p), size(p), tip, ring))
+      if (this->ProtrudingTip(clusterOfPoint[p], members(p), size(p), tip, ring[p]))
       {
         position[p] = this->P[tip];
         folded[p] = 1;
@@ -1119,10 +1116,8 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
       {
         result.Points[3 * p + k] = x[k];
       }
-      Vec3 x0 = position[p];
-      const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
       result.ClusterErrors[p] =
-        this->Represent(clusterOfPoint[p], faceQuadric[p], cell, members(p), size(p), false, x0) / this->Scale;
+        this->ClusterError(position[p], members(p), size(p), folded[p] ? &ring[p] : nullptr) / this->Scale;
       double total = 0.0;
       for (std::int32_t i = 0; i < size(p); ++i)
       {
