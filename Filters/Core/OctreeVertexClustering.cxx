@@ -208,7 +208,7 @@ void Clusterer::PrepareGeometry()
   this->Mesh = this->Local.View();
   const std::int64_t n = this->Mesh.NumberOfPoints;
   const std::int64_t m = this->Mesh.NumberOfTriangles;
-  this->Adjacency.Build(this->Mesh);
+  this->Adjacency = std::move(this->Local.Adjacency);
 
   // The compact mesh's points become the normalised coordinates.
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());

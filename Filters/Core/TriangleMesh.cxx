@@ -120,19 +120,30 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
     }
   });
 
-  // Triangles by their lowest vertex (counting sort, input order among equals), corners kept.
+  // Triangles by their lowest vertex (counting sort, input order among equals), corners kept,
+  // and each vertex's corners (counting sort by vertex) in the same two passes.
   std::vector<std::int32_t> first(used + 1, 0);
+  VertexTriangleAdjacency& adjacency = mesh.Adjacency;
+  adjacency.Offsets.assign(used + 1, 0);
   for (std::int64_t t = 0; t < m; ++t)
   {
     if (usable[t])
     {
-      ++first[std::min({ vertexOf[input.Id(3 * t)], vertexOf[input.Id(3 * t + 1)],
-                vertexOf[input.Id(3 * t + 2)] }) + 1];
+      const std::int32_t a = vertexOf[input.Id(3 * t)], b = vertexOf[input.Id(3 * t + 1)],
+                         c = vertexOf[input.Id(3 * t + 2)];
+      ++first[std::min({ a, b, c }) + 1];
+      ++adjacency.Offsets[a + 1];
+      ++adjacency.Offsets[b + 1];
+      ++adjacency.Offsets[c + 1];
     }
   }
   std::partial_sum(first.begin(), first.end(), first.begin());
+  std::partial_sum(adjacency.Offsets.begin(), adjacency.Offsets.end(), adjacency.Offsets.begin());
   mesh.InputTriangle.resize(first.back());
   mesh.Triangles.resize(3 * static_cast<std::size_t>(first.back()));
+  adjacency.Corners.resize(adjacency.Offsets.back());
+  std::vector<std::int32_t>& fill = code; // reused: the next free corner slot of each vertex
+  std::copy(adjacency.Offsets.begin(), adjacency.Offsets.end() - 1, fill.begin());
   for (std::int64_t t = 0; t < m; ++t)
   {
     if (usable[t])
@@ -144,6 +155,9 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
       mesh.Triangles[3 * static_cast<std::size_t>(slot)] = a;
       mesh.Triangles[3 * static_cast<std::size_t>(slot) + 1] = b;
       mesh.Triangles[3 * static_cast<std::size_t>(slot) + 2] = c;
+      adjacency.Corners[fill[a]++] = { slot, b, c };
+      adjacency.Corners[fill[b]++] = { slot, c, a };
+      adjacency.Corners[fill[c]++] = { slot, a, b };
     }
   }
   return mesh;

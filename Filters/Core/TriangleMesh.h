@@ -50,32 +50,6 @@ struct TriangleMeshView
   }
 };
 
-/**
- * The usable part of an input mesh, renumbered for memory locality. A triangle is usable when
- * its three indices are distinct and in range and its corners are finite; every algorithm skips
- * the others (they count as dropped input). Vertices used by a usable triangle are ordered by
- * the Morton code of a coarse grid over their bounding cube (input order within a grid cell), and
- * triangles by their lowest vertex, so walks over the adjacency of one region of space touch
- * nearby memory: on a badly ordered scan this halves the run time of the octree clustering.
- * Each octree cell of the grid's depth or less holds a contiguous range of vertices.
- */
-struct CompactMesh
-{
-  std::vector<Eigen::Vector3d> Points;     // input coordinates
-  std::vector<std::int32_t> Triangles;     // 3 per triangle
-  std::vector<std::int32_t> InputVertex;   // vertex → input point
-  std::vector<std::int32_t> InputTriangle; // triangle → input triangle
-  TriangleMeshView View() const
-  {
-    static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "points must be contiguous");
-    return { this->Points.empty() ? nullptr : this->Points.data()->data(),
-      static_cast<std::int64_t>(this->InputVertex.size()),
-      this->Triangles.data(), static_cast<std::int64_t>(this->InputTriangle.size()) };
-  }
-};
-
-CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});
-
 /// One triangle around a vertex v: its id and its other corners, so that the triangle reads
 /// (v, Next, Previous) in its own orientation.
 struct Corner
@@ -88,11 +62,40 @@ struct Corner
 struct VertexTriangleAdjacency
 {
   std::vector<std::int32_t> Offsets; // NumberOfPoints + 1
-  std::vector<Corner> Corners;       // ascending triangle id per vertex
+  std::vector<Corner> Corners;       // per vertex, in the order its triangles were added
+  /// Links every triangle of mesh, in triangle order.
   void Build(const TriangleMeshView& mesh);
   const Corner* Begin(std::int64_t v) const { return this->Corners.data() + this->Offsets[v]; }
   const Corner* End(std::int64_t v) const { return this->Corners.data() + this->Offsets[v + 1]; }
 };
+
+/**
+ * The usable part of an input mesh, renumbered for memory locality. A triangle is usable when
+ * its three indices are distinct and in range and its corners are finite; every algorithm skips
+ * the others (they count as dropped input). Vertices used by a usable triangle are ordered by
+ * the Morton code of a coarse grid over their bounding cube (input order within a grid cell), and
+ * triangles by their lowest vertex, so walks over the adjacency of one region of space touch
+ * nearby memory: on a badly ordered scan this halves the run time of the octree clustering.
+ * Each octree cell of the grid's depth or less holds a contiguous range of vertices. The
+ * vertex → triangle adjacency is built in the same passes (corners in input triangle order).
+ */
+struct CompactMesh
+{
+  std::vector<Eigen::Vector3d> Points;     // input coordinates
+  std::vector<std::int32_t> Triangles;     // 3 per triangle
+  std::vector<std::int32_t> InputVertex;   // vertex → input point
+  std::vector<std::int32_t> InputTriangle; // triangle → input triangle
+  VertexTriangleAdjacency Adjacency;
+  TriangleMeshView View() const
+  {
+    static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "points must be contiguous");
+    return { this->Points.empty() ? nullptr : this->Points.data()->data(),
+      static_cast<std::int64_t>(this->InputVertex.size()),
+      this->Triangles.data(), static_cast<std::int64_t>(this->InputTriangle.size()) };
+  }
+};
+
+CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});
 
 /// Boundary flags of a corner slot: the triangle's edge (v, Next), resp. (Previous, v), belongs
 /// to no other triangle.
