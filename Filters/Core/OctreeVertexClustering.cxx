@@ -172,8 +172,8 @@ private:
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
   std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot, empty without boundary planes
 
-  // Octree: every node owns a contiguous range of Order (used vertices, input order within a
-  // leaf); Position is the inverse permutation.
+  // Octree: every node owns a contiguous range of Order (the compact mesh's vertices, in its
+  // spatial order within a leaf); Position is the inverse permutation.
   std::vector<std::int32_t> Order, Position;
   std::vector<OctreeNode> Nodes;
   std::priority_queue<HeapEntry> Heap;

@@ -4,8 +4,9 @@
  * @brief Adaptive octree vertex clustering with quadric-optimal representatives (paper 000, §2–3).
  *
  * Zhou, Zhang, Shi and Pan, "A new simplification algorithm for colored or textured polygonal
- * models". The bounding cube is refined as an octree, vertices are inserted in input order, and
- * every leaf's vertices are clustered to one representative. Unlike a uniform grid
+ * models". The bounding cube is refined as an octree (vertices are inserted in the spatial order
+ * of the compact mesh, see MakeCompactMesh), and every leaf's vertices are clustered to one
+ * representative. Unlike a uniform grid
  * (Rossignac–Borrel, vtkQuadricClustering):
  *  - a leaf is split where it is too large (MaximumCellSize), too full (MaximumVerticesPerCell),
  *    where clustering it would flip a triangle of its related set (§2.4), and where its error
