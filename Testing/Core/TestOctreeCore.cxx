@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <thread>
 
 using meshsimp::OctreeClusteringOptions;
 using meshsimp::OctreeClusteringResult;
@@ -414,22 +415,62 @@ void FlipRuleReducesFlippedTriangles()
 
 void SameResultForAnyThreadCount()
 {
+  // A wavy sheet large enough for leaves to be split in concurrent batches, under a count
+  // target and under an error bound.
+  Mesh sheet = Grid(120);
+  for (std::size_t i = 0; i < sheet.Points.size(); i += 3)
+  {
+    sheet.Points[i + 2] = 0.05 * std::sin(9.0 * sheet.Points[i]) * std::cos(7.0 * sheet.Points[i + 1]);
+  }
   const Mesh cube = Cube(10);
-  meshsimp::ExecutionContext chunked;
-  // A "parallel" for that runs chunks in reverse order: results must not depend on scheduling.
-  chunked.ParallelFor = [](std::int64_t n, std::int64_t,
-                          const std::function<void(std::int64_t, std::int64_t)>& body) {
+  OctreeClusteringOptions bounded;
+  bounded.MaximumError = 0.002;
+  bounded.RelativeError = true;
+
+  // A "parallel" for that runs chunks in reverse order, and one with real threads: results
+  // must not depend on scheduling or on the thread count.
+  meshsimp::ExecutionContext reversed;
+  reversed.ParallelFor = [](std::int64_t n, std::int64_t,
+                           const std::function<void(std::int64_t, std::int64_t)>& body) {
     const std::int64_t chunk = std::max<std::int64_t>(1, n / 7);
     for (std::int64_t begin = (n - 1) / chunk * chunk; begin >= 0; begin -= chunk)
     {
       body(begin, std::min(n, begin + chunk));
     }
   };
-  OctreeClusteringResult serial, reordered;
-  CHECK(meshsimp::OctreeVertexClustering(cube.View(), Target(100), serial));
-  CHECK(meshsimp::OctreeVertexClustering(cube.View(), Target(100), reordered, chunked));
-  CHECK(serial.Points == reordered.Points);
-  CHECK(serial.Triangles == reordered.Triangles);
+  auto threaded = [](int count) {
+    meshsimp::ExecutionContext context;
+    context.ParallelFor = [count](std::int64_t n, std::int64_t,
+                            const std::function<void(std::int64_t, std::int64_t)>& body) {
+      std::vector<std::thread> threads;
+      const std::int64_t chunk = (n + count - 1) / count;
+      for (std::int64_t begin = 0; begin < n; begin += chunk)
+      {
+        threads.emplace_back([&body, begin, end = std::min(n, begin + chunk)] { body(begin, end); });
+      }
+      for (std::thread& thread : threads)
+      {
+        thread.join();
+      }
+    };
+    return context;
+  };
+  const std::pair<const Mesh*, OctreeClusteringOptions> cases[] = { { &cube, Target(100) },
+    { &sheet, Target(4000) }, { &sheet, bounded } };
+  for (const auto& c : cases)
+  {
+    OctreeClusteringResult serial;
+    CHECK(meshsimp::OctreeVertexClustering(c.first->View(), c.second, serial));
+    CHECK(!serial.Triangles.empty());
+    for (const meshsimp::ExecutionContext& context : { reversed, threaded(2), threaded(4) })
+    {
+      OctreeClusteringResult other;
+      CHECK(meshsimp::OctreeVertexClustering(c.first->View(), c.second, other, context));
+      CHECK(serial.Points == other.Points);
+      CHECK(serial.Triangles == other.Triangles);
+      CHECK(serial.ClusterErrors == other.ClusterErrors);
+    }
+  }
 }
 
 void InvalidTrianglesAreSkipped()
