@@ -176,7 +176,7 @@ private:
   std::vector<Vec3> P;
   VertexTriangleAdjacency Adjacency;
   std::vector<Plane> TrianglePlanes;
-  std::vector<double> TriangleAreas;
+  std::vector<double> TriangleAreas; // until the vertex quadrics are made
   std::vector<Quadric> VertexQuadrics;
   std::vector<double> VertexWeights; // a third of the incident area
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
@@ -326,6 +326,8 @@ void Clusterer::PrepareQuadrics()
       this->VertexAreaNormals[v] = areaNormal;
     }
   }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
+  // Not needed any more: its memory serves the refinement's arrays.
+  std::vector<double>().swap(this->TriangleAreas);
 }
 
 Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
@@ -636,7 +638,7 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
       // their own clusters' current points.
       if (flips && !scan.Flipped && (next < begin || next >= end) &&
         (previous < begin || previous >= end) && c1 != c2 &&
-        this->TriangleAreas[corner->Triangle] > 0.0)
+        this->TrianglePlanes[corner->Triangle].Normal != Vec3::Zero())
       {
         const Vec3& x = this->ClusterPositions[c0];
         const Vec3 normal = (this->ClusterPositions[c1] - x).cross(this->ClusterPositions[c2] - x);
