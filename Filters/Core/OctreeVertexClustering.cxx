@@ -148,6 +148,7 @@ private:
     const std::int32_t* members, std::int32_t count, Vec3& x) const;
   std::int32_t PartitionNode(std::int32_t node);
   void SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<HeapEntry>& children);
+  std::int32_t MoveClusters(std::int32_t node, std::int32_t first);
   void UndoLastSplit();
   std::int32_t AddNode(OctreeNode node)
   {
@@ -844,22 +845,7 @@ void Clusterer::SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<He
     {
       this->Splits[firstRecord + made[k].Leaf].Clusters = next;
     }
-    OctreeNode& cell = this->Nodes[made[k].Node];
-    const std::int32_t shift = cell.FirstCluster - next;
-    if (shift != 0)
-    {
-      for (std::int32_t c = 0; c < cell.ClusterCount; ++c)
-      {
-        this->ClusterPositions[next + c] = this->ClusterPositions[cell.FirstCluster + c];
-        this->ClusterNodes[next + c] = this->ClusterNodes[cell.FirstCluster + c];
-      }
-      for (std::int32_t i = cell.Begin; i < cell.End; ++i)
-      {
-        this->VertexCluster[this->Order[i]] -= shift;
-      }
-      cell.FirstCluster = next;
-    }
-    next += cell.ClusterCount;
+    next = this->MoveClusters(made[k].Node, next);
   }
   this->ClusterPositions.resize(next);
   this->ClusterNodes.resize(next);
@@ -888,6 +874,28 @@ void Clusterer::SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<He
         this->MakeEntry(made[k].Node, made[k].Key, made[k].Scan, this->Options.TargetTriangles >= 0));
     }
   }
+}
+
+std::int32_t Clusterer::MoveClusters(std::int32_t node, std::int32_t first)
+{
+  // Renumbers the leaf's clusters first, first + 1, ... (never above their current ids, so
+  // leaves can be packed in increasing order in place); returns the next free id.
+  OctreeNode& cell = this->Nodes[node];
+  const std::int32_t shift = cell.FirstCluster - first;
+  if (shift != 0)
+  {
+    for (std::int32_t c = 0; c < cell.ClusterCount; ++c)
+    {
+      this->ClusterPositions[first + c] = this->ClusterPositions[cell.FirstCluster + c];
+      this->ClusterNodes[first + c] = this->ClusterNodes[cell.FirstCluster + c];
+    }
+    for (std::int32_t i = cell.Begin; i < cell.End; ++i)
+    {
+      this->VertexCluster[this->Order[i]] -= shift;
+    }
+    cell.FirstCluster = first;
+  }
+  return first + cell.ClusterCount;
 }
 
 void Clusterer::UndoLastSplit()
@@ -1338,8 +1346,9 @@ bool Clusterer::Run(OctreeClusteringResult& result)
     }
     frontier.swap(next);
   }
-  // The frontier's leaves are evaluated in parallel; leaf i owns cluster ids Begin..End − 1 of
-  // its range, so ids, and the whole result, do not depend on the thread count.
+  // The frontier's leaves are evaluated in parallel, each owning the cluster ids Begin..End − 1
+  // of its range for now, then packed in range order: ids, and the whole result, do not depend
+  // on the thread count.
   this->ClusterPositions.resize(this->Order.size());
   this->ClusterNodes.resize(this->Order.size());
   std::vector<double> keys(frontier.size());
@@ -1355,6 +1364,19 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       splittable[i] = canSplit ? 1 : 0;
     }
   }, frontierWork);
+  std::vector<std::int32_t> byRange(frontier);
+  std::sort(byRange.begin(), byRange.end(),
+    [this](std::int32_t a, std::int32_t b) { return this->Nodes[a].Begin < this->Nodes[b].Begin; });
+  std::int32_t clusters = 0;
+  for (const std::int32_t node : byRange)
+  {
+    clusters = this->MoveClusters(node, clusters);
+  }
+  this->ClusterPositions.resize(clusters);
+  this->ClusterNodes.resize(clusters);
+  this->ClusterPositions.shrink_to_fit(); // the room of one id per vertex serves later arrays
+  this->ClusterNodes.shrink_to_fit();
+
   // Their heap entries, and the triangle count: each triangle once, from its first corner.
   std::vector<HeapEntry> entries(frontier.size());
   std::vector<std::int64_t> surviving(frontier.size());
