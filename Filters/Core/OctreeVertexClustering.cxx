@@ -161,9 +161,15 @@ private:
     return entry.Node < static_cast<std::int32_t>(this->Nodes.size()) &&
       this->Nodes[entry.Node].Serial == entry.Serial && this->Nodes[entry.Node].ClusterCount > 0;
   }
-  std::vector<std::int32_t> SurvivingTriangles() const;
+  /// A triangle of the output: its id and its corners, in its orientation.
+  struct Survivor
+  {
+    std::int32_t Triangle;
+    std::array<std::int32_t, 3> Corners;
+  };
+  std::vector<Survivor> SurvivingTriangles() const;
   bool Refine(std::int64_t target, double bound);
-  void Finalize(const std::vector<std::int32_t>& survivors, OctreeClusteringResult& result);
+  void Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result);
 
   const TriangleMeshView& Input;
   const OctreeClusteringOptions& Options;
@@ -256,6 +262,10 @@ void Clusterer::PrepareGeometry()
       }
     }
   });
+  // From here on triangles are read at their corners in the adjacency; the list's memory
+  // serves the arrays that follow.
+  std::vector<std::int32_t>().swap(this->Local.Triangles);
+  this->Mesh.Triangles = nullptr;
 }
 
 Plane Clusterer::BoundaryPlane(
@@ -1051,14 +1061,16 @@ bool Clusterer::Refine(std::int64_t target, double bound)
   return true;
 }
 
-std::vector<std::int32_t> Clusterer::SurvivingTriangles() const
+std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
 {
   // Triangles with three distinct clusters, minus duplicates (the same three clusters in either
-  // orientation): the lowest input triangle of each set survives. In input triangle order.
+  // orientation): the lowest input triangle of each set survives. In input triangle order. The
+  // triangle list itself is gone by now: each triangle is read at its lowest corner.
   struct Key
   {
     std::array<std::int32_t, 3> Clusters;
-    std::int32_t InputTriangle, Triangle;
+    std::int32_t InputTriangle;
+    Survivor Triangle;
     bool operator<(const Key& o) const
     {
       return this->Clusters != o.Clusters ? this->Clusters < o.Clusters
@@ -1066,19 +1078,26 @@ std::vector<std::int32_t> Clusterer::SurvivingTriangles() const
     }
   };
   std::vector<Key> keys;
-  for (std::int64_t t = 0; t < this->Mesh.NumberOfTriangles; ++t)
+  for (std::int32_t v = 0; v < static_cast<std::int32_t>(this->Mesh.NumberOfPoints); ++v)
   {
-    const std::int32_t* tri = this->Mesh.Triangles + 3 * t;
-    std::array<std::int32_t, 3> c = { this->VertexCluster[tri[0]], this->VertexCluster[tri[1]],
-      this->VertexCluster[tri[2]] };
-    if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+    for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
     {
-      std::sort(c.begin(), c.end());
-      keys.push_back({ c, this->Local.InputTriangle[t], static_cast<std::int32_t>(t) });
+      if (corner->Next < v || corner->Previous < v)
+      {
+        continue;
+      }
+      std::array<std::int32_t, 3> c = { this->VertexCluster[v], this->VertexCluster[corner->Next],
+        this->VertexCluster[corner->Previous] };
+      if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+      {
+        std::sort(c.begin(), c.end());
+        keys.push_back({ c, this->Local.InputTriangle[corner->Triangle],
+          { corner->Triangle, { v, corner->Next, corner->Previous } } });
+      }
     }
   }
   std::sort(keys.begin(), keys.end());
-  std::vector<std::int32_t> survivors;
+  std::vector<Survivor> survivors;
   for (std::size_t i = 0; i < keys.size(); ++i)
   {
     if (i == 0 || keys[i].Clusters != keys[i - 1].Clusters)
@@ -1086,22 +1105,22 @@ std::vector<std::int32_t> Clusterer::SurvivingTriangles() const
       survivors.push_back(keys[i].Triangle);
     }
   }
-  std::sort(survivors.begin(), survivors.end(), [this](std::int32_t a, std::int32_t b) {
-    return this->Local.InputTriangle[a] < this->Local.InputTriangle[b];
+  std::sort(survivors.begin(), survivors.end(), [this](const Survivor& a, const Survivor& b) {
+    return this->Local.InputTriangle[a.Triangle] < this->Local.InputTriangle[b.Triangle];
   });
   return survivors;
 }
 
-void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClusteringResult& result)
+void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result)
 {
   const std::int64_t n = this->Mesh.NumberOfPoints;
   // Output points: clusters with a surviving triangle, in the order of their first vertex.
   std::vector<std::uint8_t> referenced(this->ClusterPositions.size(), 0);
-  for (const std::int32_t t : survivors)
+  for (const Survivor& survivor : survivors)
   {
-    for (int k = 0; k < 3; ++k)
+    for (const std::int32_t v : survivor.Corners)
     {
-      referenced[this->VertexCluster[this->Mesh.Triangles[3 * static_cast<std::int64_t>(t) + k]]] = 1;
+      referenced[this->VertexCluster[v]] = 1;
     }
   }
   std::vector<std::int32_t> pointOfCluster(this->ClusterPositions.size(), -1);
@@ -1175,9 +1194,9 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
   for (int iteration = 0; iteration < this->Options.ErrorIterations; ++iteration)
   {
     quadric = faceQuadric;
-    for (const std::int32_t t : survivors)
+    for (const Survivor& survivor : survivors)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * static_cast<std::int64_t>(t);
+      const std::array<std::int32_t, 3>& tri = survivor.Corners;
       for (int k = 0; k < 3; ++k)
       {
         const std::int32_t a = tri[k];
@@ -1252,11 +1271,10 @@ void Clusterer::Finalize(const std::vector<std::int32_t>& survivors, OctreeClust
   result.SourceTriangles.resize(survivors.size());
   for (std::size_t i = 0; i < survivors.size(); ++i)
   {
-    result.SourceTriangles[i] = this->Local.InputTriangle[survivors[i]];
+    result.SourceTriangles[i] = this->Local.InputTriangle[survivors[i].Triangle];
     for (int k = 0; k < 3; ++k)
     {
-      result.Triangles[3 * i + k] =
-        pointOf[this->Mesh.Triangles[3 * static_cast<std::int64_t>(survivors[i]) + k]];
+      result.Triangles[3 * i + k] = pointOf[survivors[i].Corners[k]];
     }
   }
   // Back to input ids.
@@ -1407,7 +1425,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   // corrected and refinement resumes, or the latest splits are undone, until the real count is
   // within 2 % of the target (at most 6 rounds).
   std::int64_t internalTarget = target;
-  std::vector<std::int32_t> survivors;
+  std::vector<Survivor> survivors;
   for (int round = 0;; ++round)
   {
     if (!this->Refine(internalTarget, this->Bound()))
