@@ -182,7 +182,9 @@ private:
   double Scale = 1.0;
   std::vector<Vec3> P;
   VertexTriangleAdjacency Adjacency;
-  std::vector<Plane> TrianglePlanes;
+  // Unit normal of each triangle, zero for a zero-area one; its plane passes through each of its
+  // corners, so walks around a vertex v measure distances to it from P[v].
+  std::vector<Vec3> TriangleNormals;
   std::vector<double> TriangleAreas; // until the vertex quadrics are made
   std::vector<Quadric> VertexQuadrics;
   std::vector<double> VertexWeights; // a third of the incident area
@@ -246,7 +248,7 @@ void Clusterer::PrepareGeometry()
     }
   });
 
-  this->TrianglePlanes.resize(m);
+  this->TriangleNormals.assign(m, Vec3::Zero());
   this->TriangleAreas.assign(m, 0.0);
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
@@ -256,8 +258,7 @@ void Clusterer::PrepareGeometry()
       const double length = cross.norm();
       if (length > 0.0)
       {
-        this->TrianglePlanes[t].Normal = cross / length;
-        this->TrianglePlanes[t].Offset = -this->TrianglePlanes[t].Normal.dot(this->P[tri[0]]);
+        this->TriangleNormals[t] = cross / length;
         this->TriangleAreas[t] = 0.5 * length;
       }
     }
@@ -276,7 +277,7 @@ Plane Clusterer::BoundaryPlane(
   Plane plane;
   weight = 0.0;
   const Vec3 edge = this->P[b] - this->P[a];
-  const Vec3 normal = edge.cross(this->TrianglePlanes[triangle].Normal);
+  const Vec3 normal = edge.cross(this->TriangleNormals[triangle]);
   const double length = normal.norm();
   if (length > 0.0)
   {
@@ -307,11 +308,11 @@ void Clusterer::PrepareQuadrics()
       Vec3 areaNormal = Vec3::Zero();
       for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
       {
-        const Plane& plane = this->TrianglePlanes[c->Triangle];
+        const Vec3& normal = this->TriangleNormals[c->Triangle];
         const double third = this->TriangleAreas[c->Triangle] / 3.0;
-        q += Quadric::FromPlane(plane.Normal, plane.Offset, third);
+        q += Quadric::FromPlane(normal, -normal.dot(this->P[v]), third);
         weight += third;
-        areaNormal += third * plane.Normal;
+        areaNormal += third * normal;
       }
       if (this->Options.BoundaryPlanes)
       {
@@ -471,9 +472,10 @@ double Clusterer::ClusterError(
   for (std::int32_t i = 0; i < count; ++i)
   {
     const std::int32_t v = members[i];
+    const Vec3 offset = x - this->P[v];
     for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      error = std::max(error, this->TrianglePlanes[c->Triangle].Distance(x));
+      error = std::max(error, std::abs(this->TriangleNormals[c->Triangle].dot(offset)));
     }
     if (this->BoundaryCorners.empty())
     {
@@ -649,11 +651,11 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
       // their own clusters' current points.
       if (flips && !scan.Flipped && (next < begin || next >= end) &&
         (previous < begin || previous >= end) && c1 != c2 &&
-        this->TrianglePlanes[corner->Triangle].Normal != Vec3::Zero())
+        this->TriangleNormals[corner->Triangle] != Vec3::Zero())
       {
         const Vec3& x = this->ClusterPositions[c0];
         const Vec3 normal = (this->ClusterPositions[c1] - x).cross(this->ClusterPositions[c2] - x);
-        scan.Flipped = normal.dot(this->TrianglePlanes[corner->Triangle].Normal) <= 0.0;
+        scan.Flipped = normal.dot(this->TriangleNormals[corner->Triangle]) <= 0.0;
       }
     }
   }
