@@ -89,9 +89,11 @@ public:
   bool Run(OctreeClusteringResult& result);
 
 private:
-  /// Per-thread scratch of EvaluateLeaf: the members of each cluster of a leaf (CSR).
+  /// Per-thread scratch of EvaluateLeaf, indexed by position in the leaf: the union-find of
+  /// its components and the members of each cluster (CSR).
   struct Scratch
   {
+    std::vector<std::int32_t> Parent, Root;
     std::vector<std::int32_t> Offsets, Fill, Members;
   };
 
@@ -116,11 +118,11 @@ private:
     const OctreeNode& cell = this->Nodes[this->ClusterNodes[cluster]];
     return this->InRange(v, cell.Begin, cell.End) && this->VertexCluster[v] == cluster;
   }
-  std::int32_t Find(std::int32_t i)
+  static std::int32_t Find(std::vector<std::int32_t>& parent, std::int32_t i)
   {
-    while (this->UnionParent[i] != i)
+    while (parent[i] != i)
     {
-      i = this->UnionParent[i] = this->UnionParent[this->UnionParent[i]];
+      i = parent[i] = parent[parent[i]];
     }
     return i;
   }
@@ -204,7 +206,7 @@ private:
   std::vector<std::int32_t> ClusterNodes;
 
   // Scratch indexed by Order position (leaves own disjoint ranges, so threads share them).
-  std::vector<std::int32_t> UnionParent, RootCluster, Reordered;
+  std::vector<std::int32_t> Reordered;
 
   // Every split, so that splits can be undone last-first: an overshooting one, or cheap late
   // ones that make room for a leaf of much larger error (see Refine).
@@ -523,10 +525,11 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
 
   // Clusters are the connected components of the leaf's vertices (edges inside the leaf
   // only); each triangle edge is visited once, from its first corner.
-  for (std::int32_t i = begin; i < end; ++i)
-  {
-    this->UnionParent[i] = i;
-  }
+  std::vector<std::int32_t>& parent = scratch.Parent;
+  std::vector<std::int32_t>& root = scratch.Root; // cluster of each position, in the leaf
+  parent.resize(end - begin);
+  root.resize(end - begin);
+  std::iota(parent.begin(), parent.end(), 0);
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
@@ -534,19 +537,19 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
     {
       if (this->InRange(c->Next, begin, end))
       {
-        const std::int32_t a = this->Find(i), b = this->Find(this->Position[c->Next]);
+        const std::int32_t a = Find(parent, i - begin), b = Find(parent, this->Position[c->Next] - begin);
         if (a != b)
         {
-          this->UnionParent[std::max(a, b)] = std::min(a, b);
+          parent[std::max(a, b)] = std::min(a, b);
         }
       }
     }
   }
   std::int32_t count = 0;
-  for (std::int32_t i = begin; i < end; ++i)
+  for (std::int32_t i = 0; i < end - begin; ++i)
   {
-    const std::int32_t root = this->Find(i);
-    this->RootCluster[i] = root == i ? count++ : this->RootCluster[root];
+    const std::int32_t top = Find(parent, i);
+    root[i] = top == i ? count++ : root[top];
   }
 
   cell.FirstCluster = firstCluster;
@@ -556,7 +559,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   scratch.Offsets.assign(count + 1, 0);
   for (std::int32_t i = begin; i < end; ++i)
   {
-    ++scratch.Offsets[this->RootCluster[i] + 1];
+    ++scratch.Offsets[root[i - begin] + 1];
   }
   std::partial_sum(scratch.Offsets.begin(), scratch.Offsets.end(), scratch.Offsets.begin());
   scratch.Fill.assign(scratch.Offsets.begin(), scratch.Offsets.end() - 1);
@@ -564,8 +567,8 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
-    scratch.Members[scratch.Fill[this->RootCluster[i]]++] = v;
-    this->VertexCluster[v] = firstCluster + this->RootCluster[i];
+    scratch.Members[scratch.Fill[root[i - begin]]++] = v;
+    this->VertexCluster[v] = firstCluster + root[i - begin];
   }
   key = 0.0;
   for (std::int32_t c = 0; c < count; ++c)
@@ -1324,8 +1327,6 @@ bool Clusterer::Run(OctreeClusteringResult& result)
     return true;
   }
   this->VertexCluster.assign(n, -1);
-  this->UnionParent.resize(this->Order.size());
-  this->RootCluster.resize(this->Order.size());
   this->Reordered.resize(this->Order.size());
 
   OctreeNode root;
