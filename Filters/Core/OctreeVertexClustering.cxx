@@ -1082,24 +1082,38 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
                                           : this->InputTriangle < o.InputTriangle;
     }
   };
-  std::vector<Key> keys;
-  for (std::int32_t v = 0; v < static_cast<std::int32_t>(this->Mesh.NumberOfPoints); ++v)
-  {
-    for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
+  // Gathered per chunk of vertices (in parallel), then joined in chunk order.
+  const std::int64_t n = this->Mesh.NumberOfPoints;
+  constexpr std::int64_t ChunkSize = 4096;
+  std::vector<std::vector<Key>> chunks((n + ChunkSize - 1) / ChunkSize);
+  this->Context.For(static_cast<std::int64_t>(chunks.size()), [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t chunk = b; chunk < e; ++chunk)
     {
-      if (corner->Next < v || corner->Previous < v)
+      const std::int32_t last = static_cast<std::int32_t>(std::min(n, (chunk + 1) * ChunkSize));
+      for (std::int32_t v = static_cast<std::int32_t>(chunk * ChunkSize); v < last; ++v)
       {
-        continue;
-      }
-      std::array<std::int32_t, 3> c = { this->VertexCluster[v], this->VertexCluster[corner->Next],
-        this->VertexCluster[corner->Previous] };
-      if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
-      {
-        std::sort(c.begin(), c.end());
-        keys.push_back({ c, this->Local.InputTriangle[corner->Triangle],
-          { corner->Triangle, { v, corner->Next, corner->Previous } } });
+        for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
+        {
+          if (corner->Next < v || corner->Previous < v)
+          {
+            continue;
+          }
+          std::array<std::int32_t, 3> c = { this->VertexCluster[v],
+            this->VertexCluster[corner->Next], this->VertexCluster[corner->Previous] };
+          if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+          {
+            std::sort(c.begin(), c.end());
+            chunks[chunk].push_back({ c, this->Local.InputTriangle[corner->Triangle],
+              { corner->Triangle, { v, corner->Next, corner->Previous } } });
+          }
+        }
       }
     }
+  }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
+  std::vector<Key> keys;
+  for (const std::vector<Key>& chunk : chunks)
+  {
+    keys.insert(keys.end(), chunk.begin(), chunk.end());
   }
   std::sort(keys.begin(), keys.end());
   std::vector<Survivor> survivors;
