@@ -1388,8 +1388,8 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   this->ClusterNodes.resize(this->Order.size());
   std::vector<double> keys(frontier.size());
   std::vector<std::uint8_t> splittable(frontier.size());
-  // Each leaf costs about its vertex count: the loop's work is the whole mesh.
-  const std::int64_t frontierWork = static_cast<std::int64_t>(this->Order.size());
+  // Each leaf costs about its corners: the loop's work is every corner of the mesh.
+  const std::int64_t frontierWork = static_cast<std::int64_t>(this->Adjacency.Corners.size());
   this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
     Scratch scratch;
     for (std::int64_t i = b; i < e; ++i)
