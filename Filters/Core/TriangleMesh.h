@@ -3,9 +3,11 @@
  * @file TriangleMesh.h
  * @brief Triangle-mesh views and adjacency in flat arrays, shared by all filters.
  *
- * Indices are 32-bit: the core serves meshes up to 2^31 − 1 points and triangles. The
- * vertex→triangle adjacency is a CSR (offsets + ids) built by counting, so it costs two flat
- * arrays and no per-vertex allocation.
+ * Indices are 32-bit: the core serves meshes up to 2^31 − 1 points and triangles. Algorithms
+ * take an input view, make a compact, spatially ordered copy of its usable part and walk its
+ * vertex→triangle adjacency: a CSR of corners (offsets + one {triangle, next, previous} per
+ * incident triangle) built by counting, so it costs two flat arrays and no per-vertex
+ * allocation.
  */
 #ifndef MeshSimplification_TriangleMesh_h
 #define MeshSimplification_TriangleMesh_h
