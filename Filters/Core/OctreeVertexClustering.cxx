@@ -230,16 +230,10 @@ void Clusterer::PrepareGeometry()
   const std::int64_t m = this->Mesh.NumberOfTriangles;
   this->Adjacency = std::move(this->Local.Adjacency);
 
-  // The compact mesh's points become the normalised coordinates.
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
-  Vec3 hi = -lo;
-  for (const Vec3& p : this->Local.Points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  this->Origin = 0.5 * (lo + hi);
-  const double diagonal = (hi - lo).norm();
+  // The compact mesh's points become the normalised coordinates: its box centred at the origin,
+  // with a diagonal of 1.
+  this->Origin = 0.5 * (this->Local.Lower + this->Local.Upper);
+  const double diagonal = (this->Local.Upper - this->Local.Lower).norm();
   this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   this->P = std::move(this->Local.Points);
   this->Mesh.Points = nullptr;
@@ -1328,13 +1322,6 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   this->Order.resize(n);
   std::iota(this->Order.begin(), this->Order.end(), 0);
   this->Position = this->Order;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
-  Vec3 hi = -lo;
-  for (std::int64_t v = 0; v < n; ++v)
-  {
-    lo = lo.cwiseMin(this->P[v]);
-    hi = hi.cwiseMax(this->P[v]);
-  }
   result.UsableInputTriangles = this->Mesh.NumberOfTriangles;
   if (this->Order.empty())
   {
@@ -1344,8 +1331,9 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   this->Reordered.resize(this->Order.size());
 
   OctreeNode root;
-  root.Center = 0.5 * (lo + hi);
-  root.Half = 0.5 * (hi - lo).maxCoeff() * (1.0 + 1e-9) + 1e-12;
+  // The bounding cube of the normalised points (a margin covers their rounding).
+  root.Center = Vec3::Zero();
+  root.Half = 0.5 * (this->Local.Upper - this->Local.Lower).maxCoeff() * this->Scale * (1.0 + 1e-9) + 1e-12;
   root.Begin = 0;
   root.End = static_cast<std::int32_t>(this->Order.size());
   root.Depth = 0;

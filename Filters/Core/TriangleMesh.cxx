@@ -103,6 +103,11 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   CompactMesh mesh;
+  if (used > 0)
+  {
+    mesh.Lower = lo;
+    mesh.Upper = hi;
+  }
   mesh.InputVertex.resize(used);
   for (std::int64_t v = 0; v < n; ++v)
   {

@@ -84,6 +84,7 @@ struct VertexTriangleAdjacency
 struct CompactMesh
 {
   std::vector<Eigen::Vector3d> Points;     // input coordinates
+  Eigen::Vector3d Lower = Eigen::Vector3d::Zero(), Upper = Eigen::Vector3d::Zero(); // their box
   std::vector<std::int32_t> Triangles;     // 3 per triangle
   std::vector<std::int32_t> InputVertex;   // vertex → input point
   std::vector<std::int32_t> InputTriangle; // triangle → input triangle
