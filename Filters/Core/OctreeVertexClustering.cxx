@@ -139,9 +139,9 @@ private:
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
   Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
     const std::int32_t* members, std::int32_t count) const;
-  double ClusterError(
-    const Vec3& x, const std::int32_t* members, std::int32_t count, const Vec3* ring) const;
-  double Coherence(const std::int32_t* members, std::int32_t count) const;
+  double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count,
+    bool folded, const Vec3* ring) const;
+  bool Folded(const std::int32_t* members, std::int32_t count) const;
   bool RingCentre(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
     Vec3& centre, double& radius) const;
   bool ProtrudingTip(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
@@ -365,10 +365,14 @@ Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const 
   return best;
 }
 
-double Clusterer::Coherence(const std::int32_t* members, std::int32_t count) const
+bool Clusterer::Folded(const std::int32_t* members, std::int32_t count) const
 {
-  // Length of the cluster's area-weighted mean unit normal: 1 for a flat patch, small where the
-  // normals spread over all directions (a tip, a thin tube, a folded sheet).
+  // A cluster of several vertices whose area-weighted mean unit normal is shorter than 1/2: its
+  // normals spread over more than a half-space (a tip, a thin tube, a folded sheet).
+  if (count < 2)
+  {
+    return false;
+  }
   double weight = 0.0;
   Vec3 areaNormal = Vec3::Zero();
   for (std::int32_t i = 0; i < count; ++i)
@@ -376,7 +380,7 @@ double Clusterer::Coherence(const std::int32_t* members, std::int32_t count) con
     weight += this->VertexWeights[members[i]];
     areaNormal += this->VertexAreaNormals[members[i]];
   }
-  return weight > 0.0 ? areaNormal.norm() / weight : 0.0;
+  return !(weight > 0.0) || areaNormal.norm() / weight < 0.5;
 }
 
 bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
@@ -423,11 +427,11 @@ bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, st
 bool Clusterer::ProtrudingTip(std::int32_t cluster, const std::int32_t* members,
   std::int32_t count, std::int32_t& tip, Vec3& ring) const
 {
-  // A folded cluster (|mean normal| < 1/2) sticks out when its member farthest from where it
-  // meets its neighbours (the ring) lies farther than the ring is wide: a leg, a finger.
+  // A folded cluster (see Folded; the caller has checked) sticks out when its member farthest
+  // from where it meets its neighbours (the ring) lies farther than the ring is wide: a leg, a
+  // finger.
   double radius = 0.0;
-  if (count < 2 || this->Coherence(members, count) >= 0.5 ||
-    !this->RingCentre(cluster, members, count, ring, radius))
+  if (!this->RingCentre(cluster, members, count, ring, radius))
   {
     return false;
   }
@@ -449,19 +453,20 @@ double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Octree
   // into a point inside it; its error then counts the distance of its members to the segment
   // from the ring's centre to the tip. Any other takes the quadric's point (eq. 3, or the
   // fallback).
+  const bool folded = this->Folded(members, count);
   std::int32_t tip;
   Vec3 ring;
-  if (this->ProtrudingTip(cluster, members, count, tip, ring))
+  if (folded && this->ProtrudingTip(cluster, members, count, tip, ring))
   {
     x = this->P[tip];
-    return this->ClusterError(x, members, count, &ring);
+    return this->ClusterError(x, members, count, true, &ring);
   }
   x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count);
-  return this->ClusterError(x, members, count, nullptr);
+  return this->ClusterError(x, members, count, folded, nullptr);
 }
 
-double Clusterer::ClusterError(
-  const Vec3& x, const std::int32_t* members, std::int32_t count, const Vec3* ring) const
+double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count,
+  bool folded, const Vec3* ring) const
 {
   // e1: distance of x to the planes of the related triangles and to the boundary planes.
   double error = 0.0;
@@ -494,7 +499,7 @@ double Clusterer::ClusterError(
   // Planes cannot see a cluster that folds a tip or a thin part onto one point (a finger
   // collapsed to its end keeps every plane distance small): for a folded cluster the distance
   // of its members to x - or to the segment from its ring to x - counts as well.
-  if (count > 1 && this->Coherence(members, count) < 0.5)
+  if (folded)
   {
     const Vec3 axis = ring ? Vec3(x - *ring) : Vec3::Zero();
     const double length2 = axis.squaredNorm();
@@ -1180,19 +1185,21 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
   // since); the others start from their refinement point.
   std::vector<Vec3> position(numberOfPoints), centre(numberOfPoints);
   std::vector<Quadric> faceQuadric(numberOfPoints);
-  std::vector<std::uint8_t> folded(numberOfPoints, 0); // protruding: keeps its tip
-  std::vector<Vec3> ring(numberOfPoints);             // where a protruding cluster meets the rest
+  std::vector<std::uint8_t> folded(numberOfPoints, 0);     // see Folded
+  std::vector<std::uint8_t> protruding(numberOfPoints, 0); // keeps its tip
+  std::vector<Vec3> ring(numberOfPoints);                  // where a protruding one meets the rest
   this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t p = b; p < e; ++p)
     {
       position[p] = this->ClusterPositions[clusterOfPoint[p]];
       centre[p] = this->ClusterCentre(members(p), size(p));
       faceQuadric[p] = this->ClusterQuadric(members(p), size(p));
+      folded[p] = this->Folded(members(p), size(p)) ? 1 : 0;
       std::int32_t tip;
-      if (this->ProtrudingTip(clusterOfPoint[p], members(p), size(p), tip, ring[p]))
+      if (folded[p] && this->ProtrudingTip(clusterOfPoint[p], members(p), size(p), tip, ring[p]))
       {
         position[p] = this->P[tip];
-        folded[p] = 1;
+        protruding[p] = 1;
       }
     }
   }, static_cast<std::int64_t>(clusterVertices.size()));
@@ -1237,13 +1244,13 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
       for (std::int64_t p = b; p < e; ++p)
       {
         next[p] = position[p];
-        if (size(p) == 1 || folded[p])
+        if (size(p) == 1 || protruding[p])
         {
           continue;
         }
         const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
         const Vec3 x = this->PlaceRepresentative(quadric[p], centre[p], cell, members(p), size(p));
-        if (!bounded || this->ClusterError(x, members(p), size(p), nullptr) <= bound)
+        if (!bounded || this->ClusterError(x, members(p), size(p), folded[p], nullptr) <= bound)
         {
           next[p] = x;
         }
@@ -1264,7 +1271,8 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
         result.Points[3 * p + k] = x[k];
       }
       result.ClusterErrors[p] =
-        this->ClusterError(position[p], members(p), size(p), folded[p] ? &ring[p] : nullptr) / this->Scale;
+        this->ClusterError(position[p], members(p), size(p), folded[p], protruding[p] ? &ring[p] : nullptr) /
+        this->Scale;
       double total = 0.0;
       for (std::int32_t i = 0; i < size(p); ++i)
       {
