@@ -168,24 +168,4 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
   return mesh;
 }
 
-void VertexTriangleAdjacency::Build(const TriangleMeshView& mesh)
-{
-  this->Offsets.assign(mesh.NumberOfPoints + 1, 0);
-  for (std::int64_t i = 0; i < 3 * mesh.NumberOfTriangles; ++i)
-  {
-    ++this->Offsets[mesh.Triangles[i] + 1];
-  }
-  std::partial_sum(this->Offsets.begin(), this->Offsets.end(), this->Offsets.begin());
-  this->Corners.resize(this->Offsets.back());
-  std::vector<std::int32_t> fill(this->Offsets.begin(), this->Offsets.end() - 1);
-  for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
-  {
-    const std::int32_t* tri = mesh.Triangles + 3 * t;
-    for (int k = 0; k < 3; ++k)
-    {
-      this->Corners[fill[tri[k]]++] = { static_cast<std::int32_t>(t), tri[(k + 1) % 3], tri[(k + 2) % 3] };
-    }
-  }
-}
-
 } // namespace meshsimp

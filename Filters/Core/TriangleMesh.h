@@ -60,13 +60,11 @@ struct Corner
 };
 
 /// Vertex → incident triangles with their other corners, as CSR arrays, so that walks around a
-/// vertex never go back to the triangle list.
+/// vertex never go back to the triangle list. MakeCompactMesh builds it.
 struct VertexTriangleAdjacency
 {
   std::vector<std::int32_t> Offsets; // NumberOfPoints + 1
   std::vector<Corner> Corners;       // per vertex, in the order its triangles were added
-  /// Links every triangle of mesh, in triangle order.
-  void Build(const TriangleMeshView& mesh);
   const Corner* Begin(std::int64_t v) const { return this->Corners.data() + this->Offsets[v]; }
   const Corner* End(std::int64_t v) const { return this->Corners.data() + this->Offsets[v + 1]; }
 };

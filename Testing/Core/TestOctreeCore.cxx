@@ -522,6 +522,17 @@ void CompactMeshIsSpatialAndMapsBack()
     CHECK(lowest >= previousLowest);
     previousLowest = lowest;
   }
+  // Each vertex's corners name its triangles, read in their orientation from the vertex.
+  for (std::int32_t v = 0; v < static_cast<std::int32_t>(compact.Points.size()); ++v)
+  {
+    for (const meshsimp::Corner* c = compact.Adjacency.Begin(v); c != compact.Adjacency.End(v); ++c)
+    {
+      const std::int32_t* corners = compact.Triangles.data() + 3 * c->Triangle;
+      const int k = corners[0] == v ? 0 : corners[1] == v ? 1 : 2;
+      CHECK(corners[k] == v && corners[(k + 1) % 3] == c->Next && corners[(k + 2) % 3] == c->Previous);
+    }
+  }
+  CHECK(compact.Adjacency.Corners.size() == 3 * compact.InputTriangle.size());
   // Spatial order: the first quarter of the vertices lies in one quadrant of the grid.
   for (std::size_t v = 0; v < 16; ++v)
   {
@@ -547,16 +558,15 @@ void BoundaryCornersMarkEachBorderEdgeOnce()
 {
   // An n × n grid has 4n border edges, each flagged at its start (outgoing) and at its end
   // (incoming); inner edges are not flagged.
-  const Mesh grid = Grid(6);
-  meshsimp::VertexTriangleAdjacency adjacency;
-  adjacency.Build(grid.View());
+  const meshsimp::CompactMesh grid = meshsimp::MakeCompactMesh(Grid(6).View());
+  const meshsimp::VertexTriangleAdjacency& adjacency = grid.Adjacency;
   std::vector<std::uint8_t> flags(adjacency.Corners.size());
   int outgoing = 0, incoming = 0;
   auto onBorder = [&](std::int32_t v) {
-    const Eigen::Vector3d p = grid.View().Point(v);
+    const Eigen::Vector3d& p = grid.Points[v];
     return p.x() == 0.0 || p.x() == 1.0 || p.y() == 0.0 || p.y() == 1.0;
   };
-  for (std::int64_t v = 0; v < grid.View().NumberOfPoints; ++v)
+  for (std::int64_t v = 0; v < static_cast<std::int64_t>(grid.Points.size()); ++v)
   {
     std::uint8_t* vertexFlags = flags.data() + adjacency.Offsets[v];
     meshsimp::MarkBoundaryCorners(adjacency, v, vertexFlags);
