@@ -149,6 +149,17 @@ private:
   double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
     const std::int32_t* members, std::int32_t count, Vec3& x) const;
   std::int32_t PartitionNode(std::int32_t node);
+  /// A leaf just made, to be clustered and scanned by ClusterLeaves.
+  struct NewLeaf
+  {
+    std::int32_t Node;
+    std::int32_t FirstCluster;         // for now: one id per vertex of its range, reserved
+    std::int32_t CountBegin, CountEnd; // ScanLeaf's count range
+    double Key = 0.0;
+    bool Splittable = false;
+    LeafScan Scan;
+  };
+  std::int32_t ClusterLeaves(std::vector<NewLeaf>& leaves, std::int32_t first);
   void SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<HeapEntry>& children);
   std::int32_t MoveClusters(std::int32_t node, std::int32_t first);
   void UndoLastSplit();
@@ -795,23 +806,52 @@ std::int32_t Clusterer::PartitionNode(std::int32_t node)
   return first;
 }
 
+std::int32_t Clusterer::ClusterLeaves(std::vector<NewLeaf>& leaves, std::int32_t first)
+{
+  // Clustered concurrently (each leaf writes only its range and its reserved ids), then packed
+  // from first in list order (the list holds increasing reserved ids, so ids only move down),
+  // then scanned concurrently once every leaf has its clusters. Returns the next free id.
+  std::int64_t work = 0;
+  for (const NewLeaf& leaf : leaves)
+  {
+    work += 8 * (this->Nodes[leaf.Node].End - this->Nodes[leaf.Node].Begin);
+  }
+  const std::int64_t count = static_cast<std::int64_t>(leaves.size());
+  this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
+    Scratch scratch;
+    for (std::int64_t k = b; k < e; ++k)
+    {
+      NewLeaf& leaf = leaves[k];
+      this->EvaluateLeaf(leaf.Node, leaf.FirstCluster, scratch, leaf.Key, leaf.Splittable);
+    }
+  }, work);
+  for (const NewLeaf& leaf : leaves)
+  {
+    first = this->MoveClusters(leaf.Node, first);
+  }
+  this->ClusterPositions.resize(first);
+  this->ClusterNodes.resize(first);
+  this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t k = b; k < e; ++k)
+    {
+      NewLeaf& leaf = leaves[k];
+      const bool forEntry = leaf.Splittable && leaf.Key != ForcedSplitKey;
+      leaf.Scan = this->ScanLeaf(leaf.Node, forEntry, leaf.CountBegin, leaf.CountEnd);
+    }
+  }, work);
+  return first;
+}
+
 void Clusterer::SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<HeapEntry>& children)
 {
   // The leaves are split as if one after the other, in their order: the same nodes, cluster
-  // ids, split log and triangle count. Their children are clustered concurrently (each writes
-  // only its own range and cluster ids), and scanned once all of them have their clusters.
-  struct Child
-  {
-    std::int32_t Node, Leaf;
-    double Key;
-    bool Splittable;
-    LeafScan Scan;
-  };
-  std::vector<Child> made;
-  std::vector<std::int32_t> leafBase(leaves.size());
+  // ids, split log and triangle count. A child's gain counts the triangles with two or more
+  // corners in its split leaf: they were degenerate before, the others keep their status, so
+  // the gains of all children add up.
+  std::vector<NewLeaf> made;
+  std::vector<std::size_t> firstChild(leaves.size());
   const std::size_t firstRecord = this->Splits.size();
   const std::int32_t batchBase = static_cast<std::int32_t>(this->ClusterPositions.size());
-  std::int64_t work = 0;
   for (std::size_t l = 0; l < leaves.size(); ++l)
   {
     const std::int32_t node = leaves[l].Node;
@@ -825,67 +865,37 @@ void Clusterer::SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<He
     this->Nodes[node].ClusterCount = 0; // no longer a leaf
     const std::int32_t first = this->PartitionNode(node);
     const std::int32_t last = static_cast<std::int32_t>(this->Nodes.size());
-    // One cluster id per vertex for now; packed below once the counts are known.
-    leafBase[l] = static_cast<std::int32_t>(this->ClusterPositions.size());
-    this->ClusterPositions.resize(leafBase[l] + (cell.End - cell.Begin));
-    this->ClusterNodes.resize(leafBase[l] + (cell.End - cell.Begin));
+    const std::int32_t base = static_cast<std::int32_t>(this->ClusterPositions.size());
+    this->ClusterPositions.resize(base + (cell.End - cell.Begin));
+    this->ClusterNodes.resize(base + (cell.End - cell.Begin));
+    firstChild[l] = made.size();
     for (std::int32_t child = first; child < last; ++child)
     {
-      made.push_back({ child, static_cast<std::int32_t>(l), 0.0, false, LeafScan() });
+      NewLeaf leaf;
+      leaf.Node = child;
+      leaf.FirstCluster = base + (this->Nodes[child].Begin - cell.Begin);
+      leaf.CountBegin = cell.Begin;
+      leaf.CountEnd = cell.End;
+      made.push_back(leaf);
     }
-    work += cell.End - cell.Begin;
   }
+  this->ClusterLeaves(made, batchBase);
 
-  auto parent = [&](const Child& child) -> const OctreeNode& {
-    return this->Nodes[leaves[child.Leaf].Node];
-  };
-  const std::int64_t count = static_cast<std::int64_t>(made.size());
-  this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
-    Scratch scratch;
-    for (std::int64_t k = b; k < e; ++k)
-    {
-      Child& child = made[k];
-      const std::int32_t firstCluster =
-        leafBase[child.Leaf] + (this->Nodes[child.Node].Begin - parent(child).Begin);
-      this->EvaluateLeaf(child.Node, firstCluster, scratch, child.Key, child.Splittable);
-    }
-  }, 8 * work);
-
-  // Pack the cluster ids in split order, as sequential splits would have numbered them.
-  std::int32_t next = batchBase;
-  for (std::size_t k = 0; k < made.size(); ++k)
-  {
-    if (k == 0 || made[k].Leaf != made[k - 1].Leaf)
-    {
-      this->Splits[firstRecord + made[k].Leaf].Clusters = next;
-    }
-    next = this->MoveClusters(made[k].Node, next);
-  }
-  this->ClusterPositions.resize(next);
-  this->ClusterNodes.resize(next);
-
-  // Heap entries and the splits' gains in triangles (those with two or more corners in a split
-  // leaf were degenerate before it, the others keep their status: gains add up).
-  this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t k = b; k < e; ++k)
-    {
-      Child& child = made[k];
-      const bool forEntry = child.Splittable && child.Key != ForcedSplitKey;
-      child.Scan = this->ScanLeaf(child.Node, forEntry, parent(child).Begin, parent(child).End);
-    }
-  }, 8 * work);
   children.clear();
-  for (std::size_t k = 0; k < made.size(); ++k)
+  for (std::size_t l = 0; l < leaves.size(); ++l)
   {
-    if (k == 0 || made[k].Leaf != made[k - 1].Leaf)
+    SplitRecord& record = this->Splits[firstRecord + l];
+    record.Clusters = this->Nodes[made[firstChild[l]].Node].FirstCluster;
+    record.SurvivingCount = this->SurvivingCount;
+    const std::size_t end = l + 1 < leaves.size() ? firstChild[l + 1] : made.size();
+    for (std::size_t k = firstChild[l]; k < end; ++k)
     {
-      this->Splits[firstRecord + made[k].Leaf].SurvivingCount = this->SurvivingCount;
-    }
-    this->SurvivingCount += made[k].Scan.Surviving;
-    if (made[k].Splittable)
-    {
-      children.push_back(
-        this->MakeEntry(made[k].Node, made[k].Key, made[k].Scan, this->Options.TargetTriangles >= 0));
+      this->SurvivingCount += made[k].Scan.Surviving;
+      if (made[k].Splittable)
+      {
+        children.push_back(this->MakeEntry(
+          made[k].Node, made[k].Key, made[k].Scan, this->Options.TargetTriangles >= 0));
+      }
     }
   }
 }
@@ -1377,61 +1387,33 @@ bool Clusterer::Run(OctreeClusteringResult& result)
     }
     frontier.swap(next);
   }
-  // The frontier's leaves are evaluated in parallel, each owning the cluster ids Begin..End − 1
-  // of its range for now, then packed in range order: ids, and the whole result, do not depend
-  // on the thread count.
-  this->ClusterPositions.resize(this->Order.size());
-  this->ClusterNodes.resize(this->Order.size());
-  std::vector<double> keys(frontier.size());
-  std::vector<std::uint8_t> splittable(frontier.size());
-  // Each leaf costs about its corners: the loop's work is every corner of the mesh.
-  const std::int64_t frontierWork = static_cast<std::int64_t>(this->Adjacency.Corners.size());
-  this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
-    Scratch scratch;
-    for (std::int64_t i = b; i < e; ++i)
-    {
-      bool canSplit = false;
-      this->EvaluateLeaf(frontier[i], this->Nodes[frontier[i]].Begin, scratch, keys[i], canSplit);
-      splittable[i] = canSplit ? 1 : 0;
-    }
-  }, frontierWork);
-  std::vector<std::int32_t> byRange(frontier);
-  std::sort(byRange.begin(), byRange.end(),
+  // The frontier's leaves, in range order, each reserving the cluster ids of its range for now:
+  // ids, and the whole result, do not depend on the thread count. Each triangle is counted once,
+  // from its first corner.
+  std::sort(frontier.begin(), frontier.end(),
     [this](std::int32_t a, std::int32_t b) { return this->Nodes[a].Begin < this->Nodes[b].Begin; });
-  std::int32_t clusters = 0;
-  for (const std::int32_t node : byRange)
-  {
-    clusters = this->MoveClusters(node, clusters);
-  }
-  this->ClusterPositions.resize(clusters);
-  this->ClusterNodes.resize(clusters);
-  this->ClusterPositions.shrink_to_fit(); // the room of one id per vertex serves later arrays
-  this->ClusterNodes.shrink_to_fit();
-
-  // Their heap entries, and the triangle count: each triangle once, from its first corner.
-  std::vector<HeapEntry> entries(frontier.size());
-  std::vector<std::int64_t> surviving(frontier.size());
   const std::int32_t all = static_cast<std::int32_t>(this->Order.size());
-  this->Context.For(static_cast<std::int64_t>(frontier.size()), [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t i = b; i < e; ++i)
-    {
-      const LeafScan scan =
-        this->ScanLeaf(frontier[i], splittable[i] && keys[i] != ForcedSplitKey, 0, all);
-      surviving[i] = scan.Surviving;
-      if (splittable[i])
-      {
-        entries[i] = this->MakeEntry(frontier[i], keys[i], scan, target >= 0);
-      }
-    }
-  }, frontierWork);
+  this->ClusterPositions.resize(all);
+  this->ClusterNodes.resize(all);
+  std::vector<NewLeaf> leaves(frontier.size());
   for (std::size_t i = 0; i < frontier.size(); ++i)
   {
-    if (splittable[i])
+    leaves[i].Node = frontier[i];
+    leaves[i].FirstCluster = this->Nodes[frontier[i]].Begin;
+    leaves[i].CountBegin = 0;
+    leaves[i].CountEnd = all;
+  }
+  this->ClusterLeaves(leaves, 0);
+  this->ClusterPositions.shrink_to_fit(); // the room of one id per vertex serves later arrays
+  this->ClusterNodes.shrink_to_fit();
+  for (const NewLeaf& leaf : leaves)
+  {
+    this->SurvivingCount += leaf.Scan.Surviving;
+    if (leaf.Splittable)
     {
-      this->Heap.push(entries[i]);
+      this->Heap.push(this->MakeEntry(leaf.Node, leaf.Key, leaf.Scan, target >= 0));
     }
   }
-  this->SurvivingCount = std::accumulate(surviving.begin(), surviving.end(), std::int64_t(0));
 
   // A count target is approached on the estimate (triangles with three distinct clusters).
   // Duplicates removed at the end make the real count lower, so the estimate's target is
