@@ -188,7 +188,6 @@ private:
   const OctreeClusteringOptions& Options;
   const ExecutionContext& Context;
   CompactMesh Local; // the usable input, renumbered; every id below is one of its ids
-  TriangleMeshView Mesh;
 
   // Geometry, normalised so that the bounding-box diagonal is 1 and tolerances are relative.
   Vec3 Origin = Vec3::Zero();
@@ -216,8 +215,7 @@ private:
   std::vector<Vec3> ClusterPositions;
   std::vector<std::int32_t> ClusterNodes;
 
-  // Scratch indexed by Order position (leaves own disjoint ranges, so threads share them).
-  std::vector<std::int32_t> Reordered;
+  std::vector<std::int32_t> Reordered; // PartitionNode's scratch, indexed by Order position
 
   // Every split, so that splits can be undone last-first: an overshooting one, or cheap late
   // ones that make room for a leaf of much larger error (see Refine).
@@ -236,9 +234,8 @@ private:
 void Clusterer::PrepareGeometry()
 {
   this->Local = MakeCompactMesh(this->Input, this->Context);
-  this->Mesh = this->Local.View();
-  const std::int64_t n = this->Mesh.NumberOfPoints;
-  const std::int64_t m = this->Mesh.NumberOfTriangles;
+  const std::int64_t n = static_cast<std::int64_t>(this->Local.Points.size());
+  const std::int64_t m = static_cast<std::int64_t>(this->Local.InputTriangle.size());
   this->Adjacency = std::move(this->Local.Adjacency);
 
   // The compact mesh's points become the normalised coordinates: its box centred at the origin,
@@ -247,7 +244,6 @@ void Clusterer::PrepareGeometry()
   const double diagonal = (this->Local.Upper - this->Local.Lower).norm();
   this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   this->P = std::move(this->Local.Points);
-  this->Mesh.Points = nullptr;
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
@@ -260,7 +256,7 @@ void Clusterer::PrepareGeometry()
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
-      const std::int32_t* tri = this->Mesh.Triangles + 3 * t;
+      const std::int32_t* tri = this->Local.Triangles.data() + 3 * t;
       const Vec3 cross = (this->P[tri[1]] - this->P[tri[0]]).cross(this->P[tri[2]] - this->P[tri[0]]);
       const double length = cross.norm();
       if (length > 0.0)
@@ -273,7 +269,6 @@ void Clusterer::PrepareGeometry()
   // From here on triangles are read at their corners in the adjacency; the list's memory
   // serves the arrays that follow.
   std::vector<std::int32_t>().swap(this->Local.Triangles);
-  this->Mesh.Triangles = nullptr;
 }
 
 Plane Clusterer::BoundaryPlane(
@@ -299,7 +294,7 @@ void Clusterer::PrepareQuadrics()
 {
   // Vertex quadrics, gathered per vertex (eq. 6): each triangle gives a third of its
   // area-weighted plane quadric to each corner, each boundary edge half its plane to each end.
-  const std::int64_t n = this->Mesh.NumberOfPoints;
+  const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   this->VertexQuadrics.resize(n);
   this->VertexWeights.resize(n);
   this->VertexAreaNormals.resize(n);
@@ -1092,7 +1087,7 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
     }
   };
   // Gathered per chunk of vertices (in parallel), then joined in chunk order.
-  const std::int64_t n = this->Mesh.NumberOfPoints;
+  const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   constexpr std::int64_t ChunkSize = 4096;
   std::vector<std::vector<Key>> chunks((n + ChunkSize - 1) / ChunkSize);
   this->Context.For(static_cast<std::int64_t>(chunks.size()), [&](std::int64_t b, std::int64_t e) {
@@ -1141,7 +1136,7 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
 
 void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result)
 {
-  const std::int64_t n = this->Mesh.NumberOfPoints;
+  const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   // Output points: clusters with a surviving triangle, in the order of their first vertex.
   std::vector<std::uint8_t> referenced(this->ClusterPositions.size(), 0);
   for (const Survivor& survivor : survivors)
@@ -1336,11 +1331,11 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   }
 
   // Every vertex of the compact mesh is used; its order is already spatial.
-  const std::int64_t n = this->Mesh.NumberOfPoints;
+  const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   this->Order.resize(n);
   std::iota(this->Order.begin(), this->Order.end(), 0);
   this->Position = this->Order;
-  result.UsableInputTriangles = this->Mesh.NumberOfTriangles;
+  result.UsableInputTriangles = static_cast<std::int64_t>(this->Local.InputTriangle.size());
   if (this->Order.empty())
   {
     return true;

@@ -87,13 +87,6 @@ struct CompactMesh
   std::vector<std::int32_t> InputVertex;   // vertex → input point
   std::vector<std::int32_t> InputTriangle; // triangle → input triangle
   VertexTriangleAdjacency Adjacency;
-  TriangleMeshView View() const
-  {
-    static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "points must be contiguous");
-    return { this->Points.empty() ? nullptr : this->Points.data()->data(),
-      static_cast<std::int64_t>(this->InputVertex.size()),
-      this->Triangles.data(), static_cast<std::int64_t>(this->InputTriangle.size()) };
-  }
 };
 
 CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});
