@@ -57,10 +57,6 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
       }
       out.View.Points = out.PointCopy.data();
     }
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      out.NumberOfNonFiniteCoordinates += out.View.Point(i).allFinite() ? 0 : 1;
-    }
   }
   out.View.NumberOfPoints = numberOfPoints;
   out.NumberOfVerts = input->GetNumberOfVerts();

@@ -35,7 +35,7 @@ struct TriangleInput
   std::vector<std::int32_t> Triangles; // filled only when cells had to be triangulated
   std::vector<vtkIdType> SourceCells;  // input cell of each triangle, with Triangles
   vtkIdType FirstCell = 0;             // input cell of triangle 0 when viewed in place
-  vtkIdType NumberOfVerts = 0, NumberOfLines = 0, NumberOfNonFiniteCoordinates = 0;
+  vtkIdType NumberOfVerts = 0, NumberOfLines = 0;
   meshsimp::TriangleMeshView View;
   vtkIdType SourceCell(std::int64_t triangle) const
   {

@@ -41,10 +41,6 @@ int vtkOctreeVertexClustering::RequestData(
                     << triangles.NumberOfLines
                     << " line cells: only triangles, polygons and strips are simplified.");
   }
-  if (triangles.NumberOfNonFiniteCoordinates > 0)
-  {
-    vtkWarningMacro(<< "Ignoring the triangles of points with NaN or infinite coordinates.");
-  }
   if (triangles.View.NumberOfTriangles == 0)
   {
     vtkDebugMacro(<< "No triangles to simplify.");
@@ -76,8 +72,14 @@ int vtkOctreeVertexClustering::RequestData(
   options.PreventFlips = this->PreventFlips;
 
   meshsimp::OctreeClusteringResult result;
-  if (!meshsimp::OctreeVertexClustering(triangles.View, options, result,
-        vtkMeshSimplificationHelpers::MakeExecutionContext(this, this->NumberOfThreads)))
+  const bool finished = meshsimp::OctreeVertexClustering(triangles.View, options, result,
+    vtkMeshSimplificationHelpers::MakeExecutionContext(this, this->NumberOfThreads));
+  if (result.NonFinitePoints > 0)
+  {
+    vtkWarningMacro(<< "Ignoring the triangles of " << result.NonFinitePoints
+                    << " points with NaN or infinite coordinates.");
+  }
+  if (!finished)
   {
     vtkWarningMacro(<< "Aborted: the output is empty.");
     return 1;

@@ -1336,6 +1336,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   std::iota(this->Order.begin(), this->Order.end(), 0);
   this->Position = this->Order;
   result.UsableInputTriangles = static_cast<std::int64_t>(this->Local.InputTriangle.size());
+  result.NonFinitePoints = this->Local.NonFinitePoints;
   if (this->Order.empty())
   {
     return true;

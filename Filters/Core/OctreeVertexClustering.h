@@ -86,6 +86,8 @@ struct OctreeClusteringResult
   std::vector<std::int32_t> VertexToPoint;
   double MaximumClusterError = 0.0;
   std::int64_t UsableInputTriangles = 0;
+  /// Input points with a NaN or infinite coordinate (their triangles are skipped).
+  std::int64_t NonFinitePoints = 0;
   std::int64_t NumberOfLeaves = 0;
   int Depth = 0;
   bool Aborted = false;

@@ -103,6 +103,7 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   CompactMesh mesh;
+  mesh.NonFinitePoints = std::count(finite.begin(), finite.end(), std::uint8_t(0));
   if (used > 0)
   {
     mesh.Lower = lo;

@@ -86,6 +86,7 @@ struct CompactMesh
   std::vector<std::int32_t> Triangles;     // 3 per triangle
   std::vector<std::int32_t> InputVertex;   // vertex → input point
   std::vector<std::int32_t> InputTriangle; // triangle → input triangle
+  std::int64_t NonFinitePoints = 0;        // input points with a NaN or infinite coordinate
   VertexTriangleAdjacency Adjacency;
 };
 

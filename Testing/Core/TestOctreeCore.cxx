@@ -483,6 +483,7 @@ void InvalidTrianglesAreSkipped()
   const std::vector<double> pointsBefore = mesh.Points;
   OctreeClusteringResult result = Simplify(mesh, Target(8));
   CHECK(result.UsableInputTriangles == 32);
+  CHECK(result.NonFinitePoints == 1);
   CHECK(!result.Triangles.empty());
   for (const double c : result.Points)
   {
