@@ -11,7 +11,7 @@
 #include "vtkSphereSource.h"
 #include "vtkTestErrorObserver.h"
 
-#include "TestHelpers.h"
+#include "TestVTKHelpers.h"
 
 #include <cmath>
 #include <iostream>
@@ -43,19 +43,7 @@ Run Simplify(vtkPolyData* input, double reduction = 0.5)
   run.Output = filter->GetOutput();
   run.Warned = observer->GetWarning();
   run.Failed = observer->GetError();
-  // The input is never modified.
-  CHECK(input->GetNumberOfPoints() == copy->GetNumberOfPoints());
-  CHECK(input->GetNumberOfCells() == copy->GetNumberOfCells());
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    double a[3], b[3];
-    input->GetPoint(i, a);
-    copy->GetPoint(i, b);
-    for (int k = 0; k < 3; ++k)
-    {
-      CHECK(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k])));
-    }
-  }
+  meshsimp_test::CheckInputUntouched(input, copy);
   // Whatever happened, the output is well formed.
   for (vtkIdType i = 0; i < run.Output->GetNumberOfPoints(); ++i)
   {
