@@ -4,6 +4,7 @@
 #include "OctreeVertexClustering.h"
 #include "Quadric.h"
 #include "TestHelpers.h"
+#include "TestMeshes.h"
 
 #include <Eigen/Geometry>
 
@@ -20,82 +21,6 @@ using meshsimp::TriangleMeshView;
 
 namespace
 {
-struct Mesh
-{
-  std::vector<double> Points;
-  std::vector<std::int32_t> Triangles;
-  TriangleMeshView View() const
-  {
-    return { this->Points.data(), static_cast<std::int64_t>(this->Points.size() / 3),
-      this->Triangles.data(), static_cast<std::int64_t>(this->Triangles.size() / 3) };
-  }
-};
-
-/// An n × n grid of quads on z = 0 over [0, 1]², two triangles each.
-Mesh Grid(int n)
-{
-  Mesh mesh;
-  for (int j = 0; j <= n; ++j)
-  {
-    for (int i = 0; i <= n; ++i)
-    {
-      mesh.Points.insert(mesh.Points.end(), { double(i) / n, double(j) / n, 0.0 });
-    }
-  }
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-      mesh.Triangles.insert(mesh.Triangles.end(), { a, b, d, a, d, c });
-    }
-  }
-  return mesh;
-}
-
-/// The unit cube [0, 1]³ with each face an n × n grid, outward normals, shared points welded.
-Mesh Cube(int n)
-{
-  Mesh mesh;
-  std::vector<std::array<int, 3>> keys;
-  auto point = [&](const Eigen::Vector3d& p) {
-    const std::array<int, 3> key = { int(std::lround(p.x() * n)), int(std::lround(p.y() * n)),
-      int(std::lround(p.z() * n)) };
-    const auto found = std::find(keys.begin(), keys.end(), key);
-    if (found != keys.end())
-    {
-      return static_cast<std::int32_t>(found - keys.begin());
-    }
-    keys.push_back(key);
-    mesh.Points.insert(mesh.Points.end(), { p.x(), p.y(), p.z() });
-    return static_cast<std::int32_t>(keys.size() - 1);
-  };
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    for (int side = 0; side < 2; ++side)
-    {
-      const Eigen::Vector3d normal = Eigen::Vector3d::Unit(axis) * (side ? 1.0 : -1.0);
-      const Eigen::Vector3d u = Eigen::Vector3d::Unit((axis + 1) % 3);
-      const Eigen::Vector3d v = Eigen::Vector3d::Unit((axis + 2) % 3);
-      const Eigen::Vector3d origin = Eigen::Vector3d::Unit(axis) * side;
-      for (int j = 0; j < n; ++j)
-      {
-        for (int i = 0; i < n; ++i)
-        {
-          auto at = [&](int a, int b) { return point(origin + u * (double(a) / n) + v * (double(b) / n)); };
-          std::int32_t c[4] = { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) };
-          if (u.cross(v).dot(normal) < 0)
-          {
-            std::swap(c[1], c[3]);
-          }
-          mesh.Triangles.insert(mesh.Triangles.end(), { c[0], c[1], c[2], c[0], c[2], c[3] });
-        }
-      }
-    }
-  }
-  return mesh;
-}
-
 OctreeClusteringResult Simplify(const Mesh& mesh, OctreeClusteringOptions options)
 {
   OctreeClusteringResult result;

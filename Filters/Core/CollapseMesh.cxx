@@ -1,0 +1,585 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "CollapseMesh.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshsimp
+{
+
+namespace
+{
+/// The class of v from its corners {triangle, next, previous}: one closed fan, one open fan, or
+/// anything else.
+VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanFirst,
+  std::int32_t& fanLast)
+{
+  const std::int32_t degree = static_cast<std::int32_t>(last - first);
+  std::int32_t opening = -1, closing = -1; // corner with no predecessor / no successor
+  for (std::int32_t i = 0; i < degree; ++i)
+  {
+    int successors = 0, predecessors = 0;
+    for (std::int32_t j = 0; j < degree; ++j)
+    {
+      if (first[j].Next == first[i].Next && j != i)
+      {
+        return VertexClass::NonManifold; // an edge used twice in one orientation
+      }
+      successors += first[j].Previous == first[i].Next ? 1 : 0;
+      predecessors += first[j].Next == first[i].Previous ? 1 : 0;
+    }
+    if (successors > 1 || predecessors > 1)
+    {
+      return VertexClass::NonManifold;
+    }
+    if (predecessors == 0)
+    {
+      if (opening >= 0)
+      {
+        return VertexClass::NonManifold; // two open fans
+      }
+      opening = i;
+    }
+    if (successors == 0)
+    {
+      if (closing >= 0)
+      {
+        return VertexClass::NonManifold;
+      }
+      closing = i;
+    }
+  }
+  if ((opening < 0) != (closing < 0))
+  {
+    return VertexClass::NonManifold;
+  }
+  // Walk the fan from its opening (or any corner) and count the corners it reaches.
+  std::int32_t current = opening >= 0 ? opening : 0, visited = 1;
+  for (;;)
+  {
+    std::int32_t following = -1;
+    for (std::int32_t j = 0; j < degree && following < 0; ++j)
+    {
+      following = first[j].Previous == first[current].Next ? j : -1;
+    }
+    if (following < 0 || following == (opening >= 0 ? opening : 0) || visited > degree)
+    {
+      break;
+    }
+    current = following;
+    ++visited;
+  }
+  if (visited != degree)
+  {
+    return VertexClass::NonManifold; // several fans
+  }
+  fanFirst = opening;
+  fanLast = closing;
+  return opening >= 0 ? VertexClass::Boundary : VertexClass::Interior;
+}
+
+bool Contains(const std::int32_t* tri, std::int32_t v)
+{
+  return tri[0] == v || tri[1] == v || tri[2] == v;
+}
+} // namespace
+
+void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees)
+{
+  this->Points = std::move(mesh.Points);
+  this->Triangles = std::move(mesh.Triangles);
+  const std::int32_t n = this->NumberOfPoints();
+  const std::int32_t m = static_cast<std::int32_t>(this->Triangles.size() / 3);
+  this->Alive.assign(m, 1);
+  this->AliveCount = m;
+  this->Classes.assign(n, VertexClass::Interior);
+  this->Locked.assign(n, 0);
+  this->Start.resize(n);
+  this->Count.resize(n);
+  const VertexTriangleAdjacency& adjacency = mesh.Adjacency;
+  this->Refs.resize(adjacency.Corners.size());
+  const double cosCorner = std::cos(cornerAngleDegrees * 3.14159265358979323846 / 180.0);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    this->Start[v] = adjacency.Offsets[v];
+    this->Count[v] = adjacency.Offsets[v + 1] - adjacency.Offsets[v];
+    for (std::int32_t i = adjacency.Offsets[v]; i < adjacency.Offsets[v + 1]; ++i)
+    {
+      this->Refs[i] = adjacency.Corners[i].Triangle;
+    }
+    std::int32_t opening = -1, closing = -1;
+    VertexClass c = Classify(adjacency.Begin(v), adjacency.End(v), opening, closing);
+    if (c == VertexClass::Boundary)
+    {
+      // The boundary runs into v along the closing corner's far edge and leaves along the
+      // opening corner's: (Previous of opening) -> v -> (Next of closing), by orientation.
+      const Eigen::Vector3d in = this->Points[v] - this->Points[adjacency.Begin(v)[opening].Previous];
+      const Eigen::Vector3d out = this->Points[adjacency.Begin(v)[closing].Next] - this->Points[v];
+      const double lengths = in.norm() * out.norm();
+      if (lengths > 0.0 && in.dot(out) < cosCorner * lengths)
+      {
+        c = VertexClass::Corner;
+      }
+    }
+    this->Classes[v] = c;
+    this->Locked[v] = c == VertexClass::NonManifold ? 1 : 0;
+  }
+  this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
+  this->Marks.assign(n, 0);
+  this->Stamp = 0;
+  this->History.clear();
+  this->Changes.clear();
+  this->RemovedTriangles.clear();
+  mesh = CompactMesh();
+}
+
+Eigen::Vector3d CollapseMesh::Normal(std::int32_t t) const
+{
+  const std::int32_t* tri = this->Triangle(t);
+  const Eigen::Vector3d cross =
+    (this->Points[tri[1]] - this->Points[tri[0]]).cross(this->Points[tri[2]] - this->Points[tri[0]]);
+  const double length = cross.norm();
+  return length > 0.0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
+}
+
+double CollapseMesh::Area(std::int32_t t) const
+{
+  const std::int32_t* tri = this->Triangle(t);
+  return 0.5 *
+    (this->Points[tri[1]] - this->Points[tri[0]]).cross(this->Points[tri[2]] - this->Points[tri[0]]).norm();
+}
+
+void CollapseMesh::Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const
+{
+  out.clear();
+  const std::uint32_t mark = ++this->Stamp;
+  this->Marks[v] = mark;
+  this->ForEachTriangle(v, [&](std::int32_t t) {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::int32_t w = this->Triangles[3 * t + k];
+      if (this->Marks[w] != mark)
+      {
+        this->Marks[w] = mark;
+        out.push_back(w);
+      }
+    }
+  });
+}
+
+std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) const
+{
+  std::vector<std::int32_t> list;
+  this->ForEachTriangle(v, [&](std::int32_t t) { list.push_back(t); });
+  std::sort(list.begin(), list.end());
+  return list;
+}
+
+bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int32_t next) const
+{
+  if (this->Stamp > 0xFFFFFF00u)
+  {
+    std::fill(this->Marks.begin(), this->Marks.end(), 0u);
+    this->Stamp = 0;
+  }
+  // The state is the mesh after merging `merged` into one vertex m (triangles with two of them
+  // are gone); the question is whether the edge (m, next) may collapse. Marks: inSet = a merged
+  // vertex, neighbour = a neighbour of m, common = a neighbour of both m and next.
+  this->Stamp += 3;
+  const std::uint32_t inSet = this->Stamp - 2, neighbour = this->Stamp - 1, common = this->Stamp;
+  auto mergedCount = [&](const std::int32_t* tri) {
+    return (this->Marks[tri[0]] == inSet) + (this->Marks[tri[1]] == inSet) + (this->Marks[tri[2]] == inSet);
+  };
+  bool boundary = false;
+  for (int i = 0; i < count; ++i)
+  {
+    this->Marks[merged[i]] = inSet;
+    boundary = boundary || this->OnBoundary(merged[i]);
+  }
+  std::int32_t valenceM = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    this->ForEachTriangle(merged[i], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      if (mergedCount(tri) != 1)
+      {
+        return;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        if (this->Marks[tri[k]] != inSet && this->Marks[tri[k]] != neighbour)
+        {
+          this->Marks[tri[k]] = neighbour;
+          ++valenceM;
+        }
+      }
+    });
+  }
+  // The far corners of the triangles (m, next, w), and the common neighbours.
+  std::int32_t opposite[2] = { -1, -1 };
+  int oppositeCount = 0, commonCount = 0, valenceNext = 0;
+  bool ok = true;
+  this->ForEachTriangle(next, [&](std::int32_t t) {
+    const std::int32_t* tri = this->Triangle(t);
+    const int inside = mergedCount(tri);
+    if (inside >= 2)
+    {
+      return; // gone with the earlier merge
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::int32_t w = tri[k];
+      if (w == next || this->Marks[w] == inSet)
+      {
+        continue;
+      }
+      if (inside == 1)
+      {
+        if (oppositeCount == 2)
+        {
+          ok = false; // an edge of three or more triangles
+        }
+        else
+        {
+          opposite[oppositeCount++] = w;
+        }
+      }
+      if (this->Marks[w] == neighbour)
+      {
+        this->Marks[w] = common;
+        ++commonCount;
+        ++valenceNext;
+      }
+      else if (this->Marks[w] != common && this->Marks[w] != common + 1)
+      {
+        // Not a neighbour of m: count it once by marking it as one of next's own.
+        this->Marks[w] = common + 1;
+        ++valenceNext;
+      }
+    }
+  });
+  this->Stamp += 1; // common + 1 was used as a mark
+  if (!ok || oppositeCount == 0 || (oppositeCount == 2 && opposite[0] == opposite[1]))
+  {
+    return false;
+  }
+  // Link condition: the common neighbours are exactly the far corners.
+  if (commonCount != oppositeCount)
+  {
+    return false;
+  }
+  for (int i = 0; i < oppositeCount; ++i)
+  {
+    if (this->Marks[opposite[i]] != common)
+    {
+      return false;
+    }
+  }
+  // Two boundary vertices joined across the interior would pinch the surface.
+  const bool nextOnBoundary = this->OnBoundary(next);
+  if (boundary && nextOnBoundary && oppositeCount == 2)
+  {
+    return false;
+  }
+  // Nobody falls below three neighbours (two on the boundary): the merged vertex has
+  // valence(m) - 1 + valence(next) - 1 - commonCount neighbours; each far corner loses one.
+  const bool mergedOnBoundary = boundary || nextOnBoundary;
+  const std::int32_t valenceAfter = (valenceM - 1) + (valenceNext - 0) - commonCount;
+  if (valenceAfter < (mergedOnBoundary ? 2 : 3))
+  {
+    return false;
+  }
+  for (int i = 0; i < oppositeCount; ++i)
+  {
+    std::vector<std::int32_t>& around = this->Scratch;
+    this->Neighbours(opposite[i], around);
+    const std::int32_t valence = static_cast<std::int32_t>(around.size());
+    if (valence - 1 < (this->OnBoundary(opposite[i]) ? 2 : 3))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
+{
+  const Eigen::Vector3d& x = plan.Position;
+  for (int i = 0; i < plan.Count; ++i)
+  {
+    const std::int32_t s = plan.Vertices[i];
+    bool ok = true;
+    this->ForEachTriangle(s, [&](std::int32_t t) {
+      if (!ok)
+      {
+        return;
+      }
+      const std::int32_t* tri = this->Triangle(t);
+      int inside = 0;
+      for (int j = 0; j < plan.Count; ++j)
+      {
+        inside += Contains(tri, plan.Vertices[j]) ? 1 : 0;
+      }
+      if (inside > 1)
+      {
+        return; // removed by the collapse
+      }
+      const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
+      const Eigen::Vector3d& p = this->Points[tri[(k + 1) % 3]];
+      const Eigen::Vector3d& q = this->Points[tri[(k + 2) % 3]];
+      const Eigen::Vector3d& old = this->Points[s];
+      const Eigen::Vector3d edge = q - p;
+      const Eigen::Vector3d normal = (p - old).cross(q - old);
+      // Paper 001 §5.3: the plane through the opposite edge, perpendicular to the triangle.
+      const Eigen::Vector3d inward = normal.cross(edge);
+      const double sideOld = inward.dot(old - p);
+      const double sideNew = inward.dot(x - p);
+      if (!(sideOld > 0.0 && sideNew > 0.0) && !(sideOld < 0.0 && sideNew < 0.0))
+      {
+        ok = false;
+        return;
+      }
+      // Degenerate: a new triangle of (almost) zero area. (A turned-over one has failed the
+      // plane-side test already: both measure which side of the edge x is on.)
+      const Eigen::Vector3d newNormal = (p - x).cross(q - x);
+      ok = newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm();
+    });
+    if (!ok)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool CollapseMesh::IsLegal(const CollapsePlan& plan) const
+{
+  if (plan.Count < 2 || plan.Count > 3 || !plan.Position.allFinite())
+  {
+    return false;
+  }
+  const std::int32_t* v = plan.Vertices;
+  if (v[0] == v[1] || (plan.Count == 3 && (v[2] == v[0] || v[2] == v[1])))
+  {
+    return false;
+  }
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    if (this->Locked[v[i]])
+    {
+      return false;
+    }
+  }
+  if (this->Locked[v[0]] && plan.Position != this->Points[v[0]])
+  {
+    return false;
+  }
+  if (!this->LinkCondition(v, 1, v[1]) || (plan.Count == 3 && !this->LinkCondition(v, 2, v[2])))
+  {
+    return false;
+  }
+  return this->KeepsTrianglesValid(plan);
+}
+
+void CollapseMesh::SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles)
+{
+  const std::int32_t size = static_cast<std::int32_t>(triangles.size());
+  this->LiveRefs += size - this->Count[v];
+  if (size > this->Count[v])
+  {
+    this->Start[v] = static_cast<std::int32_t>(this->Refs.size());
+    this->Refs.insert(this->Refs.end(), triangles.begin(), triangles.end());
+  }
+  else
+  {
+    std::copy(triangles.begin(), triangles.end(), this->Refs.begin() + this->Start[v]);
+  }
+  this->Count[v] = size;
+}
+
+void CollapseMesh::CompactRefs()
+{
+  std::vector<std::int32_t> refs;
+  refs.reserve(static_cast<std::size_t>(this->LiveRefs));
+  for (std::int32_t v = 0; v < this->NumberOfPoints(); ++v)
+  {
+    const std::int32_t start = static_cast<std::int32_t>(refs.size());
+    this->ForEachTriangle(v, [&](std::int32_t t) { refs.push_back(t); });
+    this->Start[v] = start;
+    this->Count[v] = static_cast<std::int32_t>(refs.size()) - start;
+  }
+  this->Refs = std::move(refs);
+  this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
+}
+
+int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
+{
+  CollapseRecord record;
+  const std::int32_t kept = plan.Vertices[0];
+  record.Kept = kept;
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    record.Removed[i - 1] = plan.Vertices[i];
+  }
+  std::copy(plan.Weights, plan.Weights + 3, record.Weights);
+  record.KeptPosition = this->Points[kept];
+  record.KeptClass = this->Classes[kept];
+  record.FirstChange = static_cast<std::int32_t>(this->Changes.size());
+  record.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
+
+  std::vector<std::int32_t>& span = this->Scratch;
+  span.clear();
+  int removed = 0;
+  for (int i = 0; i < plan.Count; ++i)
+  {
+    const std::int32_t s = plan.Vertices[i];
+    this->ForEachTriangle(s, [&](std::int32_t t) {
+      std::int32_t* tri = this->Triangles.data() + 3 * t;
+      int inside = 0;
+      for (int j = 0; j < plan.Count; ++j)
+      {
+        inside += Contains(tri, plan.Vertices[j]) ? 1 : 0;
+      }
+      if (inside > 1)
+      {
+        this->Alive[t] = 0;
+        ++removed;
+        if (keepUndo)
+        {
+          this->RemovedTriangles.push_back(t);
+        }
+        return;
+      }
+      if (s != kept)
+      {
+        const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
+        if (keepUndo)
+        {
+          this->Changes.push_back(3 * t + k);
+          this->Changes.push_back(s);
+        }
+        tri[k] = kept;
+      }
+      span.push_back(t);
+    });
+  }
+  this->AliveCount -= removed;
+  this->Points[kept] = plan.Position;
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    const VertexClass c = this->Classes[plan.Vertices[i]];
+    if (c == VertexClass::Corner || (c == VertexClass::Boundary && this->Classes[kept] == VertexClass::Interior))
+    {
+      this->Classes[kept] = c;
+    }
+    this->LiveRefs -= this->Count[plan.Vertices[i]];
+    this->Count[plan.Vertices[i]] = 0;
+  }
+  this->SetSpan(kept, span);
+  record.ChangeCount = static_cast<std::int32_t>(this->Changes.size()) / 2 - record.FirstChange / 2;
+  record.RemovedTriangleCount =
+    static_cast<std::int32_t>(this->RemovedTriangles.size()) - record.FirstRemovedTriangle;
+  if (!keepUndo)
+  {
+    record.FirstChange = record.ChangeCount = 0;
+    record.FirstRemovedTriangle = record.RemovedTriangleCount = 0;
+  }
+  this->History.push_back(record);
+  if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
+  {
+    this->CompactRefs();
+  }
+  return removed;
+}
+
+void CollapseMesh::Undo()
+{
+  if (this->History.empty())
+  {
+    return;
+  }
+  const CollapseRecord record = this->History.back();
+  this->History.pop_back();
+  const std::int32_t kept = record.Kept;
+  // Candidates for the restored spans: the kept vertex's triangles and the revived ones.
+  std::vector<std::int32_t> candidates;
+  this->ForEachTriangle(kept, [&](std::int32_t t) { candidates.push_back(t); });
+  for (std::int32_t i = 0; i < record.RemovedTriangleCount; ++i)
+  {
+    const std::int32_t t = this->RemovedTriangles[record.FirstRemovedTriangle + i];
+    this->Alive[t] = 1;
+    candidates.push_back(t);
+  }
+  this->AliveCount += record.RemovedTriangleCount;
+  for (std::int32_t i = record.ChangeCount - 1; i >= 0; --i)
+  {
+    const std::int32_t* change = this->Changes.data() + record.FirstChange + 2 * i;
+    this->Triangles[change[0]] = change[1];
+  }
+  this->Points[kept] = record.KeptPosition;
+  this->Classes[kept] = record.KeptClass;
+
+  std::vector<std::int32_t> span;
+  for (const std::int32_t v : { kept, record.Removed[0], record.Removed[1] })
+  {
+    if (v < 0)
+    {
+      continue;
+    }
+    span.clear();
+    for (const std::int32_t t : candidates)
+    {
+      if (Contains(this->Triangle(t), v))
+      {
+        span.push_back(t);
+      }
+    }
+    this->SetSpan(v, span);
+  }
+  // The revived triangles' other corners may have lost them in a compaction.
+  for (std::int32_t i = 0; i < record.RemovedTriangleCount; ++i)
+  {
+    const std::int32_t t = this->RemovedTriangles[record.FirstRemovedTriangle + i];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::int32_t w = this->Triangles[3 * t + k];
+      if (w == kept || w == record.Removed[0] || w == record.Removed[1])
+      {
+        continue;
+      }
+      const std::int32_t* first = this->Refs.data() + this->Start[w];
+      if (std::find(first, first + this->Count[w], t) == first + this->Count[w])
+      {
+        span.assign(first, first + this->Count[w]);
+        span.push_back(t);
+        this->SetSpan(w, span);
+      }
+    }
+  }
+  this->Changes.resize(record.FirstChange);
+  this->RemovedTriangles.resize(record.FirstRemovedTriangle);
+}
+
+void InterpolateAttributes(const std::vector<CollapseRecord>& records, double* values, int components)
+{
+  for (const CollapseRecord& r : records)
+  {
+    double* kept = values + static_cast<std::int64_t>(r.Kept) * components;
+    for (int c = 0; c < components; ++c)
+    {
+      double value = r.Weights[0] * kept[c];
+      for (int i = 0; i < 2; ++i)
+      {
+        if (r.Removed[i] >= 0)
+        {
+          value += r.Weights[i + 1] * values[static_cast<std::int64_t>(r.Removed[i]) * components + c];
+        }
+      }
+      kept[c] = value;
+    }
+  }
+}
+
+} // namespace meshsimp

@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file CollapseMesh.h
+ * @brief The shared collapse engine: a mutable triangle mesh with edge and triangle collapse,
+ * the checks every collapse must pass, collapse records and their undo (vertex split).
+ *
+ * Storage is flat: points, 3 vertex ids per triangle, an alive flag per triangle, and per vertex
+ * a span {start, count} into one array of incident triangle ids. A collapse writes the merged
+ * vertex's new span at the end of that array (old spans become garbage, compacted when it
+ * doubles); the other vertices' spans may keep ids of removed triangles, which every walk skips.
+ *
+ * A collapse merges a connected set of two vertices (an edge, or a half-edge when the position is
+ * one end point) or three (a triangle, paper 004) into the first of them, the kept vertex, at a
+ * new position. Triangles with two of the merged vertices disappear: the two around an edge, or
+ * the triangle and its up-to-three edge neighbours. Every collapse leaves a CollapseRecord with
+ * the attribute weights (value(kept) := Σ weight_i · value(vertex_i)) and, unless records are
+ * trimmed, what Undo() needs to split the vertex again.
+ *
+ * The checks (IsLegal) are those of the decimators built on the engine:
+ * - locks: a locked vertex is never removed or moved (non-manifold vertices are always locked);
+ * - the link condition, collapse by collapse: the common neighbours of the two sides are exactly
+ *   the far corners of their shared triangles, so no edge gets three triangles and no "hidden
+ *   cycle" (paper 004 Fig. 8) is closed; two boundary vertices are not joined across the
+ *   interior; no vertex falls below three neighbours;
+ * - no fold-over, by the plane-side test of paper 001 §5.3: the new position stays on the inner
+ *   side of the plane through every opposite edge perpendicular to its triangle;
+ * - no degenerate triangle: every changed triangle keeps a non-zero area.
+ */
+#ifndef MeshSimplification_CollapseMesh_h
+#define MeshSimplification_CollapseMesh_h
+
+#include "TriangleMesh.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace meshsimp
+{
+
+enum class VertexClass : std::uint8_t
+{
+  Interior,   // a closed fan of triangles
+  Boundary,   // an open fan: two boundary edges
+  Corner,     // a boundary vertex where the boundary turns sharply (see Build)
+  NonManifold // several fans, an edge of three or more triangles, or inconsistent orientation
+};
+
+/// One collapse: the kept vertex, the one or two merged into it, the attribute weights and what
+/// undoing it needs (spans into CollapseMesh's change and removed-triangle lists).
+struct CollapseRecord
+{
+  std::int32_t Kept = -1;
+  std::int32_t Removed[2] = { -1, -1 };
+  double Weights[3] = { 1.0, 0.0, 0.0 }; // kept, Removed[0], Removed[1]
+  Eigen::Vector3d KeptPosition = Eigen::Vector3d::Zero(); // before the collapse
+  VertexClass KeptClass = VertexClass::Interior;          // before the collapse
+  std::int32_t FirstChange = 0, ChangeCount = 0;
+  std::int32_t FirstRemovedTriangle = 0, RemovedTriangleCount = 0;
+};
+
+/// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
+struct CollapsePlan
+{
+  std::int32_t Vertices[3] = { -1, -1, -1 };
+  int Count = 0;
+  Eigen::Vector3d Position = Eigen::Vector3d::Zero();
+  double Weights[3] = { 1.0, 0.0, 0.0 };
+};
+
+class CollapseMesh
+{
+public:
+  /**
+   * Takes a compact mesh's points, triangles and adjacency (moved out of it). A boundary vertex
+   * whose two boundary edges turn by more than cornerAngleDegrees is a Corner.
+   */
+  void Build(CompactMesh&& mesh, double cornerAngleDegrees = 60.0);
+
+  std::int32_t NumberOfPoints() const { return static_cast<std::int32_t>(this->Points.size()); }
+  std::int32_t NumberOfTriangles() const { return static_cast<std::int32_t>(this->Alive.size()); }
+  std::int64_t NumberOfAliveTriangles() const { return this->AliveCount; }
+  bool IsAlive(std::int32_t t) const { return this->Alive[t] != 0; }
+  const std::int32_t* Triangle(std::int32_t t) const { return this->Triangles.data() + 3 * t; }
+  const Eigen::Vector3d& Point(std::int32_t v) const { return this->Points[v]; }
+  void SetPoint(std::int32_t v, const Eigen::Vector3d& x) { this->Points[v] = x; }
+
+  VertexClass Class(std::int32_t v) const { return this->Classes[v]; }
+  bool OnBoundary(std::int32_t v) const
+  {
+    return this->Classes[v] == VertexClass::Boundary || this->Classes[v] == VertexClass::Corner;
+  }
+  bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
+  void Lock(std::int32_t v) { this->Locked[v] = 1; }
+
+  /// Calls f(t) for every alive triangle around v.
+  template <typename F>
+  void ForEachTriangle(std::int32_t v, F&& f) const
+  {
+    const std::int32_t* ids = this->Refs.data() + this->Start[v];
+    for (std::int32_t i = 0, n = this->Count[v]; i < n; ++i)
+    {
+      if (this->Alive[ids[i]])
+      {
+        f(ids[i]);
+      }
+    }
+  }
+
+  /// The unit normal (zero when degenerate) and area of triangle t at the current points.
+  Eigen::Vector3d Normal(std::int32_t t) const;
+  double Area(std::int32_t t) const;
+
+  /// Whether the plan passes every check listed at the top of this file.
+  bool IsLegal(const CollapsePlan& plan) const;
+
+  /**
+   * Applies a legal plan and appends its record. Returns the number of triangles removed.
+   * With keepUndo false the record keeps only the attribute weights (no undo, less memory).
+   */
+  int Apply(const CollapsePlan& plan, bool keepUndo = true);
+
+  /// Splits the vertex of the last record again: points, triangles, classes and adjacency are
+  /// as before that collapse (adjacency spans may list triangles in another order).
+  void Undo();
+
+  const std::vector<CollapseRecord>& Records() const { return this->History; }
+
+  /// Sorted ids of the alive triangles around v (for tests and comparisons).
+  std::vector<std::int32_t> SortedTrianglesAround(std::int32_t v) const;
+
+  /// The neighbouring vertices of v that share an alive triangle with it (unsorted, unique).
+  void Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const;
+
+private:
+  bool LinkCondition(const std::int32_t* merged, int count, std::int32_t next) const;
+  bool KeepsTrianglesValid(const CollapsePlan& plan) const;
+  void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
+  void CompactRefs();
+
+  std::vector<Eigen::Vector3d> Points;
+  std::vector<std::int32_t> Triangles; // 3 per triangle
+  std::vector<std::uint8_t> Alive;
+  std::int64_t AliveCount = 0;
+  std::vector<VertexClass> Classes;
+  std::vector<std::uint8_t> Locked;
+  std::vector<std::int32_t> Start, Count; // per vertex, into Refs
+  std::vector<std::int32_t> Refs;
+  std::int64_t LiveRefs = 0;
+
+  std::vector<CollapseRecord> History;
+  std::vector<std::int32_t> Changes;          // per change: corner (3 t + k), old vertex
+  std::vector<std::int32_t> RemovedTriangles;
+
+  // Scratch marks for the checks: a vertex is marked when Marks[v] == Stamp (or Stamp + 1).
+  mutable std::vector<std::uint32_t> Marks;
+  mutable std::uint32_t Stamp = 0;
+  mutable std::vector<std::int32_t> Scratch;
+};
+
+/// Replays the records' attribute weights over a table of point values (components per point,
+/// indexed like the mesh's points): afterwards each kept vertex holds its interpolated value.
+void InterpolateAttributes(
+  const std::vector<CollapseRecord>& records, double* values, int components);
+
+} // namespace meshsimp
+
+#endif

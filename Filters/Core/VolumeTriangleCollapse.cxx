@@ -1,0 +1,591 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "VolumeTriangleCollapse.h"
+
+#include "CollapseHeap.h"
+#include "Quadric.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshsimp
+{
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+constexpr double Pi = 3.14159265358979323846;
+
+class VolumeCollapser
+{
+public:
+  VolumeCollapser(const VolumeCollapseOptions& options, const ExecutionContext& context)
+    : Options(options)
+    , Context(context)
+  {
+  }
+
+  bool Run(const TriangleMeshView& input, VolumeCollapseResult& result);
+
+private:
+  struct Candidate
+  {
+    CollapsePlan Plan;
+    double Cost = 0.0;
+    bool Valid = false;
+  };
+
+  /// Calls f(j) once for every triangle sharing a vertex with t, t included (Definition 2).
+  template <typename F>
+  void ForEachAdjacent(std::int32_t t, F&& f) const
+  {
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    const std::int32_t a = tri[0], b = tri[1], c = tri[2];
+    this->Mesh.ForEachTriangle(a, f);
+    this->Mesh.ForEachTriangle(b, [&](std::int32_t j) {
+      const std::int32_t* o = this->Mesh.Triangle(j);
+      if (o[0] != a && o[1] != a && o[2] != a)
+      {
+        f(j);
+      }
+    });
+    this->Mesh.ForEachTriangle(c, [&](std::int32_t j) {
+      const std::int32_t* o = this->Mesh.Triangle(j);
+      if (o[0] != a && o[1] != a && o[2] != a && o[0] != b && o[1] != b && o[2] != b)
+      {
+        f(j);
+      }
+    });
+  }
+
+  void UpdateGeometry(std::int32_t t);
+  void UpdateCurvature(std::int32_t v);
+  void UpdateQuadric(std::int32_t t);
+  Candidate Evaluate(std::int32_t t) const;
+  void Requeue(std::int32_t t);
+  void UpdateAround(std::int32_t kept);
+  int CountRemoved(const CollapsePlan& plan) const;
+
+  const VolumeCollapseOptions& Options;
+  const ExecutionContext& Context;
+  CollapseMesh Mesh;
+  std::vector<Vec3> Normals;
+  std::vector<double> Areas;
+  std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
+  std::vector<double> VertexError;       // squared-volume error accumulated at each vertex
+  std::vector<double> Deficit;           // angle deficit of each vertex (eq. 6)
+  std::vector<double> VertexArea;        // area of its adjacent triangles, A_v
+  double TotalArea = 0.0;
+  CollapseHeap Heap;
+  std::vector<std::uint32_t> VertexMarks, TriangleMarks;
+  std::uint32_t Stamp = 0;
+  std::vector<std::int32_t> Ring, Region;
+};
+
+void VolumeCollapser::UpdateGeometry(std::int32_t t)
+{
+  this->Normals[t] = this->Mesh.Normal(t);
+  this->Areas[t] = this->Mesh.Area(t);
+}
+
+void VolumeCollapser::UpdateCurvature(std::int32_t v)
+{
+  double angles = 0.0, area = 0.0;
+  const Vec3& x = this->Mesh.Point(v);
+  this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    const Vec3 e1 = this->Mesh.Point(tri[(k + 1) % 3]) - x;
+    const Vec3 e2 = this->Mesh.Point(tri[(k + 2) % 3]) - x;
+    angles += std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+    area += this->Areas[t];
+  });
+  // Eq. (6): 2π minus the angles around an interior vertex, π around a boundary one.
+  this->Deficit[v] = (this->Mesh.OnBoundary(v) ? Pi : 2.0 * Pi) - angles;
+  this->VertexArea[v] = area;
+}
+
+void VolumeCollapser::UpdateQuadric(std::int32_t t)
+{
+  const double area = this->Areas[t];
+  const Vec3& n = this->Normals[t];
+  if (!(area > 0.0) || n == Vec3::Zero())
+  {
+    this->TriangleQuadrics[t] = Quadric();
+    return;
+  }
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  double weight = area * area / 9.0; // eq. (3)
+  if (this->Options.UseShapeFactor)
+  {
+    // §3.2: W = 2 (1 − cos min α) · S; the smallest angle has the largest cosine.
+    double largestCosine = -1.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 e1 = this->Mesh.Point(tri[(k + 1) % 3]) - this->Mesh.Point(tri[k]);
+      const Vec3 e2 = this->Mesh.Point(tri[(k + 2) % 3]) - this->Mesh.Point(tri[k]);
+      const double lengths = e1.norm() * e2.norm();
+      largestCosine = std::max(largestCosine, lengths > 0.0 ? e1.dot(e2) / lengths : 1.0);
+    }
+    weight *= 2.0 * (1.0 - largestCosine) * area;
+  }
+  if (this->Options.UseNormalFactor)
+  {
+    // §3.2: N = mean over the adjacent triangles of (1 − |n · n_j|) / 2.
+    double sum = 0.0;
+    int count = 0;
+    this->ForEachAdjacent(t, [&](std::int32_t j) {
+      if (j != t)
+      {
+        sum += 0.5 * (1.0 - std::abs(n.dot(this->Normals[j])));
+        ++count;
+      }
+    });
+    weight *= count > 0 ? sum / count : 0.0;
+  }
+  if (this->Options.UseVolumeWeights)
+  {
+    // §3.1's constraint weight φ, relative to the triangle's own squared volume scale S³.
+    const double accumulated =
+      (this->VertexError[tri[0]] + this->VertexError[tri[1]] + this->VertexError[tri[2]]) / 3.0;
+    weight *= 1.0 + accumulated / (area * area * area);
+  }
+  this->TriangleQuadrics[t] = Quadric::FromPlane(n, -n.dot(this->Mesh.Point(tri[0])), weight);
+}
+
+VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
+{
+  Candidate candidate;
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  const std::int32_t v[3] = { tri[0], tri[1], tri[2] };
+  int boundaryCount = 0, lockedCount = 0, locked = -1;
+  for (int k = 0; k < 3; ++k)
+  {
+    boundaryCount += this->Mesh.OnBoundary(v[k]) ? 1 : 0;
+    if (this->Mesh.IsLocked(v[k]))
+    {
+      ++lockedCount;
+      locked = k;
+    }
+  }
+  if (lockedCount >= 2 || boundaryCount == 3 ||
+    (lockedCount == 1 && boundaryCount > 0 && !this->Mesh.OnBoundary(v[locked])))
+  {
+    return candidate;
+  }
+  Quadric q;
+  this->ForEachAdjacent(t, [&](std::int32_t j) { q += this->TriangleQuadrics[j]; });
+
+  // The kept corner goes first in the plan; weights follow the plan's vertex order.
+  auto ontoCorner = [&](int k) {
+    CollapsePlan& plan = candidate.Plan;
+    plan.Vertices[0] = v[k];
+    plan.Vertices[1] = v[(k + 1) % 3];
+    plan.Vertices[2] = v[(k + 2) % 3];
+    plan.Position = this->Mesh.Point(v[k]);
+    plan.Weights[0] = 1.0;
+    plan.Weights[1] = plan.Weights[2] = 0.0;
+  };
+  CollapsePlan& plan = candidate.Plan;
+  plan.Count = 3;
+  if (lockedCount == 1)
+  {
+    ontoCorner(locked);
+  }
+  else if (boundaryCount == 1)
+  {
+    // §3.5: a vertex-boundary triangle collapses onto its boundary vertex.
+    const int k = this->Mesh.OnBoundary(v[0]) ? 0 : this->Mesh.OnBoundary(v[1]) ? 1 : 2;
+    ontoCorner(k);
+  }
+  else if (boundaryCount == 2)
+  {
+    // §3.5: an edge-boundary triangle collapses to ω v_i + (1 − ω) v_j minimising eq. (1).
+    const int interior = !this->Mesh.OnBoundary(v[0]) ? 0 : !this->Mesh.OnBoundary(v[1]) ? 1 : 2;
+    const int i = (interior + 1) % 3, j = (interior + 2) % 3;
+    const Vec3& pi = this->Mesh.Point(v[i]);
+    const Vec3& pj = this->Mesh.Point(v[j]);
+    const Vec3 d = pi - pj;
+    const double a = d.dot(q.A() * d);
+    const double b = d.dot(q.A() * pj + q.B());
+    const double omega = a > 0.0 ? std::min(1.0, std::max(0.0, -b / a)) : 0.5;
+    const int kept = omega >= 0.5 ? i : j;
+    ontoCorner(kept);
+    plan.Position = pj + omega * d;
+    plan.Weights[0] = kept == i ? omega : 1.0 - omega;
+    // The plan lists (kept, next, next-next); the other boundary vertex takes the rest.
+    const int other = kept == i ? j : i;
+    const int slot = v[(kept + 1) % 3] == v[other] ? 1 : 2;
+    plan.Weights[slot] = 1.0 - plan.Weights[0];
+    plan.Weights[3 - slot] = 0.0;
+  }
+  else
+  {
+    // Eq. (6)–(7): a strong feature collapses onto its corner of largest |K_v|.
+    bool feature = false;
+    if (this->Options.FeatureCurvature > 0.0)
+    {
+      const double areas = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
+      const double deficits =
+        std::abs(this->Deficit[v[0]]) + std::abs(this->Deficit[v[1]]) + std::abs(this->Deficit[v[2]]);
+      const double meanArea = this->TotalArea / static_cast<double>(this->Mesh.NumberOfAliveTriangles());
+      feature = areas > 0.0 && deficits / areas * meanArea > this->Options.FeatureCurvature;
+    }
+    if (feature)
+    {
+      int strongest = 0;
+      double best = -1.0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const double curvature = this->VertexArea[v[k]] > 0.0
+          ? std::abs(this->Deficit[v[k]]) / this->VertexArea[v[k]]
+          : 0.0;
+        if (curvature > best)
+        {
+          best = curvature;
+          strongest = k;
+        }
+      }
+      ontoCorner(strongest);
+    }
+    else
+    {
+      Vec3 x;
+      const Vec3& p0 = this->Mesh.Point(v[0]);
+      const Vec3& p1 = this->Mesh.Point(v[1]);
+      const Vec3& p2 = this->Mesh.Point(v[2]);
+      const double longest = std::max({ (p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm() });
+      const Vec3 centroid = (p0 + p1 + p2) / 3.0;
+      if (!MinimizeQuadric(q, x) || (x - centroid).norm() > 2.0 * longest)
+      {
+        // Eq. (8): the blend weighted by the corners' adjacent areas.
+        const double sum = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
+        x = sum > 0.0 ? Vec3((this->VertexArea[v[0]] * p0 + this->VertexArea[v[1]] * p1 +
+                               this->VertexArea[v[2]] * p2) /
+                          sum)
+                      : centroid;
+      }
+      // Attribute weights: barycentric coordinates of x projected onto the triangle, clamped.
+      const Vec3 n = (p1 - p0).cross(p2 - p0);
+      const double n2 = n.squaredNorm();
+      double w[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+      if (n2 > 0.0)
+      {
+        w[0] = std::max(0.0, n.dot((p1 - x).cross(p2 - x)) / n2);
+        w[1] = std::max(0.0, n.dot((p2 - x).cross(p0 - x)) / n2);
+        w[2] = std::max(0.0, n.dot((p0 - x).cross(p1 - x)) / n2);
+        const double sum = w[0] + w[1] + w[2];
+        for (double& wk : w)
+        {
+          wk = sum > 0.0 ? wk / sum : 1.0 / 3.0;
+        }
+      }
+      const int kept = w[0] >= w[1] && w[0] >= w[2] ? 0 : w[1] >= w[2] ? 1 : 2;
+      ontoCorner(kept);
+      plan.Position = x;
+      for (int i = 0; i < 3; ++i)
+      {
+        plan.Weights[i] = w[(kept + i) % 3];
+      }
+    }
+  }
+  candidate.Cost = q.Evaluate(plan.Position); // eq. (5)
+  candidate.Valid = std::isfinite(candidate.Cost);
+  return candidate;
+}
+
+void VolumeCollapser::Requeue(std::int32_t t)
+{
+  const Candidate candidate = this->Evaluate(t);
+  if (candidate.Valid)
+  {
+    this->Heap.Set(t, candidate.Cost);
+  }
+  else
+  {
+    this->Heap.Remove(t);
+  }
+}
+
+void VolumeCollapser::UpdateAround(std::int32_t kept)
+{
+  // The kept vertex's triangles changed shape; the angle sums of their corners changed; the
+  // quadrics of every triangle sharing one of those corners saw a neighbour's normal change,
+  // and so did their constriction matrices.
+  this->Ring.clear();
+  this->Region.clear();
+  const std::uint32_t mark = ++this->Stamp;
+  this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) {
+    this->UpdateGeometry(t);
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (this->VertexMarks[tri[k]] != mark)
+      {
+        this->VertexMarks[tri[k]] = mark;
+        this->Ring.push_back(tri[k]);
+      }
+    }
+  });
+  for (const std::int32_t v : this->Ring)
+  {
+    this->UpdateCurvature(v);
+    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+      if (this->TriangleMarks[t] != mark)
+      {
+        this->TriangleMarks[t] = mark;
+        this->Region.push_back(t);
+      }
+    });
+  }
+  for (const std::int32_t t : this->Region)
+  {
+    this->UpdateQuadric(t);
+  }
+  for (const std::int32_t t : this->Region)
+  {
+    this->Requeue(t);
+  }
+}
+
+int VolumeCollapser::CountRemoved(const CollapsePlan& plan) const
+{
+  int removed = 0;
+  for (int i = 0; i < plan.Count; ++i)
+  {
+    this->Mesh.ForEachTriangle(plan.Vertices[i], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      int inside = 0, first = -1;
+      for (int j = 0; j < plan.Count; ++j)
+      {
+        if (tri[0] == plan.Vertices[j] || tri[1] == plan.Vertices[j] || tri[2] == plan.Vertices[j])
+        {
+          ++inside;
+          first = first < 0 ? j : first;
+        }
+      }
+      removed += inside > 1 && first == i ? 1 : 0;
+    });
+  }
+  return removed;
+}
+
+bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& result)
+{
+  result = VolumeCollapseResult();
+  CompactMesh compact = MakeCompactMesh(input, this->Context);
+  result.NonFinitePoints = compact.NonFinitePoints;
+  const std::vector<std::int32_t> inputVertex = std::move(compact.InputVertex);
+  const std::vector<std::int32_t> inputTriangle = std::move(compact.InputTriangle);
+  const std::int64_t usable = static_cast<std::int64_t>(inputTriangle.size());
+  result.UsableTriangles = usable;
+  const std::int64_t target = this->Options.TargetTriangles >= 0
+    ? std::min(this->Options.TargetTriangles, usable)
+    : static_cast<std::int64_t>(
+        std::llround(static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
+  result.TargetTriangles = target;
+
+  // Normalised coordinates (box centred at the origin, diagonal 1) keep the sixth and eighth
+  // powers of lengths in the costs within range.
+  const Vec3 origin = 0.5 * (compact.Lower + compact.Upper);
+  const double diagonal = (compact.Upper - compact.Lower).norm();
+  const double scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
+  for (Vec3& p : compact.Points)
+  {
+    p = (p - origin) * scale;
+  }
+  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if (this->Mesh.Class(v) == VertexClass::Corner ||
+      (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)))
+    {
+      this->Mesh.Lock(v);
+    }
+  }
+
+  this->Normals.resize(m);
+  this->Areas.resize(m);
+  this->TriangleQuadrics.resize(m);
+  this->VertexError.assign(n, 0.0);
+  this->Deficit.resize(n);
+  this->VertexArea.resize(n);
+  this->VertexMarks.assign(n, 0);
+  this->TriangleMarks.assign(m, 0);
+  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t t = b; t < e; ++t)
+    {
+      this->UpdateGeometry(static_cast<std::int32_t>(t));
+    }
+  });
+  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      this->UpdateCurvature(static_cast<std::int32_t>(v));
+    }
+  }, 8 * static_cast<std::int64_t>(n));
+  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t t = b; t < e; ++t)
+    {
+      this->UpdateQuadric(static_cast<std::int32_t>(t));
+    }
+  }, 16 * static_cast<std::int64_t>(m));
+  for (const double a : this->Areas)
+  {
+    this->TotalArea += a;
+  }
+  std::vector<Candidate> initial(m);
+  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t t = b; t < e; ++t)
+    {
+      initial[t] = this->Evaluate(static_cast<std::int32_t>(t));
+    }
+  }, 32 * static_cast<std::int64_t>(m));
+  this->Heap.Reset(m);
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (initial[t].Valid)
+    {
+      this->Heap.Set(t, initial[t].Cost);
+    }
+  }
+  std::vector<Candidate>().swap(initial);
+  if (!this->Context.Report(0.1))
+  {
+    return false;
+  }
+
+  // Step 5–6: collapse the cheapest triangle until the target is met.
+  const std::int64_t tolerance = target / 100;
+  const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
+  std::int64_t steps = 0;
+  while (this->Mesh.NumberOfAliveTriangles() > target)
+  {
+    if (this->Heap.Empty())
+    {
+      result.StoppedEarly = true;
+      break;
+    }
+    const double queuedCost = this->Heap.TopCost();
+    const std::int32_t t = this->Heap.Pop();
+    if (!this->Mesh.IsAlive(t))
+    {
+      continue;
+    }
+    Candidate candidate = this->Evaluate(t);
+    if (!candidate.Valid)
+    {
+      continue; // until a collapse nearby requeues it
+    }
+    if (candidate.Cost > queuedCost && !this->Heap.Empty() && candidate.Cost > this->Heap.TopCost())
+    {
+      this->Heap.Set(t, candidate.Cost); // its neighbourhood changed since it was queued
+      continue;
+    }
+    if (!this->Mesh.IsLegal(candidate.Plan))
+    {
+      continue;
+    }
+    CollapsePlan& plan = candidate.Plan;
+    const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
+    if (alive - this->CountRemoved(plan) < target - tolerance)
+    {
+      // Near the target: collapse only the edge to the corner of larger weight instead.
+      const int other = plan.Weights[1] >= plan.Weights[2] ? 1 : 2;
+      CollapsePlan edge = plan;
+      edge.Count = 2;
+      edge.Vertices[1] = plan.Vertices[other];
+      edge.Vertices[2] = -1;
+      const double sum = plan.Weights[0] + plan.Weights[other];
+      edge.Weights[0] = sum > 0.0 ? plan.Weights[0] / sum : 0.5;
+      edge.Weights[1] = 1.0 - edge.Weights[0];
+      edge.Weights[2] = 0.0;
+      if (!this->Mesh.IsLegal(edge) || alive - this->CountRemoved(edge) < target - tolerance)
+      {
+        continue;
+      }
+      plan = edge;
+    }
+    const std::int32_t kept = plan.Vertices[0];
+    double error = candidate.Cost;
+    for (int i = 0; i < plan.Count; ++i)
+    {
+      error += this->VertexError[plan.Vertices[i]];
+    }
+    this->Mesh.Apply(plan, this->Options.KeepUndo);
+    this->VertexError[kept] = error;
+    result.SquareVolumeError += candidate.Cost;
+    this->UpdateAround(kept);
+    if ((++steps & 255) == 0)
+    {
+      const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
+        static_cast<double>(std::max<std::int64_t>(1, start - target));
+      if (!this->Context.Report(0.1 + 0.85 * std::min(1.0, done)))
+      {
+        return false;
+      }
+    }
+  }
+
+  // The surviving triangles and their points, in the compact order, back in input coordinates.
+  std::vector<std::int32_t> outputIndex(n, -1);
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (!this->Mesh.IsAlive(t))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      outputIndex[this->Mesh.Triangle(t)[k]] = 0;
+    }
+  }
+  const double scale8 = std::pow(diagonal > 0.0 ? diagonal : 1.0, 8);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if (outputIndex[v] < 0)
+    {
+      continue;
+    }
+    outputIndex[v] = static_cast<std::int32_t>(result.PointSource.size());
+    const Vec3 p = this->Mesh.Point(v) / scale + origin;
+    result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
+    result.PointSource.push_back(inputVertex[v]);
+    result.PointError.push_back(this->VertexError[v] * scale8);
+  }
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (this->Mesh.IsAlive(t))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        result.Triangles.push_back(outputIndex[this->Mesh.Triangle(t)[k]]);
+      }
+      result.TriangleSource.push_back(inputTriangle[t]);
+    }
+  }
+  result.Records = this->Mesh.Records();
+  for (CollapseRecord& record : result.Records)
+  {
+    record.Kept = inputVertex[record.Kept];
+    record.KeptPosition = record.KeptPosition / scale + origin;
+    for (std::int32_t& r : record.Removed)
+    {
+      r = r >= 0 ? inputVertex[r] : -1;
+    }
+  }
+  result.SquareVolumeError *= scale8;
+  return this->Context.Report(1.0);
+}
+} // namespace
+
+bool VolumeTriangleCollapse(const TriangleMeshView& input, const VolumeCollapseOptions& options,
+  VolumeCollapseResult& result, const ExecutionContext& context)
+{
+  VolumeCollapser collapser(options, context);
+  return collapser.Run(input, result);
+}
+
+} // namespace meshsimp

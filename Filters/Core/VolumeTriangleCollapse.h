@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file VolumeTriangleCollapse.h
+ * @brief Triangle-collapse simplification ordered by the squared volume error of paper 004
+ * (Zhou, Zhang, Cheng: "Mesh simplification by volume variation with feature preserving").
+ *
+ * Each step collapses the triangle of least constriction error into one vertex, removing it and
+ * its (up to three) edge neighbours, on the shared collapse engine (CollapseMesh) and its checks.
+ *
+ * - Per triangle i (eq. 3–4): Q_i = 1/9 · W_i · N_i · φ_i · S_i² · p pᵀ, with p its plane, S_i its
+ *   area, the shape factor W_i = 2 (1 − cos min α) · S_i (§3.2), the normal constraint factor
+ *   N_i = mean over its adjacent triangles j of (1 − |n_i · n_j|) / 2 (§3.2), and the constraint
+ *   weight φ_i of §3.1. The paper leaves φ loosely defined ("the original square volume
+ *   variation"); here φ_i = 1 + E_i / S_i³, E_i being the mean squared-volume error already
+ *   accumulated at the triangle's corners, so regions that have absorbed much volume change
+ *   become dearer and the error spreads evenly. All three factors can be switched off.
+ * - The constriction matrix of a triangle sums Q_i over it and its adjacent triangles (every
+ *   triangle sharing a vertex, Definition 2); its cost is eq. (5), v̄ᵀ Q̄ v̄ at the new vertex.
+ * - Placement (§3.4): the minimiser of eq. (5) when Q̄ is well conditioned (eigenvalue ratio, not
+ *   det ≠ 0), else the blend of eq. (8) with weights ∝ the vertices' adjacent areas.
+ * - Gauss curvature (eq. 6–7): K_t = Σ |angle deficit| / Σ adjacent areas over the triangle's
+ *   corners. A triangle whose K_t, measured in units of the current mean triangle area (so the
+ *   threshold does not depend on the mesh's scale or resolution), exceeds FeatureCurvature is a
+ *   strong feature and collapses onto its corner of largest |K_v|.
+ * - Boundaries (§3.5): a triangle with one boundary corner collapses onto it; one with two onto
+ *   the point ω v_i + (1 − ω) v_j of least error on that pair; one with three is kept. Boundary
+ *   corners (a sharp turn of the boundary) never move. PreserveBoundary locks every boundary
+ *   vertex.
+ * - Zero-cost triangles whose cost is set again queue behind the waiting zero-cost ones (§3.5,
+ *   Fig. 7): the heap's tie rule (CollapseHeap).
+ * - Costs of the triangles whose constriction matrices a collapse changes (those sharing a
+ *   vertex with the new vertex's triangles) are updated at once; a triangle further out is
+ *   re-evaluated when it reaches the top and requeued if its cost has grown past the next one.
+ */
+#ifndef MeshSimplification_VolumeTriangleCollapse_h
+#define MeshSimplification_VolumeTriangleCollapse_h
+
+#include "CollapseMesh.h"
+#include "Execution.h"
+#include "TriangleMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meshsimp
+{
+
+struct VolumeCollapseOptions
+{
+  /// Fraction of the usable triangles to remove; used when TargetTriangles < 0.
+  double TargetReduction = 0.9;
+  /// Number of triangles to keep; overrides TargetReduction when >= 0.
+  std::int64_t TargetTriangles = -1;
+  /// Threshold of the dimensionless Gauss curvature K_t · (mean triangle area); <= 0 disables
+  /// the feature rule.
+  double FeatureCurvature = 0.05;
+  /// Lock every boundary vertex (boundary corners are always locked).
+  bool PreserveBoundary = false;
+  /// A boundary vertex where the boundary turns by more than this is a corner.
+  double BoundaryCornerAngle = 60.0;
+  bool UseShapeFactor = true;
+  bool UseNormalFactor = true;
+  bool UseVolumeWeights = true;
+  /// Keep what undoing each collapse needs in the result's records (progressive meshes).
+  bool KeepUndo = false;
+};
+
+struct VolumeCollapseResult
+{
+  std::vector<double> Points;              // 3 per output point, input coordinates
+  std::vector<std::int32_t> Triangles;     // 3 per output triangle
+  std::vector<std::int32_t> PointSource;   // input point of each output point
+  std::vector<std::int32_t> TriangleSource; // input triangle each output triangle descends from
+  std::vector<double> PointError;          // squared-volume error accumulated at each output point
+  /// Every collapse in order, in input point ids; InterpolateAttributes replays their weights
+  /// over a table of input point values.
+  std::vector<CollapseRecord> Records;
+  double SquareVolumeError = 0.0;          // Σ eq. (5) over the collapses (the paper's ΔV)
+  std::int64_t UsableTriangles = 0;        // input triangles the algorithm could use
+  std::int64_t TargetTriangles = 0;
+  std::int64_t NonFinitePoints = 0;
+  bool StoppedEarly = false;               // no legal collapse was left before the target
+};
+
+/// Runs the simplification. Returns false when aborted through the context's progress.
+bool VolumeTriangleCollapse(const TriangleMeshView& input, const VolumeCollapseOptions& options,
+  VolumeCollapseResult& result, const ExecutionContext& context = {});
+
+} // namespace meshsimp
+
+#endif

@@ -1,0 +1,375 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Unit tests of the shared collapse engine (CollapseMesh, CollapseHeap) and of the volume
+// triangle collapse core built on it.
+#include "CollapseHeap.h"
+#include "CollapseMesh.h"
+#include "TestHelpers.h"
+#include "TestMeshes.h"
+#include "VolumeTriangleCollapse.h"
+
+#include <map>
+#include <random>
+#include <set>
+
+using meshsimp::CollapseHeap;
+using meshsimp::CollapseMesh;
+using meshsimp::CollapsePlan;
+using meshsimp::VertexClass;
+
+namespace
+{
+/// The engine over a test mesh, with the engine id of every input point.
+struct Engine
+{
+  CollapseMesh Mesh;
+  std::vector<std::int32_t> Id; // input point -> engine vertex
+
+  explicit Engine(const ::Mesh& input)
+  {
+    meshsimp::CompactMesh compact = meshsimp::MakeCompactMesh(input.View());
+    this->Id.assign(input.Points.size() / 3, -1);
+    for (std::size_t v = 0; v < compact.InputVertex.size(); ++v)
+    {
+      this->Id[compact.InputVertex[v]] = static_cast<std::int32_t>(v);
+    }
+    this->Mesh.Build(std::move(compact));
+  }
+
+  CollapsePlan Plan(std::initializer_list<int> inputVertices, const Eigen::Vector3d& x) const
+  {
+    CollapsePlan plan;
+    for (const int v : inputVertices)
+    {
+      plan.Vertices[plan.Count++] = this->Id[v];
+    }
+    plan.Position = x;
+    return plan;
+  }
+  Eigen::Vector3d Point(int inputVertex) const { return this->Mesh.Point(this->Id[inputVertex]); }
+};
+
+/// Two tetrahedra glued along a triangle's edges: top T, bottom B, equator e0 e1 e2.
+Mesh Bipyramid()
+{
+  Mesh mesh;
+  mesh.Points = { 0, 0, 1, 0, 0, -1, 1, 0, 0, -0.5, 0.866, 0, -0.5, -0.866, 0 };
+  mesh.Triangles = { 0, 2, 3, 0, 3, 4, 0, 4, 2, 1, 3, 2, 1, 4, 3, 1, 2, 4 };
+  return mesh;
+}
+
+/// Edge multiplicities of the alive triangles: every edge of a closed 2-manifold twice, once
+/// per orientation.
+bool ClosedManifold(const CollapseMesh& mesh)
+{
+  std::map<std::pair<int, int>, int> directed;
+  for (std::int32_t t = 0; t < mesh.NumberOfTriangles(); ++t)
+  {
+    if (!mesh.IsAlive(t))
+    {
+      continue;
+    }
+    const std::int32_t* tri = mesh.Triangle(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ tri[k], tri[(k + 1) % 3] }];
+    }
+  }
+  for (const auto& edge : directed)
+  {
+    const auto twin = directed.find({ edge.first.second, edge.first.first });
+    if (edge.second != 1 || twin == directed.end() || twin->second != 1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+struct Snapshot
+{
+  std::vector<Eigen::Vector3d> Points;
+  std::vector<std::int32_t> Triangles;
+  std::vector<int> Alive, Classes;
+  std::vector<std::vector<std::int32_t>> Around;
+  bool operator==(const Snapshot& o) const
+  {
+    return this->Points == o.Points && this->Triangles == o.Triangles && this->Alive == o.Alive &&
+      this->Classes == o.Classes && this->Around == o.Around;
+  }
+};
+
+Snapshot Take(const CollapseMesh& mesh)
+{
+  Snapshot s;
+  for (std::int32_t v = 0; v < mesh.NumberOfPoints(); ++v)
+  {
+    s.Points.push_back(mesh.Point(v));
+    s.Classes.push_back(static_cast<int>(mesh.Class(v)));
+    s.Around.push_back(mesh.SortedTrianglesAround(v));
+  }
+  for (std::int32_t t = 0; t < mesh.NumberOfTriangles(); ++t)
+  {
+    s.Triangles.insert(s.Triangles.end(), mesh.Triangle(t), mesh.Triangle(t) + 3);
+    s.Alive.push_back(mesh.IsAlive(t) ? 1 : 0);
+  }
+  return s;
+}
+
+void HeapOrderAndTieRule()
+{
+  CollapseHeap heap(6);
+  heap.Set(0, 2.0);
+  heap.Set(1, 0.0);
+  heap.Set(2, 1.0);
+  heap.Set(3, 0.0);
+  heap.Set(4, 0.0);
+  heap.Set(5, 3.0);
+  heap.Set(1, 0.0); // cost set again: behind the zero-cost ones waiting (paper 004 §3.5)
+  heap.Set(5, 0.5); // decrease-key
+  heap.Set(0, 4.0); // increase-key
+  heap.Remove(2);
+  std::vector<std::int32_t> order;
+  while (!heap.Empty())
+  {
+    order.push_back(heap.Pop());
+  }
+  CHECK((order == std::vector<std::int32_t>{ 3, 4, 1, 5, 0 }));
+  CHECK(!heap.Contains(2));
+}
+
+void VertexClasses()
+{
+  // Grid corners turn by 90° (corners), the rest of the rim is boundary, the inside interior;
+  // a fin of a third triangle on an inner edge makes both its ends non-manifold (and locked).
+  Mesh grid = Grid(2);
+  Engine plain(grid);
+  CHECK(plain.Mesh.Class(plain.Id[0]) == VertexClass::Corner);
+  CHECK(plain.Mesh.Class(plain.Id[1]) == VertexClass::Boundary);
+  CHECK(plain.Mesh.Class(plain.Id[4]) == VertexClass::Interior);
+  CHECK(!plain.Mesh.IsLocked(plain.Id[4]));
+  grid.Points.insert(grid.Points.end(), { 0.5, 0.5, 1.0 });
+  grid.Triangles.insert(grid.Triangles.end(), { 0, 4, 9 }); // edge 0-4 is the first cell's diagonal
+  Engine fin(grid);
+  CHECK(fin.Mesh.Class(fin.Id[4]) == VertexClass::NonManifold);
+  CHECK(fin.Mesh.IsLocked(fin.Id[4]));
+  CHECK(fin.Mesh.Class(fin.Id[0]) == VertexClass::NonManifold);
+}
+
+void LinkConditionRejectsHiddenCycle()
+{
+  // On the bipyramid the equator vertices e0, e1 share T and B (their triangles' far corners)
+  // and e2, which is not: collapsing e0-e1 would close the cycle e0 e1 e2 (paper 004 Fig. 8).
+  Engine e(Bipyramid());
+  const Eigen::Vector3d mid = 0.5 * (e.Point(2) + e.Point(3));
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 2, 3 }, mid)));
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 0, 2, 3 }, e.Point(0))));
+  // The same on a torus whose tube is a triangle: every vertex has six neighbours, and an edge
+  // of the tube's ring would close that ring of three.
+  Mesh torus;
+  const int rings = 16;
+  for (int i = 0; i < rings; ++i)
+  {
+    const double angle = 2.0 * 3.14159265358979323846 * i / rings;
+    for (int j = 0; j < 3; ++j)
+    {
+      const double tube = 2.0 * 3.14159265358979323846 * j / 3;
+      const double radius = 2.0 + 0.5 * std::cos(tube);
+      torus.Points.insert(torus.Points.end(),
+        { radius * std::cos(angle), radius * std::sin(angle), 0.5 * std::sin(tube) });
+    }
+  }
+  for (int i = 0; i < rings; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const int a = 3 * i + j, b = 3 * i + (j + 1) % 3;
+      const int c = 3 * ((i + 1) % rings) + j, d = 3 * ((i + 1) % rings) + (j + 1) % 3;
+      torus.Triangles.insert(torus.Triangles.end(), { a, c, d, a, d, b });
+    }
+  }
+  Engine ring(torus);
+  CHECK(ring.Mesh.Class(ring.Id[0]) == VertexClass::Interior);
+  CHECK(!ring.Mesh.IsLegal(ring.Plan({ 0, 1 }, 0.5 * (ring.Point(0) + ring.Point(1)))));
+  CHECK(ring.Mesh.IsLegal(ring.Plan({ 0, 3 }, 0.5 * (ring.Point(0) + ring.Point(3))))); // along: fine
+  // A tetrahedron's edges all fail too (nobody may drop below three neighbours).
+  Mesh tetra;
+  tetra.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  tetra.Triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
+  Engine t(tetra);
+  CHECK(!t.Mesh.IsLegal(t.Plan({ 0, 1 }, t.Point(0))));
+}
+
+void LinkConditionRejectsPinch()
+{
+  // A strip of two quads: the middle rung joins two boundary vertices across the interior.
+  Mesh strip;
+  strip.Points = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0 };
+  strip.Triangles = { 0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4 };
+  Engine e(strip);
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 1, 4 }, 0.5 * (e.Point(1) + e.Point(4)))));
+  // Along the boundary the same mesh may collapse.
+  CHECK(e.Mesh.IsLegal(e.Plan({ 4, 3 }, e.Point(4))));
+}
+
+void FoldOverAndDegenerateRejected()
+{
+  Engine e(Grid(4)); // vertex 12 is the centre (2, 2) / 4
+  const Eigen::Vector3d centre = e.Point(12);
+  // Half-edge collapse of the centre onto its neighbour 13: legal.
+  CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, e.Point(13))));
+  // The same edge collapsed to a point beyond the ring turns triangles over (§5.3 test).
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, centre + Eigen::Vector3d(-0.6, 0.0, 0.0))));
+  // A point on the line of an opposite edge makes a triangle of zero area: rejected.
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.25, 0.5, 0.0))));
+}
+
+void LockedVerticesStay()
+{
+  Engine e(Grid(4));
+  e.Mesh.Lock(e.Id[12]);
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, e.Point(13))));  // removes the locked vertex
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 12, 13 }, 0.5 * (e.Point(12) + e.Point(13)))));  // moves it
+  CHECK(e.Mesh.IsLegal(e.Plan({ 12, 13 }, e.Point(12))));  // keeps it in place
+}
+
+void CollapseThenUndoRestoresMesh()
+{
+  // Random legal edge and triangle collapses on a closed mesh keep it a closed 2-manifold;
+  // undoing them all (through several compactions of the adjacency) gives back the same mesh.
+  Engine e(Sphere(8));
+  const Snapshot before = Take(e.Mesh);
+  std::mt19937 random(7);
+  int applied = 0;
+  for (int attempt = 0; attempt < 4000 && e.Mesh.NumberOfAliveTriangles() > 40; ++attempt)
+  {
+    const std::int32_t t = static_cast<std::int32_t>(random() % e.Mesh.NumberOfTriangles());
+    if (!e.Mesh.IsAlive(t))
+    {
+      continue;
+    }
+    const std::int32_t* tri = e.Mesh.Triangle(t);
+    CollapsePlan plan;
+    plan.Count = random() % 2 ? 3 : 2;
+    std::copy(tri, tri + 3, plan.Vertices);
+    plan.Position = e.Mesh.Point(tri[0]);
+    for (int k = 1; k < plan.Count; ++k)
+    {
+      plan.Position += e.Mesh.Point(tri[k]);
+    }
+    plan.Position /= plan.Count;
+    if (!e.Mesh.IsLegal(plan))
+    {
+      continue;
+    }
+    const std::int64_t aliveBefore = e.Mesh.NumberOfAliveTriangles();
+    const int removed = e.Mesh.Apply(plan);
+    CHECK(removed == (plan.Count == 3 ? 4 : 2));
+    CHECK(e.Mesh.NumberOfAliveTriangles() == aliveBefore - removed);
+    ++applied;
+  }
+  CHECK(applied > 100);
+  CHECK(ClosedManifold(e.Mesh));
+  CHECK(static_cast<int>(e.Mesh.Records().size()) == applied);
+  const Snapshot partial = Take(e.Mesh);
+  e.Mesh.Undo();
+  CHECK(!(Take(e.Mesh) == partial));
+  while (!e.Mesh.Records().empty())
+  {
+    e.Mesh.Undo();
+  }
+  CHECK(Take(e.Mesh) == before);
+}
+
+void AttributesFollowWeights()
+{
+  // A value linear in x, interpolated with the weights of a placement at the edge's midpoint,
+  // equals x at the new point.
+  Engine e(Grid(4));
+  std::vector<double> values(e.Mesh.NumberOfPoints());
+  for (std::int32_t v = 0; v < e.Mesh.NumberOfPoints(); ++v)
+  {
+    values[v] = e.Mesh.Point(v).x();
+  }
+  CollapsePlan plan = e.Plan({ 12, 13 }, 0.5 * (e.Point(12) + e.Point(13)));
+  plan.Weights[0] = plan.Weights[1] = 0.5;
+  CHECK(e.Mesh.IsLegal(plan));
+  e.Mesh.Apply(plan);
+  meshsimp::InterpolateAttributes(e.Mesh.Records(), values.data(), 1);
+  CHECK(std::abs(values[e.Id[12]] - e.Mesh.Point(e.Id[12]).x()) < 1e-15);
+}
+
+meshsimp::VolumeCollapseResult Collapse(const Mesh& mesh, std::int64_t target)
+{
+  meshsimp::VolumeCollapseOptions options;
+  options.TargetTriangles = target;
+  meshsimp::VolumeCollapseResult result;
+  CHECK(meshsimp::VolumeTriangleCollapse(mesh.View(), options, result));
+  return result;
+}
+
+void VolumeCollapseKeepsSphereClosed()
+{
+  const Mesh sphere = Sphere(16); // 3072 triangles
+  const meshsimp::VolumeCollapseResult result = Collapse(sphere, 307);
+  const std::int64_t count = static_cast<std::int64_t>(result.Triangles.size() / 3);
+  CHECK(std::abs(count - 307) <= 3);
+  CHECK(!result.StoppedEarly);
+  Mesh out;
+  out.Points = result.Points;
+  out.Triangles = result.Triangles;
+  Engine check(out);
+  CHECK(ClosedManifold(check.Mesh));
+  // Every triangle still faces outwards and the volume stays close to the input's.
+  double volume = 0.0;
+  bool outward = true;
+  for (std::size_t t = 0; t < result.Triangles.size(); t += 3)
+  {
+    Eigen::Vector3d p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = result.Triangles[t + k];
+      p[k] = Eigen::Vector3d(result.Points[3 * v], result.Points[3 * v + 1], result.Points[3 * v + 2]) -
+        Eigen::Vector3d::Constant(0.5);
+    }
+    const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+    outward = outward && normal.dot(p[0] + p[1] + p[2]) > 0.0;
+    volume += p[0].dot(p[1].cross(p[2])) / 6.0;
+  }
+  CHECK(outward);
+  const double sphereVolume = 4.0 / 3.0 * 3.14159265358979323846 / 8.0;
+  CHECK(std::abs(volume / sphereVolume - 1.0) < 0.05);
+  CHECK(result.SquareVolumeError > 0.0);
+  CHECK(result.PointError.size() == result.PointSource.size());
+}
+
+void VolumeCollapseKeepsPlaneAndCorners()
+{
+  // A flat grid stays flat, and its four corners (sharp boundary turns) stay where they are.
+  const meshsimp::VolumeCollapseResult result = Collapse(Grid(16), 51);
+  CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 51) <= 1);
+  int corners = 0;
+  for (std::size_t i = 0; i < result.Points.size(); i += 3)
+  {
+    CHECK(result.Points[i + 2] == 0.0);
+    const double x = result.Points[i], y = result.Points[i + 1];
+    corners += (x == 0.0 || x == 1.0) && (y == 0.0 || y == 1.0) ? 1 : 0;
+  }
+  CHECK(corners == 4);
+}
+} // namespace
+
+int main()
+{
+  return meshsimp_test::RunTests({
+    { "HeapOrderAndTieRule", HeapOrderAndTieRule },
+    { "VertexClasses", VertexClasses },
+    { "LinkConditionRejectsHiddenCycle", LinkConditionRejectsHiddenCycle },
+    { "LinkConditionRejectsPinch", LinkConditionRejectsPinch },
+    { "FoldOverAndDegenerateRejected", FoldOverAndDegenerateRejected },
+    { "LockedVerticesStay", LockedVerticesStay },
+    { "CollapseThenUndoRestoresMesh", CollapseThenUndoRestoresMesh },
+    { "AttributesFollowWeights", AttributesFollowWeights },
+    { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
+    { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
+  });
+}

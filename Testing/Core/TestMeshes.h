@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Small synthetic meshes shared by the core unit tests.
+#ifndef MeshSimplification_TestMeshes_h
+#define MeshSimplification_TestMeshes_h
+
+#include "TriangleMesh.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace
+{
+struct Mesh
+{
+  std::vector<double> Points;
+  std::vector<std::int32_t> Triangles;
+  meshsimp::TriangleMeshView View() const
+  {
+    return { this->Points.data(), static_cast<std::int64_t>(this->Points.size() / 3),
+      this->Triangles.data(), static_cast<std::int64_t>(this->Triangles.size() / 3) };
+  }
+};
+
+/// An n × n grid of quads on z = 0 over [0, 1]², two triangles each.
+Mesh Grid(int n)
+{
+  Mesh mesh;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      mesh.Points.insert(mesh.Points.end(), { double(i) / n, double(j) / n, 0.0 });
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      mesh.Triangles.insert(mesh.Triangles.end(), { a, b, d, a, d, c });
+    }
+  }
+  return mesh;
+}
+
+/// The unit cube [0, 1]³ with each face an n × n grid, outward normals, shared points welded.
+Mesh Cube(int n)
+{
+  Mesh mesh;
+  std::vector<std::array<int, 3>> keys;
+  auto point = [&](const Eigen::Vector3d& p) {
+    const std::array<int, 3> key = { int(std::lround(p.x() * n)), int(std::lround(p.y() * n)),
+      int(std::lround(p.z() * n)) };
+    const auto found = std::find(keys.begin(), keys.end(), key);
+    if (found != keys.end())
+    {
+      return static_cast<std::int32_t>(found - keys.begin());
+    }
+    keys.push_back(key);
+    mesh.Points.insert(mesh.Points.end(), { p.x(), p.y(), p.z() });
+    return static_cast<std::int32_t>(keys.size() - 1);
+  };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side = 0; side < 2; ++side)
+    {
+      const Eigen::Vector3d normal = Eigen::Vector3d::Unit(axis) * (side ? 1.0 : -1.0);
+      const Eigen::Vector3d u = Eigen::Vector3d::Unit((axis + 1) % 3);
+      const Eigen::Vector3d v = Eigen::Vector3d::Unit((axis + 2) % 3);
+      const Eigen::Vector3d origin = Eigen::Vector3d::Unit(axis) * side;
+      for (int j = 0; j < n; ++j)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          auto at = [&](int a, int b) { return point(origin + u * (double(a) / n) + v * (double(b) / n)); };
+          std::int32_t c[4] = { at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) };
+          if (u.cross(v).dot(normal) < 0)
+          {
+            std::swap(c[1], c[3]);
+          }
+          mesh.Triangles.insert(mesh.Triangles.end(), { c[0], c[1], c[2], c[0], c[2], c[3] });
+        }
+      }
+    }
+  }
+  return mesh;
+}
+
+/// Cube(n) pushed out onto the sphere of radius 1/2 around the cube's centre.
+Mesh Sphere(int n)
+{
+  Mesh mesh = Cube(n);
+  for (std::size_t i = 0; i < mesh.Points.size(); i += 3)
+  {
+    Eigen::Vector3d p(mesh.Points[i] - 0.5, mesh.Points[i + 1] - 0.5, mesh.Points[i + 2] - 0.5);
+    p = 0.5 * p.normalized();
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh.Points[i + k] = p[k] + 0.5;
+    }
+  }
+  return mesh;
+}
+} // namespace
+
+#endif
