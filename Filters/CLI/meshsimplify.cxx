@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // meshsimplify: run a MeshSimplification filter on a mesh file.
 //
-//   meshsimplify --method octree [--reduction R | --target-triangles N |
+//   meshsimplify --method octree|volume [--reduction R | --target-triangles N |
 //                --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]
 //                [--repeat N] [--json] INPUT OUTPUT
+//
+// --max-error is a target of the octree method only.
 //
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
 // one JSON object; time_ms is the filter's own work (file I/O excluded), the median of N runs
@@ -11,6 +13,7 @@
 #include "OFFFile.h"
 #include "vtkOFFReader.h"
 #include "vtkOctreeVertexClustering.h"
+#include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -24,6 +27,7 @@
 #include "vtkPLYWriter.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
@@ -226,28 +230,41 @@ double ParseNumber(const std::string& option, const std::string& text)
   Fail("option " + option + " needs a number, not '" + text + "'");
 }
 
-/// The --set names of the octree filter.
-std::map<std::string, std::function<void(vtkOctreeVertexClustering*, double)>> OctreeSetters()
+/// The --set names of each method's filter.
+using Setters = std::map<std::string, std::function<void(double)>>;
+
+Setters OctreeSetters(vtkOctreeVertexClustering* f)
 {
   return {
-    { "MaximumCellSize", [](vtkOctreeVertexClustering* f, double v) { f->SetMaximumCellSize(v); } },
-    { "MaximumVerticesPerCell",
-      [](vtkOctreeVertexClustering* f, double v) { f->SetMaximumVerticesPerCell(static_cast<int>(v)); } },
-    { "ErrorIterations",
-      [](vtkOctreeVertexClustering* f, double v) { f->SetErrorIterations(static_cast<int>(v)); } },
-    { "BoundaryPlanes", [](vtkOctreeVertexClustering* f, double v) { f->SetBoundaryPlanes(v != 0.0); } },
-    { "BoundaryWeight", [](vtkOctreeVertexClustering* f, double v) { f->SetBoundaryWeight(v); } },
-    { "PreventFlips", [](vtkOctreeVertexClustering* f, double v) { f->SetPreventFlips(v != 0.0); } },
-    { "OutputPointsPrecision",
-      [](vtkOctreeVertexClustering* f, double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
+    { "MaximumCellSize", [f](double v) { f->SetMaximumCellSize(v); } },
+    { "MaximumVerticesPerCell", [f](double v) { f->SetMaximumVerticesPerCell(static_cast<int>(v)); } },
+    { "ErrorIterations", [f](double v) { f->SetErrorIterations(static_cast<int>(v)); } },
+    { "BoundaryPlanes", [f](double v) { f->SetBoundaryPlanes(v != 0.0); } },
+    { "BoundaryWeight", [f](double v) { f->SetBoundaryWeight(v); } },
+    { "PreventFlips", [f](double v) { f->SetPreventFlips(v != 0.0); } },
+    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
+  };
+}
+
+Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
+{
+  return {
+    { "FeatureCurvature", [f](double v) { f->SetFeatureCurvature(v); } },
+    { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
+    { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
+    { "UseNormalFactor", [f](double v) { f->SetUseNormalFactor(v != 0.0); } },
+    { "UseShapeFactor", [f](double v) { f->SetUseShapeFactor(v != 0.0); } },
+    { "UseVolumeWeights", [f](double v) { f->SetUseVolumeWeights(v != 0.0); } },
+    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
 }
 
 const char* Usage =
-  "usage: meshsimplify --method octree [--reduction R | --target-triangles N |\n"
+  "usage: meshsimplify --method octree|volume [--reduction R | --target-triangles N |\n"
   "         --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]\n"
   "         [--repeat N] [--json] INPUT OUTPUT\n"
-  "  --repeat N  run the filter N times; time_ms is the median\n";
+  "  --repeat N  run the filter N times; time_ms is the median\n"
+  "  --max-error is a target of the octree method only\n";
 }
 
 int main(int argc, char* argv[])
@@ -313,9 +330,13 @@ int main(int argc, char* argv[])
   {
     Fail(std::string("an INPUT and an OUTPUT file are needed\n") + Usage);
   }
-  if (method != "octree")
+  if (method != "octree" && method != "volume")
   {
-    Fail("unknown --method '" + method + "' (available: octree)");
+    Fail("unknown --method '" + method + "' (available: octree, volume)");
+  }
+  if (method == "volume" && maxError >= 0.0)
+  {
+    Fail("--max-error is not a target of --method volume");
   }
   if ((reduction >= 0.0) + (targetTriangles >= 0) + (maxError >= 0.0) > 1)
   {
@@ -335,34 +356,58 @@ int main(int argc, char* argv[])
   }
 
   vtkSmartPointer<vtkPolyData> mesh = Read(input);
-  vtkNew<vtkOctreeVertexClustering> filter;
-  filter->SetInputData(mesh);
-  filter->SetNumberOfThreads(threads);
-  if (targetTriangles >= 0)
+  const double reductionWanted = reduction >= 0.0 ? reduction : 0.9;
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter;
+  Setters setters;
+  if (method == "octree")
   {
-    filter->SetTargetModeToTriangleCount();
-    filter->SetTargetTriangleCount(targetTriangles);
-  }
-  else if (maxError >= 0.0)
-  {
-    filter->SetTargetModeToMaximumError();
-    filter->SetMaximumError(maxError);
-    filter->SetRelativeError(relativeError);
+    vtkNew<vtkOctreeVertexClustering> octree;
+    octree->SetNumberOfThreads(threads);
+    if (targetTriangles >= 0)
+    {
+      octree->SetTargetModeToTriangleCount();
+      octree->SetTargetTriangleCount(targetTriangles);
+    }
+    else if (maxError >= 0.0)
+    {
+      octree->SetTargetModeToMaximumError();
+      octree->SetMaximumError(maxError);
+      octree->SetRelativeError(relativeError);
+    }
+    else
+    {
+      octree->SetTargetModeToReduction();
+      octree->SetTargetReduction(reductionWanted);
+    }
+    setters = OctreeSetters(octree);
+    filter = octree;
   }
   else
   {
-    filter->SetTargetModeToReduction();
-    filter->SetTargetReduction(reduction >= 0.0 ? reduction : 0.9);
+    vtkNew<vtkVolumeTriangleCollapse> volume;
+    volume->SetNumberOfThreads(threads);
+    if (targetTriangles >= 0)
+    {
+      volume->SetTargetModeToTriangleCount();
+      volume->SetTargetTriangleCount(targetTriangles);
+    }
+    else
+    {
+      volume->SetTargetModeToReduction();
+      volume->SetTargetReduction(reductionWanted);
+    }
+    setters = VolumeSetters(volume);
+    filter = volume;
   }
-  const auto setters = OctreeSetters();
+  filter->SetInputData(mesh);
   for (const auto& setting : settings)
   {
     const auto setter = setters.find(setting.first);
     if (setter == setters.end())
     {
-      Fail("unknown --set name '" + setting.first + "' for --method octree");
+      Fail("unknown --set name '" + setting.first + "' for --method " + method);
     }
-    setter->second(filter, setting.second);
+    setter->second(setting.second);
   }
 
   std::vector<double> times;
@@ -403,12 +448,25 @@ int main(int argc, char* argv[])
       strips->GetCurrentCell(size, ids);
       inputTriangles += size >= 3 ? size - 2 : 0;
     }
+    // Each method's own error figure: the largest cluster error, or the total squared volume.
+    std::string error;
+    char number[64];
+    if (auto* octree = vtkOctreeVertexClustering::SafeDownCast(filter))
+    {
+      std::snprintf(number, sizeof(number), "%.9g", octree->GetAchievedMaximumError());
+      error = std::string(", \"max_error\": ") + number;
+    }
+    else if (auto* volume = vtkVolumeTriangleCollapse::SafeDownCast(filter))
+    {
+      std::snprintf(number, sizeof(number), "%.9g", volume->GetSquareVolumeError());
+      error = std::string(", \"square_volume_error\": ") + number;
+    }
     std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
-                "\"time_ms\": %.3f, \"threads\": %d, \"max_error\": %.9g}\n",
+                "\"time_ms\": %.3f, \"threads\": %d%s}\n",
       method.c_str(), static_cast<long long>(inputTriangles),
       static_cast<long long>(result->GetNumberOfPolys()), milliseconds,
       threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
-      filter->GetAchievedMaximumError());
+      error.c_str());
   }
   return 0;
 }

@@ -93,6 +93,46 @@ inline bool MinimizeQuadric(const Quadric& q, Eigen::Vector3d& x, double relativ
   return x.allFinite();
 }
 
+/**
+ * The point of least Q closest to a fallback point x0: Q's minimum along the directions in which
+ * it is well conditioned (eigenvalues above relativeTolerance · λmax), x0's coordinate along the
+ * others. With a full-rank Q this is MinimizeQuadric's point; with planes of one direction (a
+ * flat region) it is x0 moved onto them; with two (a crease) x0 moved onto the crease line; with
+ * none, x0. Returns the number of directions Q determined (0–3).
+ */
+inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eigen::Vector3d& x,
+  double relativeTolerance = 1e-6)
+{
+  if (MinimizeQuadric(q, x, relativeTolerance))
+  {
+    return 3;
+  }
+  // Rank-deficient: closed-form eigenvectors are accurate enough for the directions kept (and
+  // where Q has no planes at all, x0 stays exactly).
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(q.A());
+  const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
+  const Eigen::Vector3d gradient = q.A() * x0 + q.B();
+  x = x0;
+  int rank = 0;
+  for (int i = 2; i >= 0; --i)
+  {
+    if (!(lambda(i) > 0.0) || !(lambda(i) > relativeTolerance * lambda(2)))
+    {
+      break;
+    }
+    const Eigen::Vector3d u = eig.eigenvectors().col(i);
+    x -= u * (u.dot(gradient) / lambda(i));
+    ++rank;
+  }
+  if (!x.allFinite())
+  {
+    x = x0;
+    return 0;
+  }
+  return rank;
+}
+
 } // namespace meshsimp
 
 #endif

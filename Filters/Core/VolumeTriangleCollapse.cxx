@@ -31,8 +31,10 @@ private:
   struct Candidate
   {
     CollapsePlan Plan;
+    Quadric Q; // the constriction matrix Q̄
     double Cost = 0.0;
     bool Valid = false;
+    bool FreePlacement = false; // placed by eq. (5)/(8), not by a boundary, lock or feature rule
   };
 
   /// Calls f(j) once for every triangle sharing a vertex with t, t included (Definition 2).
@@ -62,6 +64,7 @@ private:
   void UpdateCurvature(std::int32_t v);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
+  bool OntoCheapestCorner(Candidate& candidate) const;
   void Requeue(std::int32_t t);
   void UpdateAround(std::int32_t kept);
   int CountRemoved(const CollapsePlan& plan) const;
@@ -75,11 +78,12 @@ private:
   std::vector<double> VertexError;       // squared-volume error accumulated at each vertex
   std::vector<double> Deficit;           // angle deficit of each vertex (eq. 6)
   std::vector<double> VertexArea;        // area of its adjacent triangles, A_v
+  std::vector<std::uint8_t> Moved;       // a collapse gave the vertex a new position
   double TotalArea = 0.0;
   CollapseHeap Heap;
-  std::vector<std::uint32_t> VertexMarks, TriangleMarks;
+  std::vector<std::uint32_t> VertexMarks;
   std::uint32_t Stamp = 0;
-  std::vector<std::int32_t> Ring, Region;
+  std::vector<std::int32_t> Ring;
 };
 
 void VolumeCollapser::UpdateGeometry(std::int32_t t)
@@ -256,14 +260,17 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
       const Vec3& p2 = this->Mesh.Point(v[2]);
       const double longest = std::max({ (p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm() });
       const Vec3 centroid = (p0 + p1 + p2) / 3.0;
-      if (!MinimizeQuadric(q, x) || (x - centroid).norm() > 2.0 * longest)
+      // Eq. (8): the blend weighted by the corners' adjacent areas; eq. (5)'s minimiser where
+      // Q̄ is well conditioned, and along its well-conditioned directions only where it is not
+      // (a flat region keeps the blend, a crease keeps the blend's place along it).
+      const double sum = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
+      const Vec3 blend = sum > 0.0
+        ? Vec3((this->VertexArea[v[0]] * p0 + this->VertexArea[v[1]] * p1 + this->VertexArea[v[2]] * p2) / sum)
+        : centroid;
+      MinimizeQuadricNear(q, blend, x);
+      if ((x - centroid).norm() > 2.0 * longest)
       {
-        // Eq. (8): the blend weighted by the corners' adjacent areas.
-        const double sum = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
-        x = sum > 0.0 ? Vec3((this->VertexArea[v[0]] * p0 + this->VertexArea[v[1]] * p1 +
-                               this->VertexArea[v[2]] * p2) /
-                          sum)
-                      : centroid;
+        x = blend; // a far minimiser of a barely conditioned Q̄ would make a spike
       }
       // Attribute weights: barycentric coordinates of x projected onto the triangle, clamped.
       const Vec3 n = (p1 - p0).cross(p2 - p0);
@@ -282,6 +289,7 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
       }
       const int kept = w[0] >= w[1] && w[0] >= w[2] ? 0 : w[1] >= w[2] ? 1 : 2;
       ontoCorner(kept);
+      candidate.FreePlacement = true;
       plan.Position = x;
       for (int i = 0; i < 3; ++i)
       {
@@ -289,9 +297,36 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
       }
     }
   }
+  candidate.Q = q;
   candidate.Cost = q.Evaluate(plan.Position); // eq. (5)
   candidate.Valid = std::isfinite(candidate.Cost);
   return candidate;
+}
+
+bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate) const
+{
+  // When the free placement folds or degenerates the mesh, the triangle may still collapse onto
+  // one of its corners: the legal one of least eq. (5) error.
+  const CollapsePlan original = candidate.Plan;
+  bool found = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    CollapsePlan plan;
+    plan.Count = 3;
+    for (int i = 0; i < 3; ++i)
+    {
+      plan.Vertices[i] = original.Vertices[(k + i) % 3];
+    }
+    plan.Position = this->Mesh.Point(plan.Vertices[0]);
+    const double cost = candidate.Q.Evaluate(plan.Position);
+    if ((!found || cost < candidate.Cost) && this->Mesh.IsLegal(plan))
+    {
+      candidate.Plan = plan;
+      candidate.Cost = cost;
+      found = true;
+    }
+  }
+  return found;
 }
 
 void VolumeCollapser::Requeue(std::int32_t t)
@@ -309,12 +344,12 @@ void VolumeCollapser::Requeue(std::int32_t t)
 
 void VolumeCollapser::UpdateAround(std::int32_t kept)
 {
-  // The kept vertex's triangles changed shape; the angle sums of their corners changed; the
-  // quadrics of every triangle sharing one of those corners saw a neighbour's normal change,
-  // and so did their constriction matrices.
-  this->Ring.clear();
-  this->Region.clear();
+  // The new vertex's triangles changed shape, and the angle sums of their corners changed: their
+  // geometry, quadrics and costs are updated at once. The costs of triangles further out (their
+  // constriction matrices hold some of these quadrics) are refreshed when they reach the top of
+  // the heap; the normal factors of triangles further out when a collapse next moves them.
   const std::uint32_t mark = ++this->Stamp;
+  this->Ring.clear();
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) {
     this->UpdateGeometry(t);
     const std::int32_t* tri = this->Mesh.Triangle(t);
@@ -330,22 +365,9 @@ void VolumeCollapser::UpdateAround(std::int32_t kept)
   for (const std::int32_t v : this->Ring)
   {
     this->UpdateCurvature(v);
-    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-      if (this->TriangleMarks[t] != mark)
-      {
-        this->TriangleMarks[t] = mark;
-        this->Region.push_back(t);
-      }
-    });
   }
-  for (const std::int32_t t : this->Region)
-  {
-    this->UpdateQuadric(t);
-  }
-  for (const std::int32_t t : this->Region)
-  {
-    this->Requeue(t);
-  }
+  this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->UpdateQuadric(t); });
+  this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->Requeue(t); });
 }
 
 int VolumeCollapser::CountRemoved(const CollapsePlan& plan) const
@@ -410,10 +432,10 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
   this->Areas.resize(m);
   this->TriangleQuadrics.resize(m);
   this->VertexError.assign(n, 0.0);
+  this->Moved.assign(n, 0);
   this->Deficit.resize(n);
   this->VertexArea.resize(n);
   this->VertexMarks.assign(n, 0);
-  this->TriangleMarks.assign(m, 0);
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
@@ -436,22 +458,25 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
   {
     this->TotalArea += a;
   }
-  std::vector<Candidate> initial(m);
+  // Initial costs in parallel, queued in triangle order (the heap's tie rule makes that order
+  // count).
+  std::vector<double> initial(m);
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
-      initial[t] = this->Evaluate(static_cast<std::int32_t>(t));
+      const Candidate candidate = this->Evaluate(static_cast<std::int32_t>(t));
+      initial[t] = candidate.Valid ? candidate.Cost : -1.0;
     }
   }, 32 * static_cast<std::int64_t>(m));
   this->Heap.Reset(m);
   for (std::int32_t t = 0; t < m; ++t)
   {
-    if (initial[t].Valid)
+    if (initial[t] >= 0.0)
     {
-      this->Heap.Set(t, initial[t].Cost);
+      this->Heap.Set(t, initial[t]);
     }
   }
-  std::vector<Candidate>().swap(initial);
+  std::vector<double>().swap(initial);
   if (!this->Context.Report(0.1))
   {
     return false;
@@ -486,7 +511,15 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     }
     if (!this->Mesh.IsLegal(candidate.Plan))
     {
-      continue;
+      if (!candidate.FreePlacement || !this->OntoCheapestCorner(candidate))
+      {
+        continue; // until a collapse nearby requeues it
+      }
+      if (!this->Heap.Empty() && candidate.Cost > this->Heap.TopCost())
+      {
+        this->Heap.Set(t, candidate.Cost);
+        continue;
+      }
     }
     CollapsePlan& plan = candidate.Plan;
     const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
@@ -514,6 +547,7 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     {
       error += this->VertexError[plan.Vertices[i]];
     }
+    this->Moved[kept] |= plan.Position != this->Mesh.Point(kept) ? 1 : 0;
     this->Mesh.Apply(plan, this->Options.KeepUndo);
     this->VertexError[kept] = error;
     result.SquareVolumeError += candidate.Cost;
@@ -550,7 +584,9 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
       continue;
     }
     outputIndex[v] = static_cast<std::int32_t>(result.PointSource.size());
-    const Vec3 p = this->Mesh.Point(v) / scale + origin;
+    // Points no collapse moved keep their input coordinates bit for bit.
+    const Vec3 p = this->Moved[v] ? Vec3(this->Mesh.Point(v) / scale + origin)
+                                  : input.Point(inputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(inputVertex[v]);
     result.PointError.push_back(this->VertexError[v] * scale8);

@@ -58,7 +58,7 @@ struct VolumeCollapseOptions
   bool PreserveBoundary = false;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
-  bool UseShapeFactor = true;
+  bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
   bool UseNormalFactor = true;
   bool UseVolumeWeights = true;
   /// Keep what undoing each collapse needs in the result's records (progressive meshes).

@@ -21,12 +21,27 @@ if (NOT EXISTS "${OUTPUT}")
   message(FATAL_ERROR "no output file ${OUTPUT}")
 endif ()
 
+# The volume method: counts within 1 %, its own error figure.
+execute_process(
+  COMMAND "${TOOL}" --method volume --target-triangles 1000 --json "${INPUT}" "${OUTPUT}"
+  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT code EQUAL 0)
+  message(FATAL_ERROR "meshsimplify --method volume failed (${code}): ${err}")
+endif ()
+string(JSON output_triangles GET "${out}" output_triangles)
+string(JSON square_volume_error GET "${out}" square_volume_error)
+if (output_triangles LESS 990 OR output_triangles GREATER 1010 OR NOT square_volume_error GREATER 0)
+  message(FATAL_ERROR "unexpected volume result: ${out}")
+endif ()
+
 foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--method;octree;--reduction;abc;${INPUT};${OUTPUT}"
                       "--method;octree;--reduction;1.5;${INPUT};${OUTPUT}"
                       "--method;octree;/nonexistent/mesh.off;${OUTPUT}"
                       "--method;octree;${INPUT};${OUTPUT}.xyz"
-                      "--method;octree;--set;Nope=1;${INPUT};${OUTPUT}")
+                      "--method;octree;--set;Nope=1;${INPUT};${OUTPUT}"
+                      "--method;volume;--max-error;0.1;${INPUT};${OUTPUT}"
+                      "--method;volume;--set;MaximumCellSize=1;${INPUT};${OUTPUT}")
   execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
     message(FATAL_ERROR "expected a clean failure for '${bad}', got ${code}: ${err}")

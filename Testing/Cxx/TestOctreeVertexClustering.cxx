@@ -29,59 +29,6 @@
 namespace
 {
 
-/// The cow with point arrays of every kind (scalars, vectors, normals, colours, texture
-/// coordinates, a constant) and a cell-id array.
-vtkSmartPointer<vtkPolyData> DecoratedCow()
-{
-  vtkNew<vtkOFFReader> reader;
-  reader->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
-  vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(reader->GetOutputPort());
-  normals->SplittingOff();
-  normals->ComputeCellNormalsOn();
-  normals->Update();
-  auto cow = vtkSmartPointer<vtkPolyData>::New();
-  cow->DeepCopy(normals->GetOutput());
-
-  const vtkIdType n = cow->GetNumberOfPoints();
-  vtkNew<vtkDoubleArray> height;
-  height->SetName("Height");
-  vtkNew<vtkFloatArray> velocity;
-  velocity->SetName("Velocity");
-  velocity->SetNumberOfComponents(3);
-  vtkNew<vtkUnsignedCharArray> colors;
-  colors->SetName("Colors");
-  colors->SetNumberOfComponents(3);
-  vtkNew<vtkFloatArray> tcoords;
-  tcoords->SetName("TCoords");
-  tcoords->SetNumberOfComponents(2);
-  vtkNew<vtkDoubleArray> constant;
-  constant->SetName("Constant");
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    cow->GetPoint(i, p);
-    height->InsertNextValue(p[1]);
-    velocity->InsertNextTuple3(p[0], 2 * p[1], -p[2]);
-    colors->InsertNextTuple3(i % 256, 128, 255 - i % 256);
-    tcoords->InsertNextTuple2(p[0], p[2]);
-    constant->InsertNextValue(7.25);
-  }
-  cow->GetPointData()->SetScalars(height);
-  cow->GetPointData()->SetVectors(velocity);
-  cow->GetPointData()->AddArray(colors);
-  cow->GetPointData()->SetTCoords(tcoords);
-  cow->GetPointData()->AddArray(constant);
-  vtkNew<vtkIdTypeArray> cellIds;
-  cellIds->SetName("SourceCell");
-  for (vtkIdType c = 0; c < cow->GetNumberOfCells(); ++c)
-  {
-    cellIds->InsertNextValue(c);
-  }
-  cow->GetCellData()->AddArray(cellIds);
-  return cow;
-}
-
 void TestTargetsAndAttributes(vtkPolyData* cow)
 {
   const double inputTriangles = cow->GetNumberOfPolys();
@@ -285,7 +232,7 @@ void TestTriangleCountMode(vtkPolyData* cow)
 
 int TestOctreeVertexClustering(int, char*[])
 {
-  vtkSmartPointer<vtkPolyData> cow = DecoratedCow();
+  vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
   CHECK(cow->GetNumberOfPolys() == 5804);
   TestTargetsAndAttributes(cow);
   TestErrorBound(cow);

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Baseline images of vtkOctreeVertexClustering: the cow at 90 % reduction (flat shading with
-// edges) and the Jacksboro terrain at 95 % coloured by the carried elevation array.
-//   TestOctreeVertexClusteringImage Cow|Terrain -V baseline.png -T temporary/
-#include "vtkOFFReader.h"
-#include "vtkOctreeVertexClustering.h"
+// The baseline-image scenes of the filter tests: the cow in flat shading with edges, and the
+// Jacksboro terrain coloured by its carried elevation array.
+#ifndef MeshSimplification_TestImageHelpers_h
+#define MeshSimplification_TestImageHelpers_h
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -15,31 +14,16 @@
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkXMLPolyDataReader.h"
 
-#include <cstring>
+#include <cstdlib>
 #include <iostream>
 
-int TestOctreeVertexClusteringImage(int argc, char* argv[])
+namespace meshsimp_test
 {
-  const bool terrain = argc > 1 && std::strcmp(argv[1], "Terrain") == 0;
-  vtkNew<vtkOctreeVertexClustering> filter;
-  vtkNew<vtkOFFReader> cow;
-  vtkNew<vtkXMLPolyDataReader> dem;
-  if (terrain)
-  {
-    dem->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/jacksboro_dem_half.vtp");
-    filter->SetInputConnection(dem->GetOutputPort());
-    filter->SetTargetReduction(0.95);
-  }
-  else
-  {
-    cow->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
-    filter->SetInputConnection(cow->GetOutputPort());
-    filter->SetTargetReduction(0.9);
-  }
-  filter->Update();
-  vtkPolyData* output = filter->GetOutput();
+/// Renders a filter's output in one of the two scenes and compares it with the baseline given
+/// by -V in argv; returns a process exit code.
+inline int CompareWithBaseline(vtkPolyData* output, bool terrain, int argc, char* argv[])
+{
   if (output->GetNumberOfPolys() == 0)
   {
     std::cerr << "no output triangles\n";
@@ -91,3 +75,6 @@ int TestOctreeVertexClusteringImage(int argc, char* argv[])
   const int result = vtkRegressionTestImageThreshold(window, 0.05);
   return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }
+}
+
+#endif

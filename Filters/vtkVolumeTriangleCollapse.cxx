@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkVolumeTriangleCollapse.h"
+
+#include "VolumeTriangleCollapse.h"
+#include "vtkMeshSimplificationHelpers.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkVolumeTriangleCollapse);
+
+vtkVolumeTriangleCollapse::vtkVolumeTriangleCollapse() = default;
+
+namespace
+{
+/// Every point array of the input, replayed through the collapse records and gathered at the
+/// output points; arrays that are not numeric take the value of the surviving point.
+void InterpolatePointData(vtkPointData* inPD, vtkPointData* outPD,
+  const meshsimp::VolumeCollapseResult& result)
+{
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.PointSource.size());
+  outPD->CopyAllocate(inPD, numberOfPoints);
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    outPD->CopyData(inPD, result.PointSource[p], p);
+  }
+  std::vector<double> table;
+  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* in = inPD->GetArray(a);
+    vtkDataArray* out = in && in->GetName() ? outPD->GetArray(in->GetName()) : nullptr;
+    if (!in || !out || in->GetNumberOfTuples() == 0)
+    {
+      continue;
+    }
+    const int components = in->GetNumberOfComponents();
+    const vtkIdType n = in->GetNumberOfTuples();
+    table.resize(static_cast<std::size_t>(n) * components);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      in->GetTuple(i, table.data() + i * components);
+    }
+    meshsimp::InterpolateAttributes(result.Records, table.data(), components);
+    const bool integral = in->GetDataType() != VTK_FLOAT && in->GetDataType() != VTK_DOUBLE;
+    for (vtkIdType p = 0; p < numberOfPoints; ++p)
+    {
+      double* value = table.data() + static_cast<vtkIdType>(result.PointSource[p]) * components;
+      if (integral)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          value[c] = std::round(value[c]);
+        }
+      }
+      out->SetTuple(p, value);
+    }
+  }
+}
+}
+
+int vtkVolumeTriangleCollapse::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->SquareVolumeError = 0.0;
+
+  vtkMeshSimplificationHelpers::TriangleInput triangles;
+  std::string problem;
+  if (!vtkMeshSimplificationHelpers::ExtractTriangles(input, triangles, problem))
+  {
+    vtkErrorMacro(<< "Cannot simplify: " << problem << ".");
+    return 0;
+  }
+  if (triangles.NumberOfVerts + triangles.NumberOfLines > 0)
+  {
+    vtkWarningMacro(<< "Dropping " << triangles.NumberOfVerts << " vertex and "
+                    << triangles.NumberOfLines
+                    << " line cells: only triangles, polygons and strips are simplified.");
+  }
+  if (triangles.View.NumberOfTriangles == 0)
+  {
+    vtkDebugMacro(<< "No triangles to simplify.");
+    return 1;
+  }
+
+  meshsimp::VolumeCollapseOptions options;
+  const std::int64_t inputTriangles = triangles.View.NumberOfTriangles;
+  options.TargetTriangles = this->TargetMode == TARGET_TRIANGLE_COUNT
+    ? static_cast<std::int64_t>(this->TargetTriangleCount)
+    : static_cast<std::int64_t>(std::llround(inputTriangles * (1.0 - this->TargetReduction)));
+  options.FeatureCurvature = this->FeatureCurvature;
+  options.PreserveBoundary = this->PreserveBoundary;
+  options.BoundaryCornerAngle = this->BoundaryCornerAngle;
+  options.UseNormalFactor = this->UseNormalFactor;
+  options.UseShapeFactor = this->UseShapeFactor;
+  options.UseVolumeWeights = this->UseVolumeWeights;
+
+  meshsimp::VolumeCollapseResult result;
+  const bool finished = meshsimp::VolumeTriangleCollapse(triangles.View, options, result,
+    vtkMeshSimplificationHelpers::MakeExecutionContext(this, this->NumberOfThreads));
+  if (result.NonFinitePoints > 0)
+  {
+    vtkWarningMacro(<< "Ignoring the triangles of " << result.NonFinitePoints
+                    << " points with NaN or infinite coordinates.");
+  }
+  if (!finished)
+  {
+    vtkWarningMacro(<< "Aborted: the output is empty.");
+    return 1;
+  }
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.PointSource.size());
+  const vtkIdType numberOfTriangles = static_cast<vtkIdType>(result.TriangleSource.size());
+  if (result.StoppedEarly)
+  {
+    vtkWarningMacro(<< "Stopped at " << numberOfTriangles << " triangles ("
+                    << result.TargetTriangles
+                    << " asked for): no collapse is left that keeps the mesh valid.");
+  }
+
+  output->SetPoints(vtkMeshSimplificationHelpers::MakePoints(
+    result.Points, this->OutputPointsPrecision, input->GetPoints()));
+  output->SetPolys(vtkMeshSimplificationHelpers::MakeTriangles(result.Triangles));
+
+  vtkPointData* outPD = output->GetPointData();
+  InterpolatePointData(input->GetPointData(), outPD, result);
+  if (vtkDataArray* normals = outPD->GetNormals())
+  {
+    vtkMeshSimplificationHelpers::ComputePointNormals(result.Points, result.Triangles, normals);
+  }
+  vtkNew<vtkDoubleArray> pointError;
+  pointError->SetName("SquareVolumeError");
+  pointError->SetNumberOfValues(numberOfPoints);
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    pointError->SetValue(p, result.PointError[p]);
+  }
+  outPD->AddArray(pointError);
+
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(inCD, numberOfTriangles);
+  for (vtkIdType i = 0; i < numberOfTriangles; ++i)
+  {
+    outCD->CopyData(inCD, triangles.SourceCell(result.TriangleSource[i]), i);
+  }
+  if (vtkDataArray* normals = outCD->GetNormals())
+  {
+    vtkMeshSimplificationHelpers::ComputeCellNormals(result.Points, result.Triangles, normals);
+  }
+
+  output->GetFieldData()->PassData(input->GetFieldData());
+  this->SquareVolumeError = result.SquareVolumeError;
+  vtkNew<vtkDoubleArray> totalError;
+  totalError->SetName("SquareVolumeError");
+  totalError->InsertNextValue(result.SquareVolumeError);
+  output->GetFieldData()->AddArray(totalError);
+  vtkNew<vtkDoubleArray> reduction;
+  reduction->SetName("AchievedReduction");
+  reduction->InsertNextValue(1.0 - static_cast<double>(numberOfTriangles) / inputTriangles);
+  output->GetFieldData()->AddArray(reduction);
+  return 1;
+}
+
+void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetMode: " << this->TargetMode << "\n";
+  os << indent << "TargetReduction: " << this->TargetReduction << "\n";
+  os << indent << "TargetTriangleCount: " << this->TargetTriangleCount << "\n";
+  os << indent << "FeatureCurvature: " << this->FeatureCurvature << "\n";
+  os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
+  os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";
+  os << indent << "UseNormalFactor: " << this->UseNormalFactor << "\n";
+  os << indent << "UseShapeFactor: " << this->UseShapeFactor << "\n";
+  os << indent << "UseVolumeWeights: " << this->UseVolumeWeights << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "SquareVolumeError: " << this->SquareVolumeError << "\n";
+}

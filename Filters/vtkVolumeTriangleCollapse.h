@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkVolumeTriangleCollapse
+ * @brief   simplify a triangle mesh by collapsing triangles in order of squared volume error
+ *
+ * vtkVolumeTriangleCollapse implements Zhou, Zhang and Cheng, "Mesh simplification by volume
+ * variation with feature preserving". Each step collapses the triangle of least constriction
+ * error into one new vertex, removing it and its (up to three) edge neighbours:
+ *
+ * - the error of a collapse is the weighted sum of the squared volumes of the tetrahedra between
+ *   the new vertex and the triangle's neighbourhood (every triangle sharing one of its
+ *   vertices), eq. (2)–(5); each triangle's term is weighted by a normal factor (how much it
+ *   bends against its neighbours), optionally a shape factor (bad triangles go first) and a
+ *   constraint weight that grows with the error already absorbed around it (UseNormalFactor,
+ *   UseShapeFactor, UseVolumeWeights);
+ * - the new vertex minimises that error where it is well determined, else it is the
+ *   area-weighted blend of the three corners (eq. 8) — along a crease, the blend moved onto the
+ *   crease;
+ * - a triangle of high Gauss curvature (a corner, a tip: FeatureCurvature, eq. 6–7) collapses
+ *   onto its corner of largest curvature instead;
+ * - on open meshes a triangle with one boundary vertex collapses onto it, one with two onto the
+ *   best point of the segment between them; sharp boundary corners never move, and
+ *   PreserveBoundary keeps the whole boundary in place;
+ * - every collapse keeps the mesh manifold (link condition), never folds a triangle over and
+ *   never makes one degenerate; a closed 2-manifold input gives a closed 2-manifold output.
+ *
+ * The triangle count is met within 1 % (TargetReduction or TargetTriangleCount); the filter
+ * stops early, with a warning, only when no legal collapse is left.
+ *
+ * Polygons are triangulated and strips decomposed first; vertex and line cells are dropped (a
+ * warning says how many); triangles with repeated point ids or non-finite points are ignored.
+ * Non-manifold vertices are kept in place.
+ *
+ * Every point-data array is interpolated to each new vertex with the weights of its placement
+ * (barycentric, along the boundary edge, or all on the corner it collapsed onto); normals are
+ * recomputed. Cell data is copied from the input cell of each surviving triangle. The point
+ * array "SquareVolumeError" holds the error accumulated at each output point; the field data
+ * holds "SquareVolumeError" (the sum over all collapses, the paper's ΔV) and
+ * "AchievedReduction".
+ *
+ * @sa vtkQuadricDecimation vtkDecimatePro vtkOctreeVertexClustering
+ */
+#ifndef vtkVolumeTriangleCollapse_h
+#define vtkVolumeTriangleCollapse_h
+
+#include "MeshSimplificationFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkVolumeTriangleCollapse : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkVolumeTriangleCollapse* New();
+  vtkTypeMacro(vtkVolumeTriangleCollapse, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum TargetModes
+  {
+    TARGET_REDUCTION = 0,
+    TARGET_TRIANGLE_COUNT = 1
+  };
+
+  ///@{
+  /**
+   * What decides how far to simplify: TargetReduction (default) or TargetTriangleCount.
+   */
+  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_TRIANGLE_COUNT);
+  vtkGetMacro(TargetMode, int);
+  void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
+  void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
+  ///@}
+
+  ///@{
+  /**
+   * Fraction of the input triangles to remove, as in vtkQuadricDecimation (default 0.9).
+   */
+  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of output triangles wanted in TargetTriangleCount mode (default 1000).
+   */
+  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Gauss-curvature threshold of strong features (eq. 6–7), dimensionless: a triangle's
+   * curvature times the current mean triangle area (a cube's corner is about 0.09, smooth
+   * regions far less). Default 0.05; 0 turns the rule off.
+   */
+  vtkSetClampMacro(FeatureCurvature, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(FeatureCurvature, double);
+  ///@}
+
+  ///@{
+  /**
+   * Keep every boundary vertex in place (default off). Boundary corners sharper than
+   * BoundaryCornerAngle (degrees, default 60) never move either way.
+   */
+  vtkSetMacro(PreserveBoundary, bool);
+  vtkGetMacro(PreserveBoundary, bool);
+  vtkBooleanMacro(PreserveBoundary, bool);
+  vtkSetClampMacro(BoundaryCornerAngle, double, 0.0, 180.0);
+  vtkGetMacro(BoundaryCornerAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * The factors of each triangle's error term (§3.1–3.2): the normal constraint factor
+   * (default on), the shape factor 2 (1 − cos min α) · S (default off: it makes slivers cheap
+   * to collapse, which on CAD meshes removes creases), and the constraint weight of the error
+   * already accumulated (default on).
+   */
+  vtkSetMacro(UseNormalFactor, bool);
+  vtkGetMacro(UseNormalFactor, bool);
+  vtkBooleanMacro(UseNormalFactor, bool);
+  vtkSetMacro(UseShapeFactor, bool);
+  vtkGetMacro(UseShapeFactor, bool);
+  vtkBooleanMacro(UseShapeFactor, bool);
+  vtkSetMacro(UseVolumeWeights, bool);
+  vtkGetMacro(UseVolumeWeights, bool);
+  vtkBooleanMacro(UseVolumeWeights, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Threads for the set-up (per-triangle matrices and first costs); 0 (default) uses all
+   * cores. The collapses themselves run in order, and the output does not depend on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * vtkAlgorithm::DEFAULT_PRECISION (default: as the input), SINGLE_PRECISION or
+   * DOUBLE_PRECISION for the output points.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  /**
+   * Sum of the collapse errors of the last execution (the paper's ΔV), in input units.
+   */
+  vtkGetMacro(SquareVolumeError, double);
+
+protected:
+  vtkVolumeTriangleCollapse();
+  ~vtkVolumeTriangleCollapse() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int TargetMode = TARGET_REDUCTION;
+  double TargetReduction = 0.9;
+  vtkIdType TargetTriangleCount = 1000;
+  double FeatureCurvature = 0.05;
+  bool PreserveBoundary = false;
+  double BoundaryCornerAngle = 60.0;
+  bool UseNormalFactor = true;
+  bool UseShapeFactor = false;
+  bool UseVolumeWeights = true;
+  int NumberOfThreads = 0;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
+  double SquareVolumeError = 0.0;
+
+private:
+  vtkVolumeTriangleCollapse(const vtkVolumeTriangleCollapse&) = delete;
+  void operator=(const vtkVolumeTriangleCollapse&) = delete;
+};
+
+#endif

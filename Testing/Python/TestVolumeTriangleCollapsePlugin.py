@@ -1,0 +1,69 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Volume Triangle Collapse through the ParaView plugin (pvpython).
+
+Loads the built plugin, simplifies the cow by reduction and by triangle count, checks the error
+arrays and that the closed cow stays closed, and simplifies a multiblock input block by block.
+"""
+import argparse
+import os
+import sys
+
+from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
+from paraview import servermanager
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--plugin", required=True)
+parser.add_argument("--data", required=True)
+args, _ = parser.parse_known_args()
+
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("check failed:", message, file=sys.stderr)
+
+
+LoadPlugin(args.plugin, ns=globals())
+
+cow = OFFReader(FileName=os.path.join(args.data, "cow.off"))
+simplified = VolumeTriangleCollapse(Input=cow)
+check(simplified.TargetReduction == 0.9, "default TargetReduction is 0.9")
+check(simplified.UseShapeFactor == 0 and simplified.UseNormalFactor == 1, "factor defaults")
+simplified.UpdatePipeline()
+cells = simplified.GetDataInformation().GetNumberOfCells()
+check(abs(cells - 580) <= 0.01 * 580, "90 %% reduction gives 580 +- 1 %% triangles, got %d" % cells)
+check("SquareVolumeError" in simplified.PointData.keys(), "the error array is present")
+
+output = servermanager.Fetch(simplified)
+total = output.GetFieldData().GetArray("SquareVolumeError")
+reduction = output.GetFieldData().GetArray("AchievedReduction")
+check(total is not None and total.GetValue(0) > 0, "total squared volume error in the field data")
+check(reduction is not None and abs(reduction.GetValue(0) - (1 - cells / 5804.0)) < 1e-12,
+      "achieved reduction in the field data")
+
+# The closed cow stays a closed 2-manifold.
+edges = FeatureEdges(Input=simplified, BoundaryEdges=1, NonManifoldEdges=1, FeatureEdges=0,
+                     ManifoldEdges=0)
+edges.UpdatePipeline()
+check(edges.GetDataInformation().GetNumberOfCells() == 0, "no boundary or non-manifold edge")
+
+simplified.TargetMode = "Triangle Count"
+simplified.TargetTriangleCount = 1000
+simplified.UpdatePipeline()
+cells = simplified.GetDataInformation().GetNumberOfCells()
+check(abs(cells - 1000) <= 10, "triangle count 1000 +- 1 %%, got %d" % cells)
+
+# A multiblock input is simplified block by block.
+terrain = XMLPolyDataReader(FileName=[os.path.join(args.data, "jacksboro_dem_half.vtp")])
+group = GroupDatasets(Input=[cow, terrain])
+blocks = VolumeTriangleCollapse(Input=group, TargetReduction=0.95)
+blocks.UpdatePipeline()
+expected = round(5804 * 0.05) + round(68742 * 0.05)
+got = blocks.GetDataInformation().GetNumberOfCells()
+check(abs(got - expected) <= 0.01 * expected, "multiblock: %d cells for about %d" % (got, expected))
+check("elevation" in blocks.PointData.keys(), "the terrain's elevation is carried")
+
+print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
+sys.exit(1 if failures else 0)
