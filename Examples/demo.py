@@ -73,3 +73,14 @@ bounded = OctreeVertexClustering(Input=terrain, TargetMode="Maximum Error", Maxi
 SaveData(os.path.join(args.output, "terrain_octree_error0.005.vtp"), proxy=bounded)
 side_by_side(terrain, bounded, "ClusterError", "terrain-error",
              os.path.join(args.output, "terrain_octree_error0.005.png"), terrain_camera)
+
+# Volume Triangle Collapse: the closed cow stays closed; coloured by the squared volume error
+# each output point absorbed.
+cow_volume = VolumeTriangleCollapse(Input=cow, TargetReduction=0.9)
+SaveData(os.path.join(args.output, "cow_volume_90.vtp"), proxy=cow_volume)
+side_by_side(cow, cow_volume, "SquareVolumeError", "cow-volume",
+             os.path.join(args.output, "cow_volume_90.png"), cow_camera)
+terrain_volume = VolumeTriangleCollapse(Input=terrain, TargetReduction=0.95)
+SaveData(os.path.join(args.output, "terrain_volume_95.vtp"), proxy=terrain_volume)
+side_by_side(terrain, terrain_volume, "elevation", "terrain-volume",
+             os.path.join(args.output, "terrain_volume_95.png"), terrain_camera)
