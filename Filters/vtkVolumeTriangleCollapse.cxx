@@ -104,6 +104,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   options.UseNormalFactor = this->UseNormalFactor;
   options.UseShapeFactor = this->UseShapeFactor;
   options.UseVolumeWeights = this->UseVolumeWeights;
+  options.MinimumAngle = this->MinimumAngle;
 
   meshsimp::VolumeCollapseResult result;
   const bool finished = meshsimp::VolumeTriangleCollapse(triangles.View, options, result,
@@ -183,6 +184,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseNormalFactor: " << this->UseNormalFactor << "\n";
   os << indent << "UseShapeFactor: " << this->UseShapeFactor << "\n";
   os << indent << "UseVolumeWeights: " << this->UseVolumeWeights << "\n";
+  os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "SquareVolumeError: " << this->SquareVolumeError << "\n";

@@ -127,6 +127,17 @@ public:
 
   ///@{
   /**
+   * The angle guard, in degrees: no collapse may create an angle below it unless the collapsed
+   * neighbourhood already had one as small. 0 (default) turns it off. At 10 degrees it cuts the
+   * share of slivers to about vtkQuadricDecimation's on most meshes, at the price of larger
+   * distances.
+   */
+  vtkSetClampMacro(MinimumAngle, double, 0.0, 30.0);
+  vtkGetMacro(MinimumAngle, double);
+  ///@}
+
+  ///@{
+  /**
    * Threads for the set-up (per-triangle matrices and first costs); 0 (default) uses all
    * cores. The collapses themselves run in order, and the output does not depend on it.
    */
@@ -163,6 +174,7 @@ protected:
   bool UseNormalFactor = true;
   bool UseShapeFactor = false;
   bool UseVolumeWeights = true;
+  double MinimumAngle = 0.0;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   double SquareVolumeError = 0.0;

@@ -84,6 +84,21 @@ bool Contains(const std::int32_t* tri, std::int32_t v)
 {
   return tri[0] == v || tri[1] == v || tri[2] == v;
 }
+
+/// The cosine of a triangle's smallest angle (the largest of its three cosines).
+double SmallestAngleCosine(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d* p[3] = { &a, &b, &c };
+  double largest = -1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Eigen::Vector3d e1 = *p[(k + 1) % 3] - *p[k];
+    const Eigen::Vector3d e2 = *p[(k + 2) % 3] - *p[k];
+    const double lengths = e1.norm() * e2.norm();
+    largest = std::max(largest, lengths > 0.0 ? e1.dot(e2) / lengths : 1.0);
+  }
+  return largest;
+}
 } // namespace
 
 void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees)
@@ -307,6 +322,8 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
 bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
 {
   const Eigen::Vector3d& x = plan.Position;
+  const bool guardAngles = this->MinimumAngleCosine < 1.0;
+  double worstBefore = -1.0, worstAfter = -1.0; // cosines of the smallest angles
   for (int i = 0; i < plan.Count; ++i)
   {
     const std::int32_t s = plan.Vertices[i];
@@ -322,14 +339,18 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       {
         inside += Contains(tri, plan.Vertices[j]) ? 1 : 0;
       }
-      if (inside > 1)
-      {
-        return; // removed by the collapse
-      }
       const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
       const Eigen::Vector3d& p = this->Points[tri[(k + 1) % 3]];
       const Eigen::Vector3d& q = this->Points[tri[(k + 2) % 3]];
       const Eigen::Vector3d& old = this->Points[s];
+      if (guardAngles)
+      {
+        worstBefore = std::max(worstBefore, SmallestAngleCosine(old, p, q));
+      }
+      if (inside > 1)
+      {
+        return; // removed by the collapse
+      }
       const Eigen::Vector3d edge = q - p;
       const Eigen::Vector3d normal = (p - old).cross(q - old);
       // Paper 001 §5.3: the plane through the opposite edge, perpendicular to the triangle.
@@ -345,13 +366,23 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       // plane-side test already: both measure which side of the edge x is on.)
       const Eigen::Vector3d newNormal = (p - x).cross(q - x);
       ok = newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm();
+      if (guardAngles)
+      {
+        worstAfter = std::max(worstAfter, SmallestAngleCosine(x, p, q));
+      }
     });
     if (!ok)
     {
       return false;
     }
   }
-  return true;
+  // The angle guard: no new angle below the minimum unless the neighbourhood had one as small.
+  return !guardAngles || worstAfter <= this->MinimumAngleCosine || worstAfter <= worstBefore;
+}
+
+void CollapseMesh::SetMinimumAngle(double degrees)
+{
+  this->MinimumAngleCosine = degrees > 0.0 ? std::cos(degrees * 3.14159265358979323846 / 180.0) : 1.0;
 }
 
 bool CollapseMesh::IsLegal(const CollapsePlan& plan) const

@@ -24,7 +24,9 @@
  *   interior; no vertex falls below three neighbours;
  * - no fold-over, by the plane-side test of paper 001 §5.3: the new position stays on the inner
  *   side of the plane through every opposite edge perpendicular to its triangle;
- * - no degenerate triangle: every changed triangle keeps a non-zero area.
+ * - no degenerate triangle: every changed triangle keeps a non-zero area;
+ * - optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
+ *   neighbourhood already had one as small, so simplification does not breed slivers.
  */
 #ifndef MeshSimplification_CollapseMesh_h
 #define MeshSimplification_CollapseMesh_h
@@ -115,6 +117,9 @@ public:
   /// Whether the plan passes every check listed at the top of this file.
   bool IsLegal(const CollapsePlan& plan) const;
 
+  /// The angle guard's minimum in degrees; 0 (default) turns it off.
+  void SetMinimumAngle(double degrees);
+
   /**
    * Applies a legal plan and appends its record. Returns the number of triangles removed.
    * With keepUndo false the record keeps only the attribute weights (no undo, less memory).
@@ -148,6 +153,8 @@ private:
   std::vector<std::int32_t> Start, Count; // per vertex, into Refs
   std::vector<std::int32_t> Refs;
   std::int64_t LiveRefs = 0;
+
+  double MinimumAngleCosine = 1.0;
 
   std::vector<CollapseRecord> History;
   std::vector<std::int32_t> Changes;          // per change: corner (3 t + k), old vertex

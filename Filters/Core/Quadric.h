@@ -12,6 +12,7 @@
 #define MeshSimplification_Quadric_h
 
 #include <Eigen/Core>
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 namespace meshsimp
@@ -52,6 +53,21 @@ struct Quadric
     B1 += o.B1;
     B2 += o.B2;
     C += o.C;
+    return *this;
+  }
+
+  Quadric& operator-=(const Quadric& o)
+  {
+    A00 -= o.A00;
+    A01 -= o.A01;
+    A02 -= o.A02;
+    A11 -= o.A11;
+    A12 -= o.A12;
+    A22 -= o.A22;
+    B0 -= o.B0;
+    B1 -= o.B1;
+    B2 -= o.B2;
+    C -= o.C;
     return *this;
   }
 
@@ -103,16 +119,29 @@ inline bool MinimizeQuadric(const Quadric& q, Eigen::Vector3d& x, double relativ
 inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eigen::Vector3d& x,
   double relativeTolerance = 1e-6)
 {
-  if (MinimizeQuadric(q, x, relativeTolerance))
+  const Eigen::Matrix3d a = q.A();
+  if (!(a.trace() > 0.0))
   {
-    return 3;
+    x = x0; // no planes at all
+    return 0;
   }
-  // Rank-deficient: closed-form eigenvectors are accurate enough for the directions kept (and
-  // where Q has no planes at all, x0 stays exactly).
+  // Well conditioned: the pivots of a pivoted LDLT bound the eigenvalues closely enough to
+  // judge it without the (trigonometric) closed-form eigenvalues.
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(a);
+  const Eigen::Vector3d pivots = ldlt.vectorD().cwiseAbs();
+  if (pivots.minCoeff() > 10.0 * relativeTolerance * pivots.maxCoeff())
+  {
+    x = ldlt.solve(-q.B());
+    if (x.allFinite())
+    {
+      return 3;
+    }
+  }
+  // Rank-deficient: closed-form eigenvectors are accurate enough for the directions kept.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(q.A());
+  eig.computeDirect(a);
   const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
-  const Eigen::Vector3d gradient = q.A() * x0 + q.B();
+  const Eigen::Vector3d gradient = a * x0 + q.B();
   x = x0;
   int rank = 0;
   for (int i = 2; i >= 0; --i)

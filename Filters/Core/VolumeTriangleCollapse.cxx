@@ -61,7 +61,8 @@ private:
   }
 
   void UpdateGeometry(std::int32_t t);
-  void UpdateCurvature(std::int32_t v);
+  void ConstrictionMatrix(std::int32_t t, Quadric& q) const;
+  void UpdateVertex(std::int32_t v);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
   bool OntoCheapestCorner(Candidate& candidate) const;
@@ -75,6 +76,8 @@ private:
   std::vector<Vec3> Normals;
   std::vector<double> Areas;
   std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
+  std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
+  std::vector<double> Angles;            // the corner angles of each triangle
   std::vector<double> VertexError;       // squared-volume error accumulated at each vertex
   std::vector<double> Deficit;           // angle deficit of each vertex (eq. 6)
   std::vector<double> VertexArea;        // area of its adjacent triangles, A_v
@@ -88,22 +91,32 @@ private:
 
 void VolumeCollapser::UpdateGeometry(std::int32_t t)
 {
-  this->Normals[t] = this->Mesh.Normal(t);
-  this->Areas[t] = this->Mesh.Area(t);
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  const Vec3* p[3] = { &this->Mesh.Point(tri[0]), &this->Mesh.Point(tri[1]), &this->Mesh.Point(tri[2]) };
+  const Vec3 cross = (*p[1] - *p[0]).cross(*p[2] - *p[0]);
+  const double length = cross.norm();
+  this->Normals[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
+  this->Areas[t] = 0.5 * length;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 e1 = *p[(k + 1) % 3] - *p[k];
+    const Vec3 e2 = *p[(k + 2) % 3] - *p[k];
+    this->Angles[3 * t + k] = std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+  }
 }
 
-void VolumeCollapser::UpdateCurvature(std::int32_t v)
+void VolumeCollapser::UpdateVertex(std::int32_t v)
 {
+  // Also the sum of the quadrics around v, from which constriction matrices are assembled.
   double angles = 0.0, area = 0.0;
-  const Vec3& x = this->Mesh.Point(v);
+  Quadric sum;
   this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
     const std::int32_t* tri = this->Mesh.Triangle(t);
-    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-    const Vec3 e1 = this->Mesh.Point(tri[(k + 1) % 3]) - x;
-    const Vec3 e2 = this->Mesh.Point(tri[(k + 2) % 3]) - x;
-    angles += std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+    angles += this->Angles[3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
     area += this->Areas[t];
+    sum += this->TriangleQuadrics[t];
   });
+  this->VertexQuadrics[v] = sum;
   // Eq. (6): 2π minus the angles around an interior vertex, π around a boundary one.
   this->Deficit[v] = (this->Mesh.OnBoundary(v) ? Pi : 2.0 * Pi) - angles;
   this->VertexArea[v] = area;
@@ -157,6 +170,29 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
   this->TriangleQuadrics[t] = Quadric::FromPlane(n, -n.dot(this->Mesh.Point(tri[0])), weight);
 }
 
+void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q) const
+{
+  // Σ Q_j over the triangles sharing a vertex with t (Definition 2), from the vertex sums:
+  // a triangle across an edge of t is in two of them, t itself in three.
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  q = this->VertexQuadrics[tri[0]];
+  q += this->VertexQuadrics[tri[1]];
+  q += this->VertexQuadrics[tri[2]];
+  q -= this->TriangleQuadrics[t];
+  q -= this->TriangleQuadrics[t];
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::int32_t u = tri[k], w = tri[(k + 1) % 3];
+    this->Mesh.ForEachTriangle(u, [&](std::int32_t j) {
+      const std::int32_t* o = this->Mesh.Triangle(j);
+      if (j != t && (o[0] == w || o[1] == w || o[2] == w))
+      {
+        q -= this->TriangleQuadrics[j];
+      }
+    });
+  }
+}
+
 VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
 {
   Candidate candidate;
@@ -178,7 +214,7 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
     return candidate;
   }
   Quadric q;
-  this->ForEachAdjacent(t, [&](std::int32_t j) { q += this->TriangleQuadrics[j]; });
+  this->ConstrictionMatrix(t, q);
 
   // The kept corner goes first in the plan; weights follow the plan's vertex order.
   auto ontoCorner = [&](int k) {
@@ -362,11 +398,11 @@ void VolumeCollapser::UpdateAround(std::int32_t kept)
       }
     }
   });
+  this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->UpdateQuadric(t); });
   for (const std::int32_t v : this->Ring)
   {
-    this->UpdateCurvature(v);
+    this->UpdateVertex(v);
   }
-  this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->UpdateQuadric(t); });
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->Requeue(t); });
 }
 
@@ -417,6 +453,7 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     p = (p - origin) * scale;
   }
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
+  this->Mesh.SetMinimumAngle(this->Options.MinimumAngle);
   const std::int32_t n = this->Mesh.NumberOfPoints();
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   for (std::int32_t v = 0; v < n; ++v)
@@ -430,7 +467,9 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
 
   this->Normals.resize(m);
   this->Areas.resize(m);
+  this->Angles.resize(3 * static_cast<std::size_t>(m));
   this->TriangleQuadrics.resize(m);
+  this->VertexQuadrics.resize(n);
   this->VertexError.assign(n, 0.0);
   this->Moved.assign(n, 0);
   this->Deficit.resize(n);
@@ -441,19 +480,19 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     {
       this->UpdateGeometry(static_cast<std::int32_t>(t));
     }
-  });
-  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t v = b; v < e; ++v)
-    {
-      this->UpdateCurvature(static_cast<std::int32_t>(v));
-    }
-  }, 8 * static_cast<std::int64_t>(n));
+  }, 4 * static_cast<std::int64_t>(m));
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
       this->UpdateQuadric(static_cast<std::int32_t>(t));
     }
   }, 16 * static_cast<std::int64_t>(m));
+  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      this->UpdateVertex(static_cast<std::int32_t>(v));
+    }
+  }, 8 * static_cast<std::int64_t>(n));
   for (const double a : this->Areas)
   {
     this->TotalArea += a;

@@ -28,9 +28,15 @@
  *   vertex.
  * - Zero-cost triangles whose cost is set again queue behind the waiting zero-cost ones (§3.5,
  *   Fig. 7): the heap's tie rule (CollapseHeap).
- * - Costs of the triangles whose constriction matrices a collapse changes (those sharing a
- *   vertex with the new vertex's triangles) are updated at once; a triangle further out is
- *   re-evaluated when it reaches the top and requeued if its cost has grown past the next one.
+ * - After a collapse the new vertex's triangles get their geometry, quadrics and costs at once,
+ *   their corners their angle sums and quadric sums. Triangles further out, whose constriction
+ *   matrices hold some of the changed quadrics, are re-evaluated when they reach the top of the
+ *   heap and requeued if their cost has grown past the next one; their own normal factors are
+ *   refreshed when a collapse next changes them.
+ * - Constriction matrices are assembled from per-vertex sums of Q_i (a triangle across an edge
+ *   is in two of the three sums, the triangle itself in all three).
+ * - Optionally (MinimumAngle) the engine's angle guard rejects collapses that would make new
+ *   slivers.
  */
 #ifndef MeshSimplification_VolumeTriangleCollapse_h
 #define MeshSimplification_VolumeTriangleCollapse_h
@@ -58,6 +64,9 @@ struct VolumeCollapseOptions
   bool PreserveBoundary = false;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
+  /// The engine's angle guard (degrees; 0 turns it off): no collapse makes a new angle below
+  /// it unless the neighbourhood had one as small.
+  double MinimumAngle = 0.0;
   bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
   bool UseNormalFactor = true;
   bool UseVolumeWeights = true;

@@ -223,6 +223,20 @@ void FoldOverAndDegenerateRejected()
   CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.25, 0.5, 0.0))));
 }
 
+void AngleGuardRejectsNewSlivers()
+{
+  // Collapsing the grid's centre 12 and its neighbour 13 to a point just above vertex 8 makes
+  // triangle (7, 8, x) a sliver (an angle of about 2 degrees at 7): allowed without the guard,
+  // refused with a 10 degree guard, while the edge's midpoint keeps every angle above 10.
+  Engine e(Grid(4));
+  const Eigen::Vector3d thin = e.Point(8) + Eigen::Vector3d(0.0, 0.01, 0.0);
+  const Eigen::Vector3d middle = 0.5 * (e.Point(12) + e.Point(13));
+  CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, thin)));
+  e.Mesh.SetMinimumAngle(10.0);
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, thin)));
+  CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, middle)));
+}
+
 void LockedVerticesStay()
 {
   Engine e(Grid(4));
@@ -366,6 +380,7 @@ int main()
     { "LinkConditionRejectsHiddenCycle", LinkConditionRejectsHiddenCycle },
     { "LinkConditionRejectsPinch", LinkConditionRejectsPinch },
     { "FoldOverAndDegenerateRejected", FoldOverAndDegenerateRejected },
+    { "AngleGuardRejectsNewSlivers", AngleGuardRejectsNewSlivers },
     { "LockedVerticesStay", LockedVerticesStay },
     { "CollapseThenUndoRestoresMesh", CollapseThenUndoRestoresMesh },
     { "AttributesFollowWeights", AttributesFollowWeights },
