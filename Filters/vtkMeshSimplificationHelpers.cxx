@@ -3,6 +3,9 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkFieldData.h"
+#include "vtkPointData.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -151,6 +154,71 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   out.View.Triangles = out.Triangles.data();
   out.View.NumberOfTriangles = static_cast<std::int64_t>(out.Triangles.size() / 3);
   return true;
+}
+
+bool PrepareTriangles(
+  vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles, int& requestResult)
+{
+  std::string problem;
+  if (!ExtractTriangles(input, triangles, problem))
+  {
+    vtkErrorWithObjectMacro(filter, << "Cannot simplify: " << problem << ".");
+    requestResult = 0;
+    return false;
+  }
+  if (triangles.NumberOfVerts + triangles.NumberOfLines > 0)
+  {
+    vtkWarningWithObjectMacro(filter, << "Dropping " << triangles.NumberOfVerts << " vertex and "
+                                      << triangles.NumberOfLines
+                                      << " line cells: only triangles, polygons and strips are simplified.");
+  }
+  requestResult = 1;
+  return triangles.View.NumberOfTriangles > 0;
+}
+
+bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints)
+{
+  if (nonFinitePoints > 0)
+  {
+    vtkWarningWithObjectMacro(filter, << "Ignoring the triangles of " << nonFinitePoints
+                                      << " points with NaN or infinite coordinates.");
+  }
+  if (!finished)
+  {
+    vtkWarningWithObjectMacro(filter, << "Aborted: the output is empty.");
+  }
+  return finished;
+}
+
+void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleInput& triangles,
+  const std::vector<double>& points, const std::vector<std::int32_t>& outputTriangles,
+  const std::vector<std::int32_t>& sourceTriangles, int outputPointsPrecision)
+{
+  output->SetPoints(MakePoints(points, outputPointsPrecision, input->GetPoints()));
+  output->SetPolys(MakeTriangles(outputTriangles));
+  const vtkIdType numberOfTriangles = static_cast<vtkIdType>(sourceTriangles.size());
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(inCD, numberOfTriangles);
+  for (vtkIdType i = 0; i < numberOfTriangles; ++i)
+  {
+    outCD->CopyData(inCD, triangles.SourceCell(sourceTriangles[i]), i);
+  }
+  if (vtkDataArray* normals = outCD->GetNormals())
+  {
+    ComputeCellNormals(points, outputTriangles, normals);
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+  AddFieldValue(output, "AchievedReduction",
+    1.0 - static_cast<double>(numberOfTriangles) / static_cast<double>(triangles.View.NumberOfTriangles));
+}
+
+void AddFieldValue(vtkPolyData* output, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  output->GetFieldData()->AddArray(array);
 }
 
 int ResolveThreadCount(int numberOfThreads)

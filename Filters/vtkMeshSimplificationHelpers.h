@@ -46,6 +46,25 @@ struct TriangleInput
 /// False with a message in error when the input cannot be processed at all (too large).
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string& error);
 
+/// ExtractTriangles as every filter starts: an error for an input it cannot process, a warning
+/// for the vertex and line cells it drops. False when there is nothing to simplify; then
+/// requestResult is what RequestData returns (0 after an error, 1 for an empty input).
+bool PrepareTriangles(
+  vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles, int& requestResult);
+
+/// Warns about ignored non-finite points and about an abort; returns finished.
+bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints);
+
+/// The output cells of a filter: triangles (with their points), the input cell data of each
+/// triangle's source cell, recomputed cell normals if the input had them, and the input's
+/// field data plus AchievedReduction.
+void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleInput& triangles,
+  const std::vector<double>& points, const std::vector<std::int32_t>& outputTriangles,
+  const std::vector<std::int32_t>& sourceTriangles, int outputPointsPrecision);
+
+/// Adds a one-value array to the output's field data.
+void AddFieldValue(vtkPolyData* output, const char* name, double value);
+
 /// Threads (0 = all cores) through vtkSMPTools' STDThread backend in a local scope, so the
 /// application's global SMP setting is untouched; progress and abort through the algorithm.
 meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int numberOfThreads);

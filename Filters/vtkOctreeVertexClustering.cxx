@@ -5,9 +5,7 @@
 #include "vtkMeshSimplificationHelpers.h"
 
 #include "vtkArrayListTemplate.h"
-#include "vtkCellData.h"
 #include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -29,22 +27,10 @@ int vtkOctreeVertexClustering::RequestData(
   this->AchievedMaximumError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
-  std::string problem;
-  if (!vtkMeshSimplificationHelpers::ExtractTriangles(input, triangles, problem))
+  int requestResult = 1;
+  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
   {
-    vtkErrorMacro(<< "Cannot simplify: " << problem << ".");
-    return 0;
-  }
-  if (triangles.NumberOfVerts + triangles.NumberOfLines > 0)
-  {
-    vtkWarningMacro(<< "Dropping " << triangles.NumberOfVerts << " vertex and "
-                    << triangles.NumberOfLines
-                    << " line cells: only triangles, polygons and strips are simplified.");
-  }
-  if (triangles.View.NumberOfTriangles == 0)
-  {
-    vtkDebugMacro(<< "No triangles to simplify.");
-    return 1;
+    return requestResult;
   }
 
   meshsimp::OctreeClusteringOptions options;
@@ -74,14 +60,8 @@ int vtkOctreeVertexClustering::RequestData(
   meshsimp::OctreeClusteringResult result;
   const bool finished = meshsimp::OctreeVertexClustering(triangles.View, options, result,
     vtkMeshSimplificationHelpers::MakeExecutionContext(this, this->NumberOfThreads));
-  if (result.NonFinitePoints > 0)
+  if (!vtkMeshSimplificationHelpers::ReportRun(this, finished, result.NonFinitePoints))
   {
-    vtkWarningMacro(<< "Ignoring the triangles of " << result.NonFinitePoints
-                    << " points with NaN or infinite coordinates.");
-  }
-  if (!finished)
-  {
-    vtkWarningMacro(<< "Aborted: the output is empty.");
     return 1;
   }
   const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.ClusterErrors.size());
@@ -94,9 +74,8 @@ int vtkOctreeVertexClustering::RequestData(
                     << " triangles asked for: the input has too few distinct points.");
   }
 
-  output->SetPoints(vtkMeshSimplificationHelpers::MakePoints(
-    result.Points, this->OutputPointsPrecision, input->GetPoints()));
-  output->SetPolys(vtkMeshSimplificationHelpers::MakeTriangles(result.Triangles));
+  vtkMeshSimplificationHelpers::SetOutputTriangles(input, output, triangles, result.Points,
+    result.Triangles, result.SourceTriangles, this->OutputPointsPrecision);
 
   // Point data: the area-weighted average of each cluster, for every array.
   vtkPointData* inPD = input->GetPointData();
@@ -129,29 +108,8 @@ int vtkOctreeVertexClustering::RequestData(
   outPD->AddArray(clusterSize);
   outPD->AddArray(clusterError);
 
-  // Cell data: copied from the input cell of each surviving triangle.
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
-  outCD->CopyAllocate(inCD, numberOfTriangles);
-  for (vtkIdType i = 0; i < numberOfTriangles; ++i)
-  {
-    outCD->CopyData(inCD, triangles.SourceCell(result.SourceTriangles[i]), i);
-  }
-  if (vtkDataArray* normals = outCD->GetNormals())
-  {
-    vtkMeshSimplificationHelpers::ComputeCellNormals(result.Points, result.Triangles, normals);
-  }
-
-  output->GetFieldData()->PassData(input->GetFieldData());
   this->AchievedMaximumError = result.MaximumClusterError;
-  vtkNew<vtkDoubleArray> maximumError;
-  maximumError->SetName("MaximumClusterError");
-  maximumError->InsertNextValue(result.MaximumClusterError);
-  output->GetFieldData()->AddArray(maximumError);
-  vtkNew<vtkDoubleArray> reduction;
-  reduction->SetName("AchievedReduction");
-  reduction->InsertNextValue(1.0 - static_cast<double>(numberOfTriangles) / inputTriangles);
-  output->GetFieldData()->AddArray(reduction);
+  vtkMeshSimplificationHelpers::AddFieldValue(output, "MaximumClusterError", result.MaximumClusterError);
   return 1;
 }
 

@@ -4,10 +4,8 @@
 #include "VolumeTriangleCollapse.h"
 #include "vtkMeshSimplificationHelpers.h"
 
-#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -75,22 +73,10 @@ int vtkVolumeTriangleCollapse::RequestData(
   this->SquareVolumeError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
-  std::string problem;
-  if (!vtkMeshSimplificationHelpers::ExtractTriangles(input, triangles, problem))
+  int requestResult = 1;
+  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
   {
-    vtkErrorMacro(<< "Cannot simplify: " << problem << ".");
-    return 0;
-  }
-  if (triangles.NumberOfVerts + triangles.NumberOfLines > 0)
-  {
-    vtkWarningMacro(<< "Dropping " << triangles.NumberOfVerts << " vertex and "
-                    << triangles.NumberOfLines
-                    << " line cells: only triangles, polygons and strips are simplified.");
-  }
-  if (triangles.View.NumberOfTriangles == 0)
-  {
-    vtkDebugMacro(<< "No triangles to simplify.");
-    return 1;
+    return requestResult;
   }
 
   meshsimp::VolumeCollapseOptions options;
@@ -109,14 +95,8 @@ int vtkVolumeTriangleCollapse::RequestData(
   meshsimp::VolumeCollapseResult result;
   const bool finished = meshsimp::VolumeTriangleCollapse(triangles.View, options, result,
     vtkMeshSimplificationHelpers::MakeExecutionContext(this, this->NumberOfThreads));
-  if (result.NonFinitePoints > 0)
+  if (!vtkMeshSimplificationHelpers::ReportRun(this, finished, result.NonFinitePoints))
   {
-    vtkWarningMacro(<< "Ignoring the triangles of " << result.NonFinitePoints
-                    << " points with NaN or infinite coordinates.");
-  }
-  if (!finished)
-  {
-    vtkWarningMacro(<< "Aborted: the output is empty.");
     return 1;
   }
   const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.PointSource.size());
@@ -128,9 +108,8 @@ int vtkVolumeTriangleCollapse::RequestData(
                     << " asked for): no collapse is left that keeps the mesh valid.");
   }
 
-  output->SetPoints(vtkMeshSimplificationHelpers::MakePoints(
-    result.Points, this->OutputPointsPrecision, input->GetPoints()));
-  output->SetPolys(vtkMeshSimplificationHelpers::MakeTriangles(result.Triangles));
+  vtkMeshSimplificationHelpers::SetOutputTriangles(input, output, triangles, result.Points,
+    result.Triangles, result.TriangleSource, this->OutputPointsPrecision);
 
   vtkPointData* outPD = output->GetPointData();
   InterpolatePointData(input->GetPointData(), outPD, result);
@@ -147,28 +126,8 @@ int vtkVolumeTriangleCollapse::RequestData(
   }
   outPD->AddArray(pointError);
 
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
-  outCD->CopyAllocate(inCD, numberOfTriangles);
-  for (vtkIdType i = 0; i < numberOfTriangles; ++i)
-  {
-    outCD->CopyData(inCD, triangles.SourceCell(result.TriangleSource[i]), i);
-  }
-  if (vtkDataArray* normals = outCD->GetNormals())
-  {
-    vtkMeshSimplificationHelpers::ComputeCellNormals(result.Points, result.Triangles, normals);
-  }
-
-  output->GetFieldData()->PassData(input->GetFieldData());
   this->SquareVolumeError = result.SquareVolumeError;
-  vtkNew<vtkDoubleArray> totalError;
-  totalError->SetName("SquareVolumeError");
-  totalError->InsertNextValue(result.SquareVolumeError);
-  output->GetFieldData()->AddArray(totalError);
-  vtkNew<vtkDoubleArray> reduction;
-  reduction->SetName("AchievedReduction");
-  reduction->InsertNextValue(1.0 - static_cast<double>(numberOfTriangles) / inputTriangles);
-  output->GetFieldData()->AddArray(reduction);
+  vtkMeshSimplificationHelpers::AddFieldValue(output, "SquareVolumeError", result.SquareVolumeError);
   return 1;
 }
 

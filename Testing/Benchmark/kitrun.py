@@ -52,3 +52,19 @@ def add_common_arguments(ap, reductions):
     ap.add_argument("--threads", type=int, default=0, help="--threads for our CLI (0: all cores)")
     ap.add_argument("--workdir", required=True, help="folder for the kit's inputs and outputs")
     ap.add_argument("--out", help="also write the markdown here")
+
+
+def finish(lines, ratios, problems, out):
+    """Appends the geometric means of the ratios (named by their keys) and the problems to the
+    table, prints it and writes it to out (when given)."""
+    lines.append("")
+    for key, values in ratios.items():
+        if values:
+            lines.append("- %s: geometric mean %.2f, max %.2f over %d cases"
+                         % (key, geometric_mean(values), max(values), len(values)))
+    lines += ["- " + p for p in problems]
+    text = "\n".join(lines)
+    print(text)
+    if out:
+        with open(out, "w") as f:
+            f.write(text + "\n")

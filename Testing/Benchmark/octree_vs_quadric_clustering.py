@@ -17,7 +17,7 @@ BENCH_DIR is the benchmark kit (compare.py, and metro built in BENCH_DIR/build o
 import argparse
 import os
 
-from kitrun import add_common_arguments, geometric_mean, metric, run_cases
+from kitrun import add_common_arguments, finish, metric, run_cases
 
 PEERS = "vtk_qclustering|^meshopt$|^vtk_quadric$"
 
@@ -62,19 +62,8 @@ def main():
             "%.3f" % metric(qem, "max_pct") if qem.get("metro") else "-",
             "%.4f" % metric(qem, "rms_pct") if qem.get("metro") else "-",
             "%.1f" % mo["time_ms"] if mo.get("time_ms") else "-"))
-    lines.append("")
-    for key in ("H", "RMS", "time"):
-        values = ratios[key]
-        if values:
-            lines.append("- %s ratio (ours / vtkQuadricClustering): geometric mean %.2f, max %.2f over %d cases"
-                         % (key, geometric_mean(values), max(values), len(values)))
-    lines += ["- " + p for p in problems]
-    text = "\n".join(lines)
-    print(text)
-    if a.out:
-        with open(a.out, "w") as f:
-            f.write(text + "\n")
-
+    finish(lines, {"%s ratio (ours / vtkQuadricClustering)" % key: values for key, values in ratios.items()},
+           problems, a.out)
 
 if __name__ == "__main__":
     main()

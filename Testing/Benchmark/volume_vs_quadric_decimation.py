@@ -17,7 +17,7 @@ the time ratio to meshoptimizer; then the geometric means.
 import argparse
 import os
 
-from kitrun import add_common_arguments, geometric_mean, metric, run_cases
+from kitrun import add_common_arguments, finish, metric, run_cases
 
 PEERS = "^vtk_quadric$|^meshopt$|^cgal_gh$"
 
@@ -40,7 +40,10 @@ def main():
              "| mean ratio | H % ours | H % QD | H ratio | <10° % ours | <10° % QD | closed | ms ours | ms QD "
              "| ms meshopt | time / QD | time / meshopt |",
              "|---" * 21 + "|"]
-    ratios = {"volume": [], "mean": [], "H": [], "time QD": [], "time meshopt": []}
+    ratios = {"volume change ratio (ours / vtkQuadricDecimation)": [], "mean ratio (ours / vtkQuadricDecimation)": [],
+              "Hausdorff ratio (ours / vtkQuadricDecimation)": [], "time ratio (ours / vtkQuadricDecimation)": [],
+              "time ratio (ours / meshoptimizer)": []}
+    volume_key, mean_key, h_key, qd_key, mo_key = ratios
     problems = []
     for name, info, reduction, target, rows in cases:
         mine, qd, mo = rows.get("ours"), rows.get("vtk_quadric"), rows.get("meshopt", {})
@@ -54,19 +57,19 @@ def main():
         volume = None
         if closed_input:
             volume = volume_change(mine) / volume_change(qd)
-            ratios["volume"].append(volume)
+            ratios[volume_key].append(volume)
             if not out["closed"]:
                 problems.append("%s %.2f: the closed input came out open (%d boundary, %d non-manifold edges)"
                                 % (name, reduction, out["boundary_edges"], out["nonmanifold_edges"]))
         mean = metric(mine, "mean_pct") / metric(qd, "mean_pct")
         hausdorff = metric(mine, "max_pct") / metric(qd, "max_pct")
-        ratios["mean"].append(mean)
-        ratios["H"].append(hausdorff)
+        ratios[mean_key].append(mean)
+        ratios[h_key].append(hausdorff)
         to_qd = mine["time_ms"] / qd["time_ms"]
-        ratios["time QD"].append(to_qd)
+        ratios[qd_key].append(to_qd)
         to_mo = mine["time_ms"] / mo["time_ms"] if mo.get("time_ms") else None
         if to_mo:
-            ratios["time meshopt"].append(to_mo)
+            ratios[mo_key].append(to_mo)
         angles, angles_qd = out["min_angle_lt10_pct"], qd["metro"]["b"]["min_angle_lt10_pct"]
         if angles > angles_qd + 1.0:
             problems.append("%s %.2f: %.1f %% of triangles under 10 degrees, vtkQuadricDecimation %.1f %%"
@@ -84,18 +87,7 @@ def main():
                          mine["time_ms"], qd["time_ms"],
                          "%.1f" % mo["time_ms"] if mo.get("time_ms") else "-", to_qd,
                          "%.2f" % to_mo if to_mo else "-"))
-    lines.append("")
-    for key, values in ratios.items():
-        if values:
-            lines.append("- %s ratio: geometric mean %.2f, max %.2f over %d cases"
-                         % (key, geometric_mean(values), max(values), len(values)))
-    lines += ["- " + p for p in problems]
-    text = "\n".join(lines)
-    print(text)
-    if a.out:
-        with open(a.out, "w") as f:
-            f.write(text + "\n")
-
+    finish(lines, ratios, problems, a.out)
 
 if __name__ == "__main__":
     main()

@@ -43,41 +43,8 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
     CHECK(std::abs(out->GetNumberOfPolys() - target) <= 0.03 * target);
     CHECK(out->GetNumberOfPolys() == out->GetNumberOfCells());
 
-    // Every input point array arrives with its type and components; attributes stay active.
+    meshsimp_test::CheckCarriedData(cow, out);
     vtkPointData* pd = out->GetPointData();
-    for (int a = 0; a < cow->GetPointData()->GetNumberOfArrays(); ++a)
-    {
-      vtkDataArray* in = cow->GetPointData()->GetArray(a);
-      vtkDataArray* carried = pd->GetArray(in->GetName());
-      CHECK(carried && carried->GetDataType() == in->GetDataType() &&
-        carried->GetNumberOfComponents() == in->GetNumberOfComponents() &&
-        carried->GetNumberOfTuples() == out->GetNumberOfPoints());
-    }
-    CHECK(pd->GetScalars() && std::string(pd->GetScalars()->GetName()) == "Height");
-    CHECK(pd->GetTCoords() && pd->GetNormals());
-
-    // Averages: a constant stays exact, a linear field stays within the input's range, and
-    // normals are recomputed unit vectors.
-    double range[2];
-    cow->GetPointData()->GetArray("Height")->GetRange(range);
-    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-    {
-      CHECK(std::abs(pd->GetArray("Constant")->GetTuple1(i) - 7.25) < 1e-12);
-      const double h = pd->GetArray("Height")->GetTuple1(i);
-      CHECK(h >= range[0] - 1e-12 && h <= range[1] + 1e-12);
-      CHECK(std::abs(vtkMath::Norm(pd->GetNormals()->GetTuple3(i)) - 1.0) < 1e-5);
-    }
-
-    // Cell data comes from distinct input cells; cell normals are recomputed.
-    vtkDataArray* sourceCells = out->GetCellData()->GetArray("SourceCell");
-    CHECK(sourceCells && sourceCells->GetNumberOfTuples() == out->GetNumberOfCells());
-    std::set<vtkIdType> distinct;
-    for (vtkIdType c = 0; sourceCells && c < sourceCells->GetNumberOfTuples(); ++c)
-    {
-      distinct.insert(static_cast<vtkIdType>(sourceCells->GetTuple1(c)));
-    }
-    CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
-    CHECK(out->GetCellData()->GetNormals() != nullptr);
 
     // Error arrays.
     auto* sizes = vtkIntArray::SafeDownCast(pd->GetArray("ClusterSize"));

@@ -4,6 +4,7 @@
 #define MeshSimplification_TestVTKHelpers_h
 
 #include "vtkCellData.h"
+#include "vtkMath.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -18,6 +19,8 @@
 #include "TestHelpers.h"
 
 #include <cmath>
+#include <set>
+#include <string>
 
 namespace meshsimp_test
 {
@@ -92,6 +95,42 @@ inline vtkSmartPointer<vtkPolyData> DecoratedCow()
   return cow;
 }
 
+/// What every filter must carry from the decorated cow to its output: each point array with
+/// its type and components (scalars, texture coordinates and normals active), values that are
+/// convex combinations (a constant stays exact, Height stays in range), unit normals, and cell
+/// data copied from distinct input cells.
+inline void CheckCarriedData(vtkPolyData* cow, vtkPolyData* out)
+{
+  vtkPointData* pd = out->GetPointData();
+  for (int a = 0; a < cow->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* in = cow->GetPointData()->GetArray(a);
+    vtkDataArray* carried = pd->GetArray(in->GetName());
+    CHECK(carried && carried->GetDataType() == in->GetDataType() &&
+      carried->GetNumberOfComponents() == in->GetNumberOfComponents() &&
+      carried->GetNumberOfTuples() == out->GetNumberOfPoints());
+  }
+  CHECK(pd->GetScalars() && std::string(pd->GetScalars()->GetName()) == "Height");
+  CHECK(pd->GetTCoords() && pd->GetNormals());
+  double range[2];
+  cow->GetPointData()->GetArray("Height")->GetRange(range);
+  for (vtkIdType i = 0; pd->GetNormals() && i < out->GetNumberOfPoints(); ++i)
+  {
+    CHECK(std::abs(pd->GetArray("Constant")->GetTuple1(i) - 7.25) < 1e-12);
+    const double h = pd->GetArray("Height")->GetTuple1(i);
+    CHECK(h >= range[0] - 1e-12 && h <= range[1] + 1e-12);
+    CHECK(std::abs(vtkMath::Norm(pd->GetNormals()->GetTuple3(i)) - 1.0) < 1e-5);
+  }
+  vtkDataArray* sourceCells = out->GetCellData()->GetArray("SourceCell");
+  CHECK(sourceCells && sourceCells->GetNumberOfTuples() == out->GetNumberOfCells());
+  std::set<vtkIdType> distinct;
+  for (vtkIdType c = 0; sourceCells && c < sourceCells->GetNumberOfTuples(); ++c)
+  {
+    distinct.insert(static_cast<vtkIdType>(sourceCells->GetTuple1(c)));
+  }
+  CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
+  CHECK(out->GetCellData()->GetNormals() != nullptr);
+}
 }
 
 #endif

@@ -5,28 +5,14 @@ Loads the built plugin, reads the cow with the plugin's OFF reader, simplifies i
 and by error bound, simplifies a multiblock input block by block, and (with --baseline)
 compares a screenshot with the committed baseline image.
 """
-import argparse
 import os
-import sys
 
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 from paraview import servermanager
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--plugin", required=True)
-parser.add_argument("--data", required=True)
-parser.add_argument("--baseline")
-parser.add_argument("--temp")
-args, _ = parser.parse_known_args()
+from plugintest import arguments, check, finish
 
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("check failed:", message, file=sys.stderr)
-
+args = arguments("--baseline", "--temp")
 
 LoadPlugin(args.plugin, ns=globals())
 
@@ -110,5 +96,4 @@ if args.baseline:
     Delete(view)
     del view
 
-print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
-sys.exit(1 if failures else 0)
+finish()

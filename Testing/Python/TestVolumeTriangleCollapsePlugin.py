@@ -4,26 +4,14 @@
 Loads the built plugin, simplifies the cow by reduction and by triangle count, checks the error
 arrays and that the closed cow stays closed, and simplifies a multiblock input block by block.
 """
-import argparse
 import os
-import sys
 
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 from paraview import servermanager
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--plugin", required=True)
-parser.add_argument("--data", required=True)
-args, _ = parser.parse_known_args()
+from plugintest import arguments, check, finish
 
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("check failed:", message, file=sys.stderr)
-
+args = arguments()
 
 LoadPlugin(args.plugin, ns=globals())
 
@@ -65,5 +53,4 @@ got = blocks.GetDataInformation().GetNumberOfCells()
 check(abs(got - expected) <= 0.01 * expected, "multiblock: %d cells for about %d" % (got, expected))
 check("elevation" in blocks.PointData.keys(), "the terrain's elevation is carried")
 
-print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
-sys.exit(1 if failures else 0)
+finish()
