@@ -131,6 +131,36 @@ inline void CheckCarriedData(vtkPolyData* cow, vtkPolyData* out)
   CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
   CHECK(out->GetCellData()->GetNormals() != nullptr);
 }
+/// The same output whatever the thread count (1, 2, 4), and the input untouched. run(threads)
+/// runs the filter under test on cow and returns its output.
+template <typename Run>
+void CheckThreadIndependence(vtkPolyData* cow, Run run)
+{
+  vtkNew<vtkPolyData> before;
+  before->DeepCopy(cow);
+  const vtkMTimeType mtime = cow->GetMTime();
+  vtkSmartPointer<vtkPolyData> outputs[3];
+  const int threads[3] = { 1, 2, 4 };
+  for (int k = 0; k < 3; ++k)
+  {
+    outputs[k] = run(threads[k]);
+  }
+  for (int k = 1; k < 3; ++k)
+  {
+    CHECK(outputs[k]->GetNumberOfPoints() == outputs[0]->GetNumberOfPoints());
+    CHECK(outputs[k]->GetNumberOfPolys() == outputs[0]->GetNumberOfPolys());
+    for (vtkIdType i = 0; i < outputs[0]->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      outputs[0]->GetPoint(i, a);
+      outputs[k]->GetPoint(i, b);
+      CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+    }
+  }
+  CHECK(cow->GetMTime() == mtime);
+  CheckInputUntouched(cow, before);
+  CHECK(cow->GetPointData()->GetNumberOfArrays() == before->GetPointData()->GetNumberOfArrays());
+}
 }
 
 #endif
