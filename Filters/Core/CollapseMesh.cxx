@@ -145,6 +145,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees)
   this->Marks.assign(n, 0);
   this->Stamp = 0;
   this->History.clear();
+  this->Undone.clear();
   this->Changes.clear();
   this->RemovedTriangles.clear();
   mesh = CompactMesh();
@@ -447,6 +448,7 @@ void CollapseMesh::CompactRefs()
 
 int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
 {
+  this->Undone.clear(); // a new collapse ends the replay of undone ones
   CollapseRecord record;
   const std::int32_t kept = plan.Vertices[0];
   record.Kept = kept;
@@ -456,6 +458,7 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
   }
   std::copy(plan.Weights, plan.Weights + 3, record.Weights);
   record.KeptPosition = this->Points[kept];
+  record.NewPosition = plan.Position;
   record.KeptClass = this->Classes[kept];
   record.FirstChange = static_cast<std::int32_t>(this->Changes.size());
   record.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
@@ -533,6 +536,7 @@ void CollapseMesh::Undo()
   }
   const CollapseRecord record = this->History.back();
   this->History.pop_back();
+  this->Undone.push_back(record);
   const std::int32_t kept = record.Kept;
   // Candidates for the restored spans: the kept vertex's triangles and the revived ones.
   std::vector<std::int32_t> candidates;
@@ -591,6 +595,32 @@ void CollapseMesh::Undo()
   }
   this->Changes.resize(record.FirstChange);
   this->RemovedTriangles.resize(record.FirstRemovedTriangle);
+}
+
+bool CollapseMesh::Redo()
+{
+  if (this->Undone.empty())
+  {
+    return false;
+  }
+  const CollapseRecord record = this->Undone.back();
+  this->Undone.pop_back();
+  CollapsePlan plan;
+  plan.Vertices[plan.Count++] = record.Kept;
+  for (const std::int32_t removed : record.Removed)
+  {
+    if (removed >= 0)
+    {
+      plan.Vertices[plan.Count++] = removed;
+    }
+  }
+  plan.Position = record.NewPosition;
+  std::copy(record.Weights, record.Weights + 3, plan.Weights);
+  std::vector<CollapseRecord> undone;
+  undone.swap(this->Undone); // Apply starts a new branch; this replay continues the old one
+  this->Apply(plan);
+  undone.swap(this->Undone);
+  return true;
 }
 
 void InterpolateAttributes(const std::vector<CollapseRecord>& records, double* values, int components)

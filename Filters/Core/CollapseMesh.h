@@ -57,6 +57,7 @@ struct CollapseRecord
   std::int32_t Removed[2] = { -1, -1 };
   double Weights[3] = { 1.0, 0.0, 0.0 }; // kept, Removed[0], Removed[1]
   Eigen::Vector3d KeptPosition = Eigen::Vector3d::Zero(); // before the collapse
+  Eigen::Vector3d NewPosition = Eigen::Vector3d::Zero();  // after it
   VertexClass KeptClass = VertexClass::Interior;          // before the collapse
   std::int32_t FirstChange = 0, ChangeCount = 0;
   std::int32_t FirstRemovedTriangle = 0, RemovedTriangleCount = 0;
@@ -127,8 +128,15 @@ public:
   int Apply(const CollapsePlan& plan, bool keepUndo = true);
 
   /// Splits the vertex of the last record again: points, triangles, classes and adjacency are
-  /// as before that collapse (adjacency spans may list triangles in another order).
+  /// as before that collapse (adjacency spans may list triangles in another order). The record
+  /// moves to the redo list, so that the progressive mesh can be replayed both ways.
   void Undo();
+
+  /// Collapses again the last undone record (forward replay); false when none is left.
+  bool Redo();
+
+  /// Records undone and not replayed yet, the next one to Redo last.
+  const std::vector<CollapseRecord>& UndoneRecords() const { return this->Undone; }
 
   const std::vector<CollapseRecord>& Records() const { return this->History; }
 
@@ -157,6 +165,7 @@ private:
   double MinimumAngleCosine = 1.0;
 
   std::vector<CollapseRecord> History;
+  std::vector<CollapseRecord> Undone;
   std::vector<std::int32_t> Changes;          // per change: corner (3 t + k), old vertex
   std::vector<std::int32_t> RemovedTriangles;
 
