@@ -221,6 +221,9 @@ void FoldOverAndDegenerateRejected()
   CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, centre + Eigen::Vector3d(-0.6, 0.0, 0.0))));
   // A point on the line of an opposite edge makes a triangle of zero area: rejected.
   CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.25, 0.5, 0.0))));
+  // So is one a hair inside it (1e-13 off the edge (6, 7)), which the plane-side test lets pass.
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.25 + 1e-13, 0.0))));
+  CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.3, 0.0))));
 }
 
 void AngleGuardRejectsNewSlivers()
