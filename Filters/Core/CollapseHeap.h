@@ -5,7 +5,8 @@
  *
  * Every id in [0, n) is in the heap at most once; Set() inserts it or moves it to its new cost
  * (decrease- and increase-key in O(log n)), Remove() takes it out. Flat arrays only: the heap of
- * {cost, sequence, id} and the position of each id.
+ * 16-byte {cost, sequence, id} entries and the position of each id. The heap is 4-ary: a node's
+ * four children share one cache line, and the tree is half as deep as a binary one.
  *
  * Tie rule, so that results are deterministic: of two equal costs the one set earlier comes
  * first. Each Set() draws a fresh sequence number, so an element whose cost is set again goes
@@ -16,7 +17,9 @@
 #ifndef MeshSimplification_CollapseHeap_h
 #define MeshSimplification_CollapseHeap_h
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace meshsimp
@@ -45,6 +48,10 @@ public:
   /// Inserts id, or moves it to its new cost, behind the entries of equal cost.
   void Set(std::int32_t id, double cost)
   {
+    if (this->NextSequence == std::numeric_limits<std::uint32_t>::max())
+    {
+      this->Renumber();
+    }
     const Entry entry{ cost, this->NextSequence++, id };
     std::int32_t slot = this->Position[id];
     if (slot < 0)
@@ -86,10 +93,12 @@ public:
   }
 
 private:
+  static constexpr std::int32_t Arity = 4;
+
   struct Entry
   {
     double Cost;
-    std::uint64_t Sequence;
+    std::uint32_t Sequence;
     std::int32_t Id;
     bool operator<(const Entry& o) const
     {
@@ -107,36 +116,51 @@ private:
   void Restore(std::int32_t slot)
   {
     const Entry entry = this->Entries[slot];
-    while (slot > 0 && entry < this->Entries[(slot - 1) / 2])
+    while (slot > 0 && entry < this->Entries[(slot - 1) / Arity])
     {
-      this->Place(slot, this->Entries[(slot - 1) / 2]);
-      slot = (slot - 1) / 2;
+      this->Place(slot, this->Entries[(slot - 1) / Arity]);
+      slot = (slot - 1) / Arity;
     }
     const std::int32_t n = static_cast<std::int32_t>(this->Entries.size());
     for (;;)
     {
-      std::int32_t child = 2 * slot + 1;
-      if (child >= n)
+      const std::int32_t first = Arity * slot + 1;
+      if (first >= n)
       {
         break;
       }
-      if (child + 1 < n && this->Entries[child + 1] < this->Entries[child])
+      std::int32_t best = first;
+      for (std::int32_t child = first + 1; child < std::min(first + Arity, n); ++child)
       {
-        ++child;
+        best = this->Entries[child] < this->Entries[best] ? child : best;
       }
-      if (!(this->Entries[child] < entry))
+      if (!(this->Entries[best] < entry))
       {
         break;
       }
-      this->Place(slot, this->Entries[child]);
-      slot = child;
+      this->Place(slot, this->Entries[best]);
+      slot = best;
     }
     this->Place(slot, entry);
   }
 
+  /// Sequence numbers run out after 2^32 - 1 Set() calls: number the entries again in their
+  /// order, which keeps every comparison as it was.
+  void Renumber()
+  {
+    std::vector<Entry> sorted = this->Entries;
+    std::sort(sorted.begin(), sorted.end());
+    std::uint32_t sequence = 0;
+    for (const Entry& e : sorted)
+    {
+      this->Entries[this->Position[e.Id]].Sequence = sequence++;
+    }
+    this->NextSequence = sequence;
+  }
+
   std::vector<Entry> Entries;
   std::vector<std::int32_t> Position; // slot of each id, -1 when absent
-  std::uint64_t NextSequence = 0;
+  std::uint32_t NextSequence = 0;
 };
 
 } // namespace meshsimp

@@ -185,6 +185,20 @@ void CollapseMesh::Neighbours(std::int32_t v, std::vector<std::int32_t>& out) co
   });
 }
 
+std::int32_t CollapseMesh::Valence(std::int32_t v) const
+{
+  // A manifold fan has as many neighbours as triangles, one more when it is open.
+  if (this->Classes[v] == VertexClass::NonManifold)
+  {
+    std::vector<std::int32_t>& around = this->Scratch;
+    this->Neighbours(v, around);
+    return static_cast<std::int32_t>(around.size());
+  }
+  std::int32_t triangles = 0;
+  this->ForEachTriangle(v, [&](std::int32_t) { ++triangles; });
+  return triangles + (this->OnBoundary(v) ? 1 : 0);
+}
+
 std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) const
 {
   std::vector<std::int32_t> list;
@@ -309,10 +323,7 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
   }
   for (int i = 0; i < oppositeCount; ++i)
   {
-    std::vector<std::int32_t>& around = this->Scratch;
-    this->Neighbours(opposite[i], around);
-    const std::int32_t valence = static_cast<std::int32_t>(around.size());
-    if (valence - 1 < (this->OnBoundary(opposite[i]) ? 2 : 3))
+    if (this->Valence(opposite[i]) - 1 < (this->OnBoundary(opposite[i]) ? 2 : 3))
     {
       return false;
     }

@@ -146,6 +146,9 @@ public:
   /// The neighbouring vertices of v that share an alive triangle with it (unsorted, unique).
   void Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const;
 
+  /// The number of neighbours of v.
+  std::int32_t Valence(std::int32_t v) const;
+
 private:
   bool LinkCondition(const std::int32_t* merged, int count, std::int32_t next) const;
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
