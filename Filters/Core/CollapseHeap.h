@@ -28,7 +28,13 @@ namespace meshsimp
 class CollapseHeap
 {
 public:
-  explicit CollapseHeap(std::int32_t size = 0) { this->Reset(size); }
+  /// sequenceLimit: how many Set() calls before sequence numbers are renumbered (tests lower it).
+  explicit CollapseHeap(std::int32_t size = 0,
+    std::uint32_t sequenceLimit = std::numeric_limits<std::uint32_t>::max())
+    : SequenceLimit(sequenceLimit)
+  {
+    this->Reset(size);
+  }
 
   void Reset(std::int32_t size)
   {
@@ -48,7 +54,7 @@ public:
   /// Inserts id, or moves it to its new cost, behind the entries of equal cost.
   void Set(std::int32_t id, double cost)
   {
-    if (this->NextSequence == std::numeric_limits<std::uint32_t>::max())
+    if (this->NextSequence >= this->SequenceLimit)
     {
       this->Renumber();
     }
@@ -161,6 +167,7 @@ private:
   std::vector<Entry> Entries;
   std::vector<std::int32_t> Position; // slot of each id, -1 when absent
   std::uint32_t NextSequence = 0;
+  std::uint32_t SequenceLimit;
 };
 
 } // namespace meshsimp

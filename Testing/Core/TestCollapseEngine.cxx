@@ -135,6 +135,22 @@ void HeapOrderAndTieRule()
   }
   CHECK((order == std::vector<std::int32_t>{ 3, 4, 1, 5, 0 }));
   CHECK(!heap.Contains(2));
+
+  // Sequence numbers renumbered when they run out (here after 4) keep the same order.
+  CollapseHeap small(6, 4);
+  for (const std::pair<std::int32_t, double> set :
+    { std::pair<std::int32_t, double>{ 0, 2.0 }, { 1, 0.0 }, { 2, 1.0 }, { 3, 0.0 }, { 4, 0.0 },
+      { 5, 3.0 }, { 1, 0.0 }, { 5, 0.5 }, { 0, 4.0 } })
+  {
+    small.Set(set.first, set.second);
+  }
+  small.Remove(2);
+  order.clear();
+  while (!small.Empty())
+  {
+    order.push_back(small.Pop());
+  }
+  CHECK((order == std::vector<std::int32_t>{ 3, 4, 1, 5, 0 }));
 }
 
 void VertexClasses()
