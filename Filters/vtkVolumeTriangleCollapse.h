@@ -88,8 +88,10 @@ public:
   ///@{
   /**
    * Gauss-curvature threshold of strong features (eq. 6–7), dimensionless: a triangle's
-   * curvature times the current mean triangle area (a cube's corner is about 0.09, smooth
-   * regions far less). Default 0.05; 0 turns the rule off.
+   * curvature times the current mean triangle area. A cube's corner scores about 0.1 (its face
+   * planes keep it anyway). Default 0.3, so that only sharper spikes count: at 0.05 the
+   * curvature noise of scanned meshes snaps many collapses onto vertices, and over the
+   * benchmark the mean distance grows by about 15 %. 0 turns the rule off.
    */
   vtkSetClampMacro(FeatureCurvature, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FeatureCurvature, double);
@@ -168,7 +170,7 @@ protected:
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;
   vtkIdType TargetTriangleCount = 1000;
-  double FeatureCurvature = 0.05;
+  double FeatureCurvature = 0.3;
   bool PreserveBoundary = false;
   double BoundaryCornerAngle = 60.0;
   bool UseNormalFactor = true;

@@ -59,7 +59,7 @@ struct VolumeCollapseOptions
   std::int64_t TargetTriangles = -1;
   /// Threshold of the dimensionless Gauss curvature K_t · (mean triangle area); <= 0 disables
   /// the feature rule.
-  double FeatureCurvature = 0.05;
+  double FeatureCurvature = 0.3;
   /// Lock every boundary vertex (boundary corners are always locked).
   bool PreserveBoundary = false;
   /// A boundary vertex where the boundary turns by more than this is a corner.
