@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace meshsimp
 {
@@ -167,10 +168,22 @@ double CollapseMesh::Area(std::int32_t t) const
     (this->Points[tri[1]] - this->Points[tri[0]]).cross(this->Points[tri[2]] - this->Points[tri[0]]).norm();
 }
 
+std::uint32_t CollapseMesh::NewMarks(std::uint32_t count) const
+{
+  if (this->Stamp > std::numeric_limits<std::uint32_t>::max() - count)
+  {
+    std::fill(this->Marks.begin(), this->Marks.end(), 0u);
+    this->Stamp = 0;
+  }
+  const std::uint32_t first = this->Stamp + 1;
+  this->Stamp += count;
+  return first;
+}
+
 void CollapseMesh::Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const
 {
   out.clear();
-  const std::uint32_t mark = ++this->Stamp;
+  const std::uint32_t mark = this->NewMarks(1);
   this->Marks[v] = mark;
   this->ForEachTriangle(v, [&](std::int32_t t) {
     for (int k = 0; k < 3; ++k)
@@ -209,16 +222,12 @@ std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) co
 
 bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int32_t next) const
 {
-  if (this->Stamp > 0xFFFFFF00u)
-  {
-    std::fill(this->Marks.begin(), this->Marks.end(), 0u);
-    this->Stamp = 0;
-  }
   // The state is the mesh after merging `merged` into one vertex m (triangles with two of them
   // are gone); the question is whether the edge (m, next) may collapse. Marks: inSet = a merged
-  // vertex, neighbour = a neighbour of m, common = a neighbour of both m and next.
-  this->Stamp += 3;
-  const std::uint32_t inSet = this->Stamp - 2, neighbour = this->Stamp - 1, common = this->Stamp;
+  // vertex, neighbour = a neighbour of m, common = a neighbour of both m and next, nextOnly = a
+  // neighbour of next alone.
+  const std::uint32_t inSet = this->NewMarks(4), neighbour = inSet + 1, common = inSet + 2,
+                      nextOnly = inSet + 3;
   auto mergedCount = [&](const std::int32_t* tri) {
     return (this->Marks[tri[0]] == inSet) + (this->Marks[tri[1]] == inSet) + (this->Marks[tri[2]] == inSet);
   };
@@ -282,15 +291,14 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
         ++commonCount;
         ++valenceNext;
       }
-      else if (this->Marks[w] != common && this->Marks[w] != common + 1)
+      else if (this->Marks[w] != common && this->Marks[w] != nextOnly)
       {
-        // Not a neighbour of m: count it once by marking it as one of next's own.
-        this->Marks[w] = common + 1;
+        // Not a neighbour of m: counted once.
+        this->Marks[w] = nextOnly;
         ++valenceNext;
       }
     }
   });
-  this->Stamp += 1; // common + 1 was used as a mark
   if (!ok || oppositeCount == 0 || (oppositeCount == 2 && opposite[0] == opposite[1]))
   {
     return false;

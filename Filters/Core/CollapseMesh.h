@@ -172,7 +172,10 @@ private:
   std::vector<std::int32_t> Changes;          // per change: corner (3 t + k), old vertex
   std::vector<std::int32_t> RemovedTriangles;
 
-  // Scratch marks for the checks: a vertex is marked when Marks[v] == Stamp (or Stamp + 1).
+  /// count fresh mark values (the first returned): values no vertex carries yet.
+  std::uint32_t NewMarks(std::uint32_t count) const;
+
+  // Scratch marks for the checks: a vertex carries a mark when Marks[v] equals it.
   mutable std::vector<std::uint32_t> Marks;
   mutable std::uint32_t Stamp = 0;
   mutable std::vector<std::int32_t> Scratch;

@@ -16,8 +16,11 @@
  *   become dearer and the error spreads evenly. All three factors can be switched off.
  * - The constriction matrix of a triangle sums Q_i over it and its adjacent triangles (every
  *   triangle sharing a vertex, Definition 2); its cost is eq. (5), v̄ᵀ Q̄ v̄ at the new vertex.
- * - Placement (§3.4): the minimiser of eq. (5) when Q̄ is well conditioned (eigenvalue ratio, not
- *   det ≠ 0), else the blend of eq. (8) with weights ∝ the vertices' adjacent areas.
+ * - Placement (§3.4): the minimiser of eq. (5) when Q̄ is well conditioned (judged by pivot and
+ *   eigenvalue ratios, not det ≠ 0), else the blend of eq. (8) with weights ∝ the vertices'
+ *   adjacent areas, moved along the directions Q̄ does determine (onto a crease, onto a plane).
+ *   A minimiser farther than two edge lengths from the triangle falls back to the blend; a
+ *   placement that would fold the mesh to the cheapest corner that does not.
  * - Gauss curvature (eq. 6–7): K_t = Σ |angle deficit| / Σ adjacent areas over the triangle's
  *   corners. A triangle whose K_t, measured in units of the current mean triangle area (so the
  *   threshold does not depend on the mesh's scale or resolution), exceeds FeatureCurvature is a
@@ -26,6 +29,8 @@
  *   the point ω v_i + (1 − ω) v_j of least error on that pair; one with three is kept. Boundary
  *   corners (a sharp turn of the boundary) never move. PreserveBoundary locks every boundary
  *   vertex.
+ * - The count: collapses stop at the target; one that would remove too many triangles (more than
+ *   1 % below the target) is replaced by the collapse of one of the triangle's edges.
  * - Zero-cost triangles whose cost is set again queue behind the waiting zero-cost ones (§3.5,
  *   Fig. 7): the heap's tie rule (CollapseHeap).
  * - After a collapse the new vertex's triangles get their geometry, quadrics and costs at once,
