@@ -92,6 +92,23 @@ struct CompactMesh
 
 CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});
 
+/// The cosine of a triangle's smallest angle (the largest of its three cosines; 1 when
+/// degenerate): a shape measure without trigonometry.
+inline double SmallestAngleCosine(
+  const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d* p[3] = { &a, &b, &c };
+  double largest = -1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Eigen::Vector3d e1 = *p[(k + 1) % 3] - *p[k];
+    const Eigen::Vector3d e2 = *p[(k + 2) % 3] - *p[k];
+    const double lengths = e1.norm() * e2.norm();
+    largest = std::max(largest, lengths > 0.0 ? e1.dot(e2) / lengths : 1.0);
+  }
+  return largest;
+}
+
 /// Boundary flags of a corner slot: the triangle's edge (v, Next), resp. (Previous, v), belongs
 /// to no other triangle.
 enum BoundaryCorner : std::uint8_t

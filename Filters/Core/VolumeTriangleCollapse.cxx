@@ -135,16 +135,10 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
   double weight = area * area / 9.0; // eq. (3)
   if (this->Options.UseShapeFactor)
   {
-    // §3.2: W = 2 (1 − cos min α) · S; the smallest angle has the largest cosine.
-    double largestCosine = -1.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vec3 e1 = this->Mesh.Point(tri[(k + 1) % 3]) - this->Mesh.Point(tri[k]);
-      const Vec3 e2 = this->Mesh.Point(tri[(k + 2) % 3]) - this->Mesh.Point(tri[k]);
-      const double lengths = e1.norm() * e2.norm();
-      largestCosine = std::max(largestCosine, lengths > 0.0 ? e1.dot(e2) / lengths : 1.0);
-    }
-    weight *= 2.0 * (1.0 - largestCosine) * area;
+    // §3.2: W = 2 (1 − cos min α) · S.
+    const double smallest = SmallestAngleCosine(
+      this->Mesh.Point(tri[0]), this->Mesh.Point(tri[1]), this->Mesh.Point(tri[2]));
+    weight *= 2.0 * (1.0 - smallest) * area;
   }
   if (this->Options.UseNormalFactor)
   {
