@@ -24,6 +24,10 @@
  * - every collapse keeps the mesh manifold (link condition), never folds a triangle over and
  *   never makes one degenerate; a closed 2-manifold input gives a closed 2-manifold output.
  *
+ * Points can be locked (kept in place, never removed) by a point-data array whose nonzero
+ * values mark them: select it as input array 0, e.g.
+ * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked").
+ *
  * The triangle count is met within 1 % (TargetReduction or TargetTriangleCount); the filter
  * stops early, with a warning, only when no legal collapse is left.
  *

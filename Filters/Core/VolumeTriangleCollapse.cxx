@@ -453,7 +453,8 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
   for (std::int32_t v = 0; v < n; ++v)
   {
     if (this->Mesh.Class(v) == VertexClass::Corner ||
-      (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)))
+      (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
+      (this->Options.LockedPoints && this->Options.LockedPoints[inputVertex[v]]))
     {
       this->Mesh.Lock(v);
     }

@@ -28,7 +28,7 @@
  * - Boundaries (§3.5): a triangle with one boundary corner collapses onto it; one with two onto
  *   the point ω v_i + (1 − ω) v_j of least error on that pair; one with three is kept. Boundary
  *   corners (a sharp turn of the boundary) never move. PreserveBoundary locks every boundary
- *   vertex.
+ *   vertex; LockedPoints locks the caller's choice.
  * - The count: collapses stop at the target; one that would remove too many triangles (more than
  *   1 % below the target) is replaced by the collapse of one of the triangle's edges.
  * - Zero-cost triangles whose cost is set again queue behind the waiting zero-cost ones (§3.5,
@@ -67,6 +67,8 @@ struct VolumeCollapseOptions
   double FeatureCurvature = 0.3;
   /// Lock every boundary vertex (boundary corners are always locked).
   bool PreserveBoundary = false;
+  /// Optional, one flag per input point: nonzero points are locked (never removed or moved).
+  const std::uint8_t* LockedPoints = nullptr;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
   /// The engine's angle guard (degrees; 0 turns it off): no collapse makes a new angle below

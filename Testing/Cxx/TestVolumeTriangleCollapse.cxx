@@ -11,10 +11,12 @@
 #include "vtkMath.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "TestVTKHelpers.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 
@@ -115,6 +117,41 @@ void TestThreadsAndInput(vtkPolyData* cow)
   });
 }
 
+void TestLockedPoints(vtkPolyData* cow)
+{
+  // Every 40th point locked by a point array selected as input array 0: each stays, exactly.
+  vtkNew<vtkPolyData> marked;
+  marked->ShallowCopy(cow);
+  vtkNew<vtkUnsignedCharArray> locks;
+  locks->SetName("Locked");
+  locks->SetNumberOfValues(cow->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
+  {
+    locks->SetValue(i, i % 40 == 0 ? 1 : 0);
+  }
+  marked->GetPointData()->AddArray(locks);
+  vtkNew<vtkVolumeTriangleCollapse> filter;
+  filter->SetInputData(marked);
+  filter->SetTargetReduction(0.9);
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked");
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  CHECK(std::abs(out->GetNumberOfPolys() - 580) <= 6);
+  std::set<std::array<double, 3>> outputPoints;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    out->GetPoint(i, p.data());
+    outputPoints.insert(p);
+  }
+  for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); i += 40)
+  {
+    std::array<double, 3> p;
+    cow->GetPoint(i, p.data());
+    CHECK(outputPoints.count(p) == 1);
+  }
+}
+
 void TestTriangleCountAndBoundary()
 {
   // An open mesh (a hemisphere) at a triangle count, with its rim kept in place.
@@ -162,5 +199,6 @@ int TestVolumeTriangleCollapse(int, char*[])
   TestSphereVolume();
   TestThreadsAndInput(cow);
   TestTriangleCountAndBoundary();
+  TestLockedPoints(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

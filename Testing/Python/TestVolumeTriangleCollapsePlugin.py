@@ -37,6 +37,16 @@ edges = FeatureEdges(Input=simplified, BoundaryEdges=1, NonManifoldEdges=1, Feat
 edges.UpdatePipeline()
 check(edges.GetDataInformation().GetNumberOfCells() == 0, "no boundary or non-manifold edge")
 
+# Locked points: none by default; with a point array selected, its nonzero points stay.
+check(list(simplified.LockedPoints) == ["POINTS", "None"], "no locked points by default")
+marks = Calculator(Input=cow, ResultArrayName="Locked", Function="coordsY > 0.25")
+locked = VolumeTriangleCollapse(Input=marks, LockedPoints=["POINTS", "Locked"])
+before, after = servermanager.Fetch(marks), servermanager.Fetch(locked)
+kept = set(after.GetPoint(i) for i in range(after.GetNumberOfPoints()))
+marked = [before.GetPoint(i) for i in range(before.GetNumberOfPoints())
+          if before.GetPointData().GetArray("Locked").GetValue(i) != 0]
+check(len(marked) > 0 and all(p in kept for p in marked), "every locked point is kept")
+
 simplified.TargetMode = "Triangle Count"
 simplified.TargetTriangleCount = 1000
 simplified.UpdatePipeline()
