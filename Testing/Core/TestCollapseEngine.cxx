@@ -397,6 +397,30 @@ void VolumeCollapseKeepsPlaneAndCorners()
   }
   CHECK(corners == 4);
 }
+void VolumeCollapseReportsProgressAndAborts()
+{
+  // Progress rises from the set-up to the end; a caller that says stop gets false at once.
+  const Mesh sphere = Sphere(16);
+  meshsimp::VolumeCollapseOptions options;
+  options.TargetTriangles = 100;
+  std::vector<double> reported;
+  meshsimp::ExecutionContext context;
+  context.Progress = [&](double progress) {
+    reported.push_back(progress);
+    return true;
+  };
+  meshsimp::VolumeCollapseResult result;
+  CHECK(meshsimp::VolumeTriangleCollapse(sphere.View(), options, result, context));
+  CHECK(reported.size() >= 3 && reported.back() == 1.0);
+  CHECK(std::is_sorted(reported.begin(), reported.end()));
+  reported.clear();
+  context.Progress = [&](double progress) {
+    reported.push_back(progress);
+    return progress < 0.5;
+  };
+  CHECK(!meshsimp::VolumeTriangleCollapse(sphere.View(), options, result, context));
+  CHECK(!reported.empty() && reported.back() >= 0.5 && reported.back() < 1.0);
+}
 } // namespace
 
 int main()
@@ -413,5 +437,6 @@ int main()
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
+    { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
   });
 }
