@@ -69,10 +69,16 @@ private:
   void Requeue(std::int32_t t);
   void UpdateAround(std::int32_t kept);
   int CountRemoved(const CollapsePlan& plan) const;
+  std::int64_t Prepare(const TriangleMeshView& input, VolumeCollapseResult& result);
+  bool CollapseToTarget(std::int64_t target, VolumeCollapseResult& result);
+  void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
 
   const VolumeCollapseOptions& Options;
   const ExecutionContext& Context;
   CollapseMesh Mesh;
+  std::vector<std::int32_t> InputVertex, InputTriangle; // compact → input ids
+  Vec3 Origin = Vec3::Zero();                            // normalised = (input − Origin) · Scale
+  double Diagonal = 1.0, Scale = 1.0;                    // Scale = 1 / Diagonal
   std::vector<Vec3> Normals;
   std::vector<double> Areas;
   std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
@@ -422,14 +428,15 @@ int VolumeCollapser::CountRemoved(const CollapsePlan& plan) const
   return removed;
 }
 
-bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& result)
+std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeCollapseResult& result)
 {
-  result = VolumeCollapseResult();
+  // The compact copy of the usable input, in normalised coordinates, with its locks, geometry,
+  // quadrics and first costs.
   CompactMesh compact = MakeCompactMesh(input, this->Context);
   result.NonFinitePoints = compact.NonFinitePoints;
-  const std::vector<std::int32_t> inputVertex = std::move(compact.InputVertex);
-  const std::vector<std::int32_t> inputTriangle = std::move(compact.InputTriangle);
-  const std::int64_t usable = static_cast<std::int64_t>(inputTriangle.size());
+  this->InputVertex = std::move(compact.InputVertex);
+  this->InputTriangle = std::move(compact.InputTriangle);
+  const std::int64_t usable = static_cast<std::int64_t>(this->InputTriangle.size());
   result.UsableTriangles = usable;
   const std::int64_t target = this->Options.TargetTriangles >= 0
     ? std::min(this->Options.TargetTriangles, usable)
@@ -439,12 +446,13 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
 
   // Normalised coordinates (box centred at the origin, diagonal 1) keep the sixth and eighth
   // powers of lengths in the costs within range.
-  const Vec3 origin = 0.5 * (compact.Lower + compact.Upper);
+  this->Origin = 0.5 * (compact.Lower + compact.Upper);
   const double diagonal = (compact.Upper - compact.Lower).norm();
-  const double scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
+  this->Diagonal = diagonal > 0.0 ? diagonal : 1.0;
+  this->Scale = 1.0 / this->Diagonal;
   for (Vec3& p : compact.Points)
   {
-    p = (p - origin) * scale;
+    p = (p - this->Origin) * this->Scale;
   }
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
   this->Mesh.SetMinimumAngle(this->Options.MinimumAngle);
@@ -454,7 +462,7 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
   {
     if (this->Mesh.Class(v) == VertexClass::Corner ||
       (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
-      (this->Options.LockedPoints && this->Options.LockedPoints[inputVertex[v]]))
+      (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
     {
       this->Mesh.Lock(v);
     }
@@ -511,12 +519,12 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     }
   }
   std::vector<double>().swap(initial);
-  if (!this->Context.Report(0.1))
-  {
-    return false;
-  }
+  return target;
+}
 
-  // Step 5–6: collapse the cheapest triangle until the target is met.
+bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult& result)
+{
+  // Step 5–6 of §3.6: collapse the cheapest triangle until the target is met.
   const std::int64_t tolerance = target / 100;
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
   std::int64_t steps = 0;
@@ -597,7 +605,14 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     }
   }
 
+  return true;
+}
+
+void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult& result) const
+{
   // The surviving triangles and their points, in the compact order, back in input coordinates.
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
   std::vector<std::int32_t> outputIndex(n, -1);
   for (std::int32_t t = 0; t < m; ++t)
   {
@@ -610,7 +625,7 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
       outputIndex[this->Mesh.Triangle(t)[k]] = 0;
     }
   }
-  const double scale8 = std::pow(diagonal > 0.0 ? diagonal : 1.0, 8);
+  const double scale8 = std::pow(this->Diagonal, 8); // error units: length⁸ (eq. 4–5)
   for (std::int32_t v = 0; v < n; ++v)
   {
     if (outputIndex[v] < 0)
@@ -619,10 +634,10 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     }
     outputIndex[v] = static_cast<std::int32_t>(result.PointSource.size());
     // Points no collapse moved keep their input coordinates bit for bit.
-    const Vec3 p = this->Moved[v] ? Vec3(this->Mesh.Point(v) / scale + origin)
-                                  : input.Point(inputVertex[v]);
+    const Vec3 p = this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale + this->Origin)
+                                  : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
-    result.PointSource.push_back(inputVertex[v]);
+    result.PointSource.push_back(this->InputVertex[v]);
     result.PointError.push_back(this->VertexError[v] * scale8);
   }
   for (std::int32_t t = 0; t < m; ++t)
@@ -633,22 +648,35 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
       {
         result.Triangles.push_back(outputIndex[this->Mesh.Triangle(t)[k]]);
       }
-      result.TriangleSource.push_back(inputTriangle[t]);
+      result.TriangleSource.push_back(this->InputTriangle[t]);
     }
   }
   result.Records = this->Mesh.Records();
   for (CollapseRecord& record : result.Records)
   {
-    record.Kept = inputVertex[record.Kept];
-    record.KeptPosition = record.KeptPosition / scale + origin;
+    record.Kept = this->InputVertex[record.Kept];
+    record.KeptPosition = record.KeptPosition / this->Scale + this->Origin;
+    record.NewPosition = record.NewPosition / this->Scale + this->Origin;
     for (std::int32_t& r : record.Removed)
     {
-      r = r >= 0 ? inputVertex[r] : -1;
+      r = r >= 0 ? this->InputVertex[r] : -1;
     }
   }
   result.SquareVolumeError *= scale8;
+}
+
+bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& result)
+{
+  result = VolumeCollapseResult();
+  const std::int64_t target = this->Prepare(input, result);
+  if (!this->Context.Report(0.1) || !this->CollapseToTarget(target, result))
+  {
+    return false;
+  }
+  this->Output(input, result);
   return this->Context.Report(1.0);
 }
+
 } // namespace
 
 bool VolumeTriangleCollapse(const TriangleMeshView& input, const VolumeCollapseOptions& options,

@@ -381,6 +381,17 @@ void VolumeCollapseKeepsSphereClosed()
   CHECK(std::abs(volume / sphereVolume - 1.0) < 0.05);
   CHECK(result.SquareVolumeError > 0.0);
   CHECK(result.PointError.size() == result.PointSource.size());
+  // The records speak input ids and coordinates (the sphere fills [0, 1]³; new points may
+  // stand a little outside it).
+  CHECK(!result.Records.empty());
+  for (const meshsimp::CollapseRecord& record : result.Records)
+  {
+    CHECK(record.Kept >= 0 && record.Kept < static_cast<std::int32_t>(sphere.Points.size() / 3));
+    for (const Eigen::Vector3d& p : { record.KeptPosition, record.NewPosition })
+    {
+      CHECK(p.minCoeff() > -0.05 && p.maxCoeff() < 1.05);
+    }
+  }
 }
 
 void VolumeCollapseKeepsPlaneAndCorners()
