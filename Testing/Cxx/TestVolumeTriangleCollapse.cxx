@@ -72,6 +72,19 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
   }
 }
 
+/// The coordinates of a mesh's points, to look points up exactly.
+std::set<std::array<double, 3>> PointSet(vtkPolyData* mesh)
+{
+  std::set<std::array<double, 3>> points;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    mesh->GetPoint(i, p.data());
+    points.insert(p);
+  }
+  return points;
+}
+
 double Volume(vtkPolyData* mesh)
 {
   vtkNew<vtkMassProperties> mass;
@@ -137,13 +150,7 @@ void TestLockedPoints(vtkPolyData* cow)
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
   CHECK(std::abs(out->GetNumberOfPolys() - 580) <= 6);
-  std::set<std::array<double, 3>> outputPoints;
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-  {
-    std::array<double, 3> p;
-    out->GetPoint(i, p.data());
-    outputPoints.insert(p);
-  }
+  const std::set<std::array<double, 3>> outputPoints = PointSet(out);
   for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); i += 40)
   {
     std::array<double, 3> p;
@@ -170,13 +177,7 @@ void TestTriangleCountAndBoundary()
   vtkPolyData* out = filter->GetOutput();
   CHECK(std::abs(out->GetNumberOfPolys() - 500) <= 5);
   // Every rim point of the input (z = 0) is still there.
-  std::set<std::array<double, 3>> outputPoints;
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-  {
-    std::array<double, 3> p;
-    out->GetPoint(i, p.data());
-    outputPoints.insert(p);
-  }
+  const std::set<std::array<double, 3>> outputPoints = PointSet(out);
   int rim = 0;
   for (vtkIdType i = 0; i < cap->GetNumberOfPoints(); ++i)
   {
