@@ -432,6 +432,39 @@ void VolumeCollapseReportsProgressAndAborts()
   CHECK(!meshsimp::VolumeTriangleCollapse(sphere.View(), options, result, context));
   CHECK(!reported.empty() && reported.back() >= 0.5 && reported.back() < 1.0);
 }
+void VolumeCollapseSurvivesRandomSoups()
+{
+  // Triangle soups with repeated and coincident points, duplicate, degenerate and non-manifold
+  // triangles, some flat: every run ends with valid indices and finite points.
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  for (int run = 0; run < 200; ++run)
+  {
+    Mesh soup;
+    const int points = 4 + static_cast<int>(random() % 60);
+    const int triangles = 1 + static_cast<int>(random() % 200);
+    for (int i = 0; i < 3 * points; ++i)
+    {
+      soup.Points.push_back(random() % 7 == 0 || (run % 5 == 0 && i % 3 == 2) ? 0.0 : coordinate(random));
+    }
+    for (int i = 0; i < 3 * triangles; ++i)
+    {
+      soup.Triangles.push_back(static_cast<std::int32_t>(random() % points));
+    }
+    meshsimp::VolumeCollapseOptions options;
+    options.TargetReduction = (random() % 100) / 100.0;
+    options.PreserveBoundary = random() % 2 == 0;
+    options.MinimumAngle = 5.0 * (random() % 3);
+    options.KeepUndo = random() % 2 == 0;
+    meshsimp::VolumeCollapseResult result;
+    CHECK(meshsimp::VolumeTriangleCollapse(soup.View(), options, result));
+    const std::int32_t count = static_cast<std::int32_t>(result.Points.size() / 3);
+    CHECK(std::all_of(result.Triangles.begin(), result.Triangles.end(),
+      [count](std::int32_t v) { return v >= 0 && v < count; }));
+    CHECK(std::all_of(result.Points.begin(), result.Points.end(), [](double p) { return std::isfinite(p); }));
+    CHECK(static_cast<std::int64_t>(result.TriangleSource.size()) <= result.UsableTriangles);
+  }
+}
 } // namespace
 
 int main()
@@ -449,5 +482,6 @@ int main()
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
+    { "VolumeCollapseSurvivesRandomSoups", VolumeCollapseSurvivesRandomSoups },
   });
 }
