@@ -307,10 +307,11 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
   {
     return false;
   }
-  // Nobody falls below three neighbours (two on the boundary): the merged vertex has
-  // valence(m) - 1 + valence(next) - 1 - commonCount neighbours; each far corner loses one.
+  // Nobody falls below three neighbours (two on the boundary): the merged vertex keeps m's
+  // neighbours but next and next's neighbours but m, the common ones once; each far corner
+  // loses one.
   const bool mergedOnBoundary = boundary || nextOnBoundary;
-  const std::int32_t valenceAfter = (valenceM - 1) + (valenceNext - 0) - commonCount;
+  const std::int32_t valenceAfter = (valenceM - 1) + valenceNext - commonCount;
   if (valenceAfter < (mergedOnBoundary ? 2 : 3))
   {
     return false;
