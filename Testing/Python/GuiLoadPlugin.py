@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Run by the ParaView GUI (paraview --script=... --exit): load the plugin, simplify the cow, and
-write the triangle count - or the error - to the file MESHSIMPLIFICATION_MARKER names, for
-Testing/GUI/TestParaViewGUI.cmake to check."""
+"""Run by the ParaView GUI (paraview --script=... --exit): load the plugin, simplify the cow with
+each filter, and write the triangle counts ("octree volume") - or the error - to the file
+MESHSIMPLIFICATION_MARKER names, for Testing/GUI/TestParaViewGUI.cmake to check."""
 import os
 import traceback
 
@@ -14,8 +14,12 @@ try:
     simplified = OctreeVertexClustering(Input=cow, TargetReduction=0.9)
     simplified.UpdatePipeline()
     Show(simplified)
+    collapsed = VolumeTriangleCollapse(Input=cow, TargetReduction=0.9)
+    collapsed.UpdatePipeline()
+    Show(collapsed)
     Render()
-    result = "%d\n" % simplified.GetDataInformation().GetNumberOfCells()
+    result = "%d %d\n" % (simplified.GetDataInformation().GetNumberOfCells(),
+                           collapsed.GetDataInformation().GetNumberOfCells())
 except Exception:
     result = "error\n" + traceback.format_exc()
 with open(marker, "w") as out:
