@@ -48,8 +48,6 @@ public:
   bool Contains(std::int32_t id) const { return this->Position[id] >= 0; }
   std::int32_t Top() const { return this->Entries.front().Id; }
   double TopCost() const { return this->Entries.front().Cost; }
-  /// The cost of an id in the heap.
-  double Cost(std::int32_t id) const { return this->Entries[this->Position[id]].Cost; }
 
   /// Inserts id, or moves it to its new cost, behind the entries of equal cost.
   void Set(std::int32_t id, double cost)

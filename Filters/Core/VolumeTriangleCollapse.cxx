@@ -565,7 +565,9 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
     }
     CollapsePlan& plan = candidate.Plan;
     const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
-    if (alive - this->CountRemoved(plan) < target - tolerance)
+    // A legal triangle collapse removes at most four triangles (the link condition leaves one
+    // triangle across each of its edges), so only the last few steps need the exact count.
+    if (alive - 4 < target - tolerance && alive - this->CountRemoved(plan) < target - tolerance)
     {
       // Near the target: collapse only the edge to the corner of larger weight instead.
       const int other = plan.Weights[1] >= plan.Weights[2] ? 1 : 2;
