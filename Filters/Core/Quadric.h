@@ -125,13 +125,21 @@ inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eige
     x = x0; // no planes at all
     return 0;
   }
-  // Well conditioned: the pivots of a pivoted LDLT bound the eigenvalues closely enough to
-  // judge it without the (trigonometric) closed-form eigenvalues.
-  const Eigen::LDLT<Eigen::Matrix3d> ldlt(a);
-  const Eigen::Vector3d pivots = ldlt.vectorD().cwiseAbs();
-  if (pivots.minCoeff() > 10.0 * relativeTolerance * pivots.maxCoeff())
+  // Well conditioned: with the cofactors of A, det(A) / (tr(A) · Σ principal 2x2 minors) lies
+  // within [λmin / 9λmax, λmin / λmax] (det / Σ minors ∈ [λmin / 3, λmin], tr ∈ [λmax, 3λmax]),
+  // so the ratio judges conditioning without any eigenvalue, and the adjugate solves it.
+  const double c00 = q.A11 * q.A22 - q.A12 * q.A12;
+  const double c01 = q.A02 * q.A12 - q.A01 * q.A22;
+  const double c02 = q.A01 * q.A12 - q.A02 * q.A11;
+  const double c11 = q.A00 * q.A22 - q.A02 * q.A02;
+  const double c12 = q.A01 * q.A02 - q.A00 * q.A12;
+  const double c22 = q.A00 * q.A11 - q.A01 * q.A01;
+  const double det = q.A00 * c00 + q.A01 * c01 + q.A02 * c02;
+  if (det > relativeTolerance * a.trace() * (c00 + c11 + c22))
   {
-    x = ldlt.solve(-q.B());
+    const double s = -1.0 / det;
+    x = Eigen::Vector3d(s * (c00 * q.B0 + c01 * q.B1 + c02 * q.B2),
+      s * (c01 * q.B0 + c11 * q.B1 + c12 * q.B2), s * (c02 * q.B0 + c12 * q.B1 + c22 * q.B2));
     if (x.allFinite())
     {
       return 3;

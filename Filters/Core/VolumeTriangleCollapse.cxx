@@ -103,12 +103,11 @@ void VolumeCollapser::UpdateGeometry(std::int32_t t)
   const double length = cross.norm();
   this->Normals[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
   this->Areas[t] = 0.5 * length;
-  for (int k = 0; k < 3; ++k)
-  {
-    const Vec3 e1 = *p[(k + 1) % 3] - *p[k];
-    const Vec3 e2 = *p[(k + 2) % 3] - *p[k];
-    this->Angles[3 * t + k] = std::atan2(e1.cross(e2).norm(), e1.dot(e2));
-  }
+  // Two corner angles measured, the third from their sum: atan2 of |e1 × e2| = 2S and e1 · e2.
+  double* angles = this->Angles.data() + 3 * static_cast<std::size_t>(t);
+  angles[0] = std::atan2(length, (*p[1] - *p[0]).dot(*p[2] - *p[0]));
+  angles[1] = std::atan2(length, (*p[2] - *p[1]).dot(*p[0] - *p[1]));
+  angles[2] = std::max(0.0, Pi - angles[0] - angles[1]);
 }
 
 void VolumeCollapser::UpdateVertex(std::int32_t v)
