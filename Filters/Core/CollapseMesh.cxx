@@ -129,8 +129,8 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees)
     this->Locked[v] = c == VertexClass::NonManifold ? 1 : 0;
   }
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
-  this->Marks.assign(n, 0);
-  this->Stamp = 0;
+  this->Scratch.Marks.assign(n, 0);
+  this->Scratch.Stamp = 0;
   this->History.clear();
   this->Undone.clear();
   this->Changes.clear();
@@ -154,44 +154,49 @@ double CollapseMesh::Area(std::int32_t t) const
     (this->Points[tri[1]] - this->Points[tri[0]]).cross(this->Points[tri[2]] - this->Points[tri[0]]).norm();
 }
 
-std::uint32_t CollapseMesh::NewMarks(std::uint32_t count) const
+std::uint32_t CollapseMesh::NewMarks(std::uint32_t count, CheckScratch& scratch) const
 {
-  if (this->Stamp > std::numeric_limits<std::uint32_t>::max() - count)
+  if (scratch.Marks.size() < this->Points.size() ||
+    scratch.Stamp > std::numeric_limits<std::uint32_t>::max() - count)
   {
-    std::fill(this->Marks.begin(), this->Marks.end(), 0u);
-    this->Stamp = 0;
+    scratch.Marks.assign(this->Points.size(), 0u);
+    scratch.Stamp = 0;
   }
-  const std::uint32_t first = this->Stamp + 1;
-  this->Stamp += count;
+  const std::uint32_t first = scratch.Stamp + 1;
+  scratch.Stamp += count;
   return first;
 }
 
 void CollapseMesh::Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const
 {
+  this->Neighbours(v, out, this->Scratch);
+}
+
+void CollapseMesh::Neighbours(std::int32_t v, std::vector<std::int32_t>& out, CheckScratch& scratch) const
+{
   out.clear();
-  const std::uint32_t mark = this->NewMarks(1);
-  this->Marks[v] = mark;
+  const std::uint32_t mark = this->NewMarks(1, scratch);
+  scratch.Marks[v] = mark;
   this->ForEachTriangle(v, [&](std::int32_t t) {
     for (int k = 0; k < 3; ++k)
     {
       const std::int32_t w = this->Triangles[3 * t + k];
-      if (this->Marks[w] != mark)
+      if (scratch.Marks[w] != mark)
       {
-        this->Marks[w] = mark;
+        scratch.Marks[w] = mark;
         out.push_back(w);
       }
     }
   });
 }
 
-std::int32_t CollapseMesh::Valence(std::int32_t v) const
+std::int32_t CollapseMesh::Valence(std::int32_t v, CheckScratch& scratch) const
 {
   // A manifold fan has as many neighbours as triangles, one more when it is open.
   if (this->Classes[v] == VertexClass::NonManifold)
   {
-    std::vector<std::int32_t>& around = this->Scratch;
-    this->Neighbours(v, around);
-    return static_cast<std::int32_t>(around.size());
+    this->Neighbours(v, scratch.Vertices, scratch);
+    return static_cast<std::int32_t>(scratch.Vertices.size());
   }
   std::int32_t triangles = 0;
   this->ForEachTriangle(v, [&](std::int32_t) { ++triangles; });
@@ -206,21 +211,22 @@ std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) co
   return list;
 }
 
-bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int32_t next) const
+bool CollapseMesh::LinkCondition(
+  const std::int32_t* merged, int count, std::int32_t next, CheckScratch& scratch) const
 {
   // The state is the mesh after merging `merged` into one vertex m (triangles with two of them
   // are gone); the question is whether the edge (m, next) may collapse. Marks: inSet = a merged
   // vertex, neighbour = a neighbour of m, common = a neighbour of both m and next, nextOnly = a
   // neighbour of next alone.
-  const std::uint32_t inSet = this->NewMarks(4), neighbour = inSet + 1, common = inSet + 2,
+  const std::uint32_t inSet = this->NewMarks(4, scratch), neighbour = inSet + 1, common = inSet + 2,
                       nextOnly = inSet + 3;
   auto mergedCount = [&](const std::int32_t* tri) {
-    return (this->Marks[tri[0]] == inSet) + (this->Marks[tri[1]] == inSet) + (this->Marks[tri[2]] == inSet);
+    return (scratch.Marks[tri[0]] == inSet) + (scratch.Marks[tri[1]] == inSet) + (scratch.Marks[tri[2]] == inSet);
   };
   bool boundary = false;
   for (int i = 0; i < count; ++i)
   {
-    this->Marks[merged[i]] = inSet;
+    scratch.Marks[merged[i]] = inSet;
     boundary = boundary || this->OnBoundary(merged[i]);
   }
   std::int32_t valenceM = 0;
@@ -234,9 +240,9 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
       }
       for (int k = 0; k < 3; ++k)
       {
-        if (this->Marks[tri[k]] != inSet && this->Marks[tri[k]] != neighbour)
+        if (scratch.Marks[tri[k]] != inSet && scratch.Marks[tri[k]] != neighbour)
         {
-          this->Marks[tri[k]] = neighbour;
+          scratch.Marks[tri[k]] = neighbour;
           ++valenceM;
         }
       }
@@ -256,7 +262,7 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
     for (int k = 0; k < 3; ++k)
     {
       const std::int32_t w = tri[k];
-      if (w == next || this->Marks[w] == inSet)
+      if (w == next || scratch.Marks[w] == inSet)
       {
         continue;
       }
@@ -271,16 +277,16 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
           opposite[oppositeCount++] = w;
         }
       }
-      if (this->Marks[w] == neighbour)
+      if (scratch.Marks[w] == neighbour)
       {
-        this->Marks[w] = common;
+        scratch.Marks[w] = common;
         ++commonCount;
         ++valenceNext;
       }
-      else if (this->Marks[w] != common && this->Marks[w] != nextOnly)
+      else if (scratch.Marks[w] != common && scratch.Marks[w] != nextOnly)
       {
         // Not a neighbour of m: counted once.
-        this->Marks[w] = nextOnly;
+        scratch.Marks[w] = nextOnly;
         ++valenceNext;
       }
     }
@@ -296,7 +302,7 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
   }
   for (int i = 0; i < oppositeCount; ++i)
   {
-    if (this->Marks[opposite[i]] != common)
+    if (scratch.Marks[opposite[i]] != common)
     {
       return false;
     }
@@ -318,7 +324,7 @@ bool CollapseMesh::LinkCondition(const std::int32_t* merged, int count, std::int
   }
   for (int i = 0; i < oppositeCount; ++i)
   {
-    if (this->Valence(opposite[i]) - 1 < (this->OnBoundary(opposite[i]) ? 2 : 3))
+    if (this->Valence(opposite[i], scratch) - 1 < (this->OnBoundary(opposite[i]) ? 2 : 3))
     {
       return false;
     }
@@ -392,7 +398,7 @@ void CollapseMesh::SetMinimumAngle(double degrees)
   this->MinimumAngleCosine = degrees > 0.0 ? std::cos(degrees * 3.14159265358979323846 / 180.0) : 1.0;
 }
 
-bool CollapseMesh::IsLegal(const CollapsePlan& plan) const
+bool CollapseMesh::IsLegal(const CollapsePlan& plan, CheckScratch& scratch) const
 {
   if (plan.Count < 2 || plan.Count > 3 || !plan.Position.allFinite())
   {
@@ -414,7 +420,8 @@ bool CollapseMesh::IsLegal(const CollapsePlan& plan) const
   {
     return false;
   }
-  if (!this->LinkCondition(v, 1, v[1]) || (plan.Count == 3 && !this->LinkCondition(v, 2, v[2])))
+  if (!this->LinkCondition(v, 1, v[1], scratch) ||
+    (plan.Count == 3 && !this->LinkCondition(v, 2, v[2], scratch)))
   {
     return false;
   }
@@ -452,24 +459,9 @@ void CollapseMesh::CompactRefs()
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
 }
 
-int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
+int CollapseMesh::Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo)
 {
-  this->Undone.clear(); // a new collapse ends the replay of undone ones
-  CollapseRecord record;
   const std::int32_t kept = plan.Vertices[0];
-  record.Kept = kept;
-  for (int i = 1; i < plan.Count; ++i)
-  {
-    record.Removed[i - 1] = plan.Vertices[i];
-  }
-  std::copy(plan.Weights, plan.Weights + 3, record.Weights);
-  record.KeptPosition = this->Points[kept];
-  record.NewPosition = plan.Position;
-  record.KeptClass = this->Classes[kept];
-  record.FirstChange = static_cast<std::int32_t>(this->Changes.size());
-  record.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
-
-  std::vector<std::int32_t>& span = this->Scratch;
   span.clear();
   int removed = 0;
   for (int i = 0; i < plan.Count; ++i)
@@ -505,7 +497,6 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
       span.push_back(t);
     });
   }
-  this->AliveCount -= removed;
   this->Points[kept] = plan.Position;
   for (int i = 1; i < plan.Count; ++i)
   {
@@ -514,10 +505,35 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
     {
       this->Classes[kept] = c;
     }
+  }
+  return removed;
+}
+
+int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
+{
+  this->Undone.clear(); // a new collapse ends the replay of undone ones
+  CollapseRecord record;
+  const std::int32_t kept = plan.Vertices[0];
+  record.Kept = kept;
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    record.Removed[i - 1] = plan.Vertices[i];
+  }
+  std::copy(plan.Weights, plan.Weights + 3, record.Weights);
+  record.KeptPosition = this->Points[kept];
+  record.NewPosition = plan.Position;
+  record.KeptClass = this->Classes[kept];
+  record.FirstChange = static_cast<std::int32_t>(this->Changes.size());
+  record.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
+
+  const int removed = this->Merge(plan, this->Span, keepUndo);
+  this->AliveCount -= removed;
+  for (int i = 1; i < plan.Count; ++i)
+  {
     this->LiveRefs -= this->Count[plan.Vertices[i]];
     this->Count[plan.Vertices[i]] = 0;
   }
-  this->SetSpan(kept, span);
+  this->SetSpan(kept, this->Span);
   record.ChangeCount = static_cast<std::int32_t>(this->Changes.size()) / 2 - record.FirstChange / 2;
   record.RemovedTriangleCount =
     static_cast<std::int32_t>(this->RemovedTriangles.size()) - record.FirstRemovedTriangle;
@@ -527,6 +543,61 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
     record.FirstRemovedTriangle = record.RemovedTriangleCount = 0;
   }
   this->History.push_back(record);
+  if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
+  {
+    this->CompactRefs();
+  }
+  return removed;
+}
+
+std::int64_t CollapseMesh::ApplyIndependent(
+  const std::vector<CollapsePlan>& plans, const ExecutionContext& context)
+{
+  // Each kept vertex's new span goes to its own slice of one block, sized by the merged
+  // vertices' spans together, and the block is appended to Refs once: the concurrent merges
+  // write disjoint triangles, points and slices.
+  const std::int64_t count = static_cast<std::int64_t>(plans.size());
+  std::vector<std::int64_t> offsets(count + 1, 0);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    std::int64_t room = 0;
+    for (int j = 0; j < plans[i].Count; ++j)
+    {
+      room += this->Count[plans[i].Vertices[j]];
+    }
+    offsets[i + 1] = offsets[i] + room;
+  }
+  std::vector<std::int32_t> block(offsets[count]);
+  std::vector<std::int32_t> sizes(count), removedCounts(count);
+  context.For(count, [&](std::int64_t begin, std::int64_t end) {
+    std::vector<std::int32_t> span;
+    for (std::int64_t i = begin; i < end; ++i)
+    {
+      removedCounts[i] = this->Merge(plans[i], span, false);
+      std::copy(span.begin(), span.end(), block.begin() + offsets[i]);
+      sizes[i] = static_cast<std::int32_t>(span.size());
+    }
+  }, 8 * offsets[count]);
+
+  const std::int64_t base = static_cast<std::int64_t>(this->Refs.size());
+  this->Refs.insert(this->Refs.end(), block.begin(), block.end());
+  std::int64_t removed = 0;
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    const CollapsePlan& plan = plans[i];
+    for (int j = 1; j < plan.Count; ++j)
+    {
+      this->LiveRefs -= this->Count[plan.Vertices[j]];
+      this->Count[plan.Vertices[j]] = 0;
+    }
+    const std::int32_t kept = plan.Vertices[0];
+    this->LiveRefs += sizes[i] - this->Count[kept];
+    this->Start[kept] = static_cast<std::int32_t>(base + offsets[i]);
+    this->Count[kept] = sizes[i];
+    removed += removedCounts[i];
+  }
+  this->AliveCount -= removed;
+  this->Undone.clear();
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {
     this->CompactRefs();

@@ -31,6 +31,7 @@
 #ifndef MeshSimplification_CollapseMesh_h
 #define MeshSimplification_CollapseMesh_h
 
+#include "Execution.h"
 #include "TriangleMesh.h"
 
 #include <Eigen/Core>
@@ -75,6 +76,15 @@ struct CollapsePlan
 class CollapseMesh
 {
 public:
+  /// Working marks of the checks. IsLegal uses the mesh's own; threads that check collapses
+  /// concurrently pass one each.
+  struct CheckScratch
+  {
+    std::vector<std::uint32_t> Marks;
+    std::uint32_t Stamp = 0;
+    std::vector<std::int32_t> Vertices;
+  };
+
   /**
    * Takes a compact mesh's points, triangles and adjacency (moved out of it). A boundary vertex
    * whose two boundary edges turn by more than cornerAngleDegrees is a Corner.
@@ -116,7 +126,9 @@ public:
   double Area(std::int32_t t) const;
 
   /// Whether the plan passes every check listed at the top of this file.
-  bool IsLegal(const CollapsePlan& plan) const;
+  bool IsLegal(const CollapsePlan& plan) const { return this->IsLegal(plan, this->Scratch); }
+  /// The same with the caller's scratch: concurrent calls read the mesh only.
+  bool IsLegal(const CollapsePlan& plan, CheckScratch& scratch) const;
 
   /// The angle guard's minimum in degrees; 0 (default) turns it off.
   void SetMinimumAngle(double degrees);
@@ -147,10 +159,24 @@ public:
   void Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const;
 
   /// The number of neighbours of v.
-  std::int32_t Valence(std::int32_t v) const;
+  std::int32_t Valence(std::int32_t v) const { return this->Valence(v, this->Scratch); }
+
+  /**
+   * Applies plans that touch disjoint neighbourhoods (no vertex within one edge of a plan's
+   * vertices is within one edge of another's, e.g. the half-edge collapses of a super-independent
+   * vertex set), concurrently through the context. No records are kept, so Undo cannot reach
+   * past such a batch. Returns the number of triangles removed.
+   */
+  std::int64_t ApplyIndependent(const std::vector<CollapsePlan>& plans, const ExecutionContext& context);
 
 private:
-  bool LinkCondition(const std::int32_t* merged, int count, std::int32_t next) const;
+  std::int32_t Valence(std::int32_t v, CheckScratch& scratch) const;
+  void Neighbours(std::int32_t v, std::vector<std::int32_t>& out, CheckScratch& scratch) const;
+  bool LinkCondition(const std::int32_t* merged, int count, std::int32_t next, CheckScratch& scratch) const;
+  /// The collapse itself: triangles, alive flags, the kept point and class, the merged vertices'
+  /// spans emptied; the kept vertex's new triangles go to span (its span is not set). Returns the
+  /// number of triangles removed.
+  int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo);
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
   void CompactRefs();
@@ -172,13 +198,12 @@ private:
   std::vector<std::int32_t> Changes;          // per change: corner (3 t + k), old vertex
   std::vector<std::int32_t> RemovedTriangles;
 
-  /// count fresh mark values (the first returned): values no vertex carries yet.
-  std::uint32_t NewMarks(std::uint32_t count) const;
+  /// count fresh mark values (the first returned): values no vertex carries yet in scratch.
+  std::uint32_t NewMarks(std::uint32_t count, CheckScratch& scratch) const;
 
-  // Scratch marks for the checks: a vertex carries a mark when Marks[v] equals it.
-  mutable std::vector<std::uint32_t> Marks;
-  mutable std::uint32_t Stamp = 0;
-  mutable std::vector<std::int32_t> Scratch;
+  // The checks' own scratch: a vertex carries a mark when Marks[v] equals it.
+  mutable CheckScratch Scratch;
+  std::vector<std::int32_t> Span;
 };
 
 /// Replays the records' attribute weights over a table of point values (components per point,
