@@ -12,6 +12,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -227,12 +228,48 @@ int ResolveThreadCount(int numberOfThreads)
                              : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVector**,
+  std::vector<std::uint8_t>& locked)
+{
+  // Input array 0, as SetInputArrayToProcess or the XML's "Locked Points" selected it.
+  vtkInformation* selection = filter->GetInputArrayInformation(0);
+  vtkDataArray* array = nullptr;
+  std::string name;
+  if (selection->Has(vtkDataObject::FIELD_NAME()))
+  {
+    name = selection->Get(vtkDataObject::FIELD_NAME());
+    array = input->GetPointData()->GetArray(name.c_str());
+  }
+  else if (selection->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    array = input->GetPointData()->GetAttribute(selection->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+    name = "of the selected attribute";
+  }
+  else
+  {
+    return false; // nothing selected
+  }
+  if (!array || array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    vtkWarningWithObjectMacro(filter, << "Ignoring the lock array " << name
+                                      << ": it is not a point-data array of the input.");
+    return false;
+  }
+  locked.resize(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    locked[i] = array->GetComponent(i, 0) != 0.0 ? 1 : 0;
+  }
+  return true;
+}
+
 meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int numberOfThreads)
 {
   meshsimp::ExecutionContext context;
   const int threads = ResolveThreadCount(numberOfThreads);
   if (threads > 1)
   {
+    context.Threads = threads;
     context.ParallelFor = [threads](std::int64_t n, std::int64_t work,
                             const std::function<void(std::int64_t, std::int64_t)>& body) {
       if (work < 32768)

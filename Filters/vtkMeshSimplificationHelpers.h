@@ -21,6 +21,7 @@
 class vtkAlgorithm;
 class vtkCellArray;
 class vtkDataArray;
+class vtkInformationVector;
 class vtkPoints;
 class vtkPolyData;
 
@@ -61,6 +62,12 @@ bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints
 void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleInput& triangles,
   const std::vector<double>& points, const std::vector<std::int32_t>& outputTriangles,
   const std::vector<std::int32_t>& sourceTriangles, int outputPointsPrecision);
+
+/// User-chosen locks: one flag per input point, nonzero where input array 0 (if one is selected)
+/// is nonzero. False, with a warning when the selected array is not a point array of the input,
+/// when there is none.
+bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVector** inputVector,
+  std::vector<std::uint8_t>& locked);
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);

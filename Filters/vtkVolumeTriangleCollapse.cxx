@@ -93,27 +93,10 @@ int vtkVolumeTriangleCollapse::RequestData(
   options.UseVolumeWeights = this->UseVolumeWeights;
   options.MinimumAngle = this->MinimumAngle;
 
-  // User-chosen locks: the points with a nonzero value in input array 0, if one is selected.
   std::vector<std::uint8_t> locked;
-  vtkInformation* lockSelection = this->GetInputArrayInformation(0);
-  const bool lockSelected = lockSelection->Has(vtkDataObject::FIELD_NAME()) ||
-    lockSelection->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE());
-  if (vtkDataArray* lockArray = lockSelected ? this->GetInputArrayToProcess(0, inputVector) : nullptr)
+  if (vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, inputVector, locked))
   {
-    if (lockArray->GetNumberOfTuples() == input->GetNumberOfPoints())
-    {
-      locked.resize(input->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-      {
-        locked[i] = lockArray->GetComponent(i, 0) != 0.0 ? 1 : 0;
-      }
-      options.LockedPoints = locked.data();
-    }
-    else
-    {
-      vtkWarningMacro(<< "Ignoring the lock array " << lockArray->GetName()
-                      << ": it is not a point-data array of the input.");
-    }
+    options.LockedPoints = locked.data();
   }
 
   meshsimp::VolumeCollapseResult result;

@@ -25,6 +25,9 @@ struct ExecutionContext
   std::function<void(std::int64_t n, std::int64_t work,
     const std::function<void(std::int64_t, std::int64_t)>& body)>
     ParallelFor;
+  /// How many bodies ParallelFor may run at once. Algorithms whose bodies need large scratch
+  /// split their work into this many parts, one scratch each.
+  int Threads = 1;
   /// Receives progress in [0, 1]; returns false when the caller wants to abort.
   std::function<bool(double)> Progress;
 
