@@ -1,0 +1,659 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ParallelDecimation.h"
+
+#include "CollapseMesh.h"
+#include "Quadric.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace meshsimp
+{
+
+double BucketPosition(double x, double a, double alpha)
+{
+  x = std::min(1.0, std::max(0.0, x));
+  if (!(alpha > a) || !(a > 0.0) || !(alpha < 1.0))
+  {
+    return x; // no bend: plain proportional buckets
+  }
+  const double k = a * (1.0 - alpha) / (alpha - a); // eq. (5.13)
+  return (1.0 + k) * x / (x + k);                    // eq. (5.6), C = 1 + k
+}
+
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+constexpr double Pi = 3.14159265358979323846;
+constexpr double Never = std::numeric_limits<double>::infinity();
+constexpr double RelaxationStep = 15.0; // degrees
+
+/// One edge (v, W) around a vertex v: the triangle where W follows v and the one where W precedes
+/// it (-1 when missing: a boundary edge).
+struct StarEdge
+{
+  std::int32_t W, After, Before;
+};
+
+/// What the analysis of one vertex found: its type, importance and the neighbours it may collapse
+/// into along its boundary or sharp edges.
+struct VertexState
+{
+  DecimationVertexType Type = DecimationVertexType::Complex;
+  double Importance = Never;
+  std::int32_t Along[2] = { -1, -1 };
+};
+
+/// Per-thread working memory.
+struct Workspace
+{
+  std::vector<StarEdge> Edges;
+  std::vector<std::int32_t> Triangles;
+  std::vector<Vec3> Crosses;
+  CollapseMesh::CheckScratch Scratch;
+  struct Option
+  {
+    double Score;
+    std::int32_t Target;
+  };
+  std::vector<Option> Options;
+};
+
+double DistanceToLine(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  // Eq. (5.4): the height of the parallelogram over a–b through p.
+  const Vec3 q = b - a;
+  const double length = q.norm();
+  return length > 0.0 ? q.cross(p - a).norm() / length : (p - a).norm();
+}
+
+class Decimator
+{
+public:
+  Decimator(const ParallelDecimationOptions& options, const ExecutionContext& context)
+    : Options(options)
+    , Context(context)
+  {
+    this->SetAngles(options.FeatureAngle, options.MaximumNormalDeviation);
+  }
+
+  bool Run(const TriangleMeshView& input, ParallelDecimationResult& result);
+
+private:
+  void CollectStar(std::int32_t v, Workspace& work) const;
+  /// The type, the importance of eq. (5.1)–(5.4) and the special neighbours of v, with v's star
+  /// left in the workspace.
+  VertexState Analyze(std::int32_t v, Workspace& work) const;
+  /// Analyze with the importance of the chosen measure.
+  VertexState Evaluate(std::int32_t v, Workspace& work) const;
+  /// The quadric error of collapsing v into u.
+  double HalfEdgeError(std::int32_t v, std::int32_t u) const;
+  void InitializeQuadrics();
+  bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const;
+  /// Fills chosen with the round's set; true when the window covered every candidate.
+  bool SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen);
+  void Output(const TriangleMeshView& input, ParallelDecimationResult& result) const;
+
+  /// Runs f(i, workspace) for i in [0, count), split into one part per thread, each part with
+  /// its own workspace (the checks' marks are as large as the mesh, so they are kept).
+  template <typename F>
+  void ForEachInParts(std::int64_t count, std::int64_t workPerItem, F&& f)
+  {
+    const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(this->Context.Threads, count));
+    this->Workspaces.resize(std::max<std::size_t>(this->Workspaces.size(), static_cast<std::size_t>(parts)));
+    this->Context.For(parts, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t part = first; part < last; ++part)
+      {
+        Workspace& work = this->Workspaces[part];
+        for (std::int64_t i = count * part / parts, end = count * (part + 1) / parts; i < end; ++i)
+        {
+          f(i, work);
+        }
+      }
+    }, workPerItem * count);
+  }
+
+  const ParallelDecimationOptions& Options;
+  const ExecutionContext& Context;
+  void SetAngles(double feature, double deviation)
+  {
+    this->FeatureAngle = std::min(180.0, std::max(0.0, feature));
+    this->DeviationAngle = std::min(180.0, std::max(0.0, deviation));
+    this->CosFeature = std::cos(this->FeatureAngle * Pi / 180.0);
+    this->CosDeviation = std::cos(this->DeviationAngle * Pi / 180.0);
+  }
+  double FeatureAngle = 0.0, DeviationAngle = 0.0, CosFeature = 1.0, CosDeviation = 1.0;
+  CollapseMesh Mesh;
+  std::vector<std::int32_t> InputVertex, InputTriangle;
+  std::vector<double> Importance;
+  std::vector<double> Accumulated;  // AveragePlane: importance inherited from removed vertices
+  std::vector<Quadric> Quadrics;    // Quadric: the planes around each vertex and its merged ones
+  std::vector<DecimationVertexType> Types;
+  std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
+  std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
+  std::uint32_t Round = 0;
+  std::vector<std::int32_t> Order, Buckets, Scratch, Around;
+  std::vector<Workspace> Workspaces;
+};
+
+void Decimator::CollectStar(std::int32_t v, Workspace& work) const
+{
+  // The triangles around v with their cross products, and the edges (v, w) with the triangles
+  // on either side.
+  work.Edges.clear();
+  work.Triangles.clear();
+  work.Crosses.clear();
+  const Vec3& p = this->Mesh.Point(v);
+  auto edge = [&](std::int32_t w) -> StarEdge& {
+    for (StarEdge& e : work.Edges)
+    {
+      if (e.W == w)
+      {
+        return e;
+      }
+    }
+    work.Edges.push_back({ w, -1, -1 });
+    return work.Edges.back();
+  };
+  this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    const std::int32_t next = tri[(k + 1) % 3], previous = tri[(k + 2) % 3];
+    const std::int32_t slot = static_cast<std::int32_t>(work.Triangles.size());
+    work.Triangles.push_back(t);
+    work.Crosses.push_back((this->Mesh.Point(next) - p).cross(this->Mesh.Point(previous) - p));
+    edge(next).After = slot;
+    edge(previous).Before = slot;
+  });
+}
+
+double Decimator::HalfEdgeError(std::int32_t v, std::int32_t u) const
+{
+  Quadric q = this->Quadrics[v];
+  q += this->Quadrics[u];
+  return q.Evaluate(this->Mesh.Point(u));
+}
+
+VertexState Decimator::Evaluate(std::int32_t v, Workspace& work) const
+{
+  VertexState state = this->Analyze(v, work);
+  if (state.Importance == Never)
+  {
+    return state;
+  }
+  if (this->Options.Measure == ImportanceMeasure::Quadric)
+  {
+    // The least error of a half-edge the vertex may collapse along, as a distance.
+    double best = Never;
+    if (state.Type == DecimationVertexType::Simple)
+    {
+      for (const StarEdge& e : work.Edges)
+      {
+        best = std::min(best, this->HalfEdgeError(v, e.W));
+      }
+    }
+    else
+    {
+      best = std::min(this->HalfEdgeError(v, state.Along[0]), this->HalfEdgeError(v, state.Along[1]));
+    }
+    state.Importance = std::sqrt(best);
+  }
+  else
+  {
+    state.Importance += this->Accumulated[v];
+  }
+  return state;
+}
+
+VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
+{
+  VertexState state;
+  const VertexClass c = this->Mesh.Class(v);
+  if (c == VertexClass::NonManifold)
+  {
+    return state; // complex
+  }
+  state.Type = DecimationVertexType::Corner;
+  if (this->Mesh.IsLocked(v) || c == VertexClass::Corner)
+  {
+    return state;
+  }
+  this->CollectStar(v, work);
+  if (work.Triangles.empty())
+  {
+    return state;
+  }
+  int sharp = 0, open = 0;
+  for (const StarEdge& e : work.Edges)
+  {
+    if (e.After < 0 || e.Before < 0)
+    {
+      if (open < 2)
+      {
+        state.Along[open] = e.W;
+      }
+      ++open;
+      continue;
+    }
+    const Vec3& a = work.Crosses[e.After];
+    const Vec3& b = work.Crosses[e.Before];
+    const double lengths = a.norm() * b.norm();
+    if (lengths > 0.0 && a.dot(b) < this->CosFeature * lengths)
+    {
+      if (open == 0 && sharp < 2)
+      {
+        state.Along[sharp] = e.W;
+      }
+      ++sharp;
+    }
+  }
+  const Vec3& p = this->Mesh.Point(v);
+  if (open > 0)
+  {
+    // A boundary vertex with sharp edges inside is a corner, as one whose fan is not one strip.
+    if (open != 2 || sharp > 0)
+    {
+      state.Along[0] = state.Along[1] = -1;
+      return state;
+    }
+    state.Type = DecimationVertexType::Boundary;
+    state.Importance =
+      DistanceToLine(p, this->Mesh.Point(state.Along[0]), this->Mesh.Point(state.Along[1]));
+    return state;
+  }
+  if (sharp == 2)
+  {
+    state.Type = DecimationVertexType::InteriorEdge;
+    state.Importance =
+      DistanceToLine(p, this->Mesh.Point(state.Along[0]), this->Mesh.Point(state.Along[1]));
+    return state;
+  }
+  if (sharp != 0)
+  {
+    state.Along[0] = state.Along[1] = -1;
+    return state; // corner
+  }
+  // Eq. (5.1)–(5.3): the plane of the area-weighted normal through the area-weighted centre.
+  // The cross product is the normal times twice the area.
+  Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
+  double area = 0.0;
+  for (std::size_t i = 0; i < work.Triangles.size(); ++i)
+  {
+    const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
+    const double a = work.Crosses[i].norm();
+    normal += work.Crosses[i];
+    centre += a * (this->Mesh.Point(tri[0]) + this->Mesh.Point(tri[1]) + this->Mesh.Point(tri[2])) / 3.0;
+    area += a;
+  }
+  const double length = normal.norm();
+  state.Type = DecimationVertexType::Simple;
+  state.Importance = length > 0.0 && area > 0.0 ? std::abs(normal.dot(p - centre / area)) / length : 0.0;
+  return state;
+}
+
+bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
+{
+  const VertexState state = this->Analyze(v, work);
+  if (state.Type == DecimationVertexType::Corner || state.Type == DecimationVertexType::Complex)
+  {
+    return false;
+  }
+  // Analyze left v's star in the workspace. The half-edges v → u it may collapse, scored.
+  const Vec3& p = this->Mesh.Point(v);
+  work.Options.clear();
+  auto consider = [&](std::int32_t u) {
+    const Vec3& target = this->Mesh.Point(u);
+    const bool quadric = this->Options.Measure == ImportanceMeasure::Quadric;
+    if (this->Options.Choice == HalfEdgeChoice::ShortestEdge && !quadric)
+    {
+      work.Options.push_back({ (target - p).squaredNorm(), u });
+      return;
+    }
+    // §5.3: the change of area, under the limit on the turn of each remaining triangle.
+    double before = 0.0, after = 0.0;
+    for (std::size_t i = 0; i < work.Triangles.size(); ++i)
+    {
+      const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
+      const Vec3& old = work.Crosses[i];
+      const double oldLength = old.norm();
+      before += oldLength;
+      if (tri[0] == u || tri[1] == u || tri[2] == u)
+      {
+        continue; // removed by the collapse
+      }
+      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      const Vec3 moved = (this->Mesh.Point(tri[(k + 1) % 3]) - target).cross(this->Mesh.Point(tri[(k + 2) % 3]) - target);
+      const double newLength = moved.norm();
+      if (!(newLength > 0.0) || moved.dot(old) < this->CosDeviation * newLength * oldLength)
+      {
+        return;
+      }
+      after += newLength;
+    }
+    work.Options.push_back({ quadric ? this->HalfEdgeError(v, u) : std::abs(after - before), u });
+  };
+  if (state.Type == DecimationVertexType::Simple)
+  {
+    for (const StarEdge& e : work.Edges)
+    {
+      consider(e.W);
+    }
+  }
+  else
+  {
+    consider(state.Along[0]);
+    consider(state.Along[1]);
+  }
+  std::sort(work.Options.begin(), work.Options.end(), [](const Workspace::Option& a, const Workspace::Option& b) {
+    return a.Score != b.Score ? a.Score < b.Score : a.Target < b.Target;
+  });
+  for (const Workspace::Option& option : work.Options)
+  {
+    plan.Vertices[0] = option.Target; // kept
+    plan.Vertices[1] = v;
+    plan.Vertices[2] = -1;
+    plan.Count = 2;
+    plan.Position = this->Mesh.Point(option.Target);
+    plan.Weights[0] = 1.0;
+    plan.Weights[1] = plan.Weights[2] = 0.0;
+    if (this->Mesh.IsLegal(plan, work.Scratch))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen)
+{
+  // §5.6: bucket the removable vertices by eq. (5.6) of their importance, in O(N) by counting;
+  // then §5.5: take them greedily in that order while their neighbourhoods stay disjoint.
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  this->Order.clear();
+  double largest = 0.0;
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if (this->Importance[v] < Never && !this->Stuck[v])
+    {
+      this->Order.push_back(v);
+      largest = std::max(largest, this->Importance[v]);
+    }
+  }
+  const std::int64_t candidates = static_cast<std::int64_t>(this->Order.size());
+  const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::int64_t>(1, candidates));
+  this->Buckets.assign(bucketCount + 1, 0);
+  std::vector<std::int32_t>& bucketOf = this->Scratch;
+  bucketOf.resize(this->Order.size());
+  for (std::size_t i = 0; i < this->Order.size(); ++i)
+  {
+    const double x = largest > 0.0 ? this->Importance[this->Order[i]] / largest : 0.0;
+    const double y = BucketPosition(x, this->Options.BucketImportance, this->Options.BucketShare);
+    bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(y * bucketCount));
+    ++this->Buckets[bucketOf[i] + 1];
+  }
+  for (std::int32_t b = 0; b < bucketCount; ++b)
+  {
+    this->Buckets[b + 1] += this->Buckets[b];
+  }
+  std::vector<std::int32_t> sorted(this->Order.size());
+  for (std::size_t i = 0; i < this->Order.size(); ++i)
+  {
+    sorted[this->Buckets[bucketOf[i]]++] = this->Order[i]; // stable: vertex order within a bucket
+  }
+
+  const std::int64_t window =
+    std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(fraction * static_cast<double>(candidates))));
+  ++this->Round;
+  chosen.clear();
+  std::int64_t expected = 0, seen = 0;
+  std::vector<std::int32_t>& around = this->Around;
+  for (const std::int32_t v : sorted)
+  {
+    if (expected >= need || seen >= window)
+    {
+      break;
+    }
+    ++seen;
+    if (this->Owner[v] == this->Round)
+    {
+      continue;
+    }
+    this->Mesh.Neighbours(v, around);
+    bool free = true;
+    for (const std::int32_t w : around)
+    {
+      free = free && this->Owner[w] != this->Round;
+    }
+    if (!free)
+    {
+      continue;
+    }
+    chosen.push_back(v);
+    this->Owner[v] = this->Round;
+    for (const std::int32_t w : around)
+    {
+      this->Owner[w] = this->Round;
+    }
+    expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
+  }
+  return window >= candidates;
+}
+
+void Decimator::InitializeQuadrics()
+{
+  // Each vertex: the planes of its triangles weighted by area, and along a boundary edge the
+  // plane through the edge perpendicular to its triangle, weighted by the squared edge length,
+  // so that boundaries keep their place.
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  this->Quadrics.assign(n, Quadric());
+  this->ForEachInParts(n, 64, [&](std::int64_t i, Workspace& work) {
+    const std::int32_t v = static_cast<std::int32_t>(i);
+    this->CollectStar(v, work);
+    Quadric& q = this->Quadrics[v];
+    const Vec3& p = this->Mesh.Point(v);
+    for (const Vec3& cross : work.Crosses)
+    {
+      const double length = cross.norm();
+      if (length > 0.0)
+      {
+        const Vec3 normal = cross / length;
+        q += Quadric::FromPlane(normal, -normal.dot(p), 0.5 * length);
+      }
+    }
+    for (const StarEdge& e : work.Edges)
+    {
+      if ((e.After < 0) == (e.Before < 0))
+      {
+        continue;
+      }
+      const Vec3& cross = work.Crosses[e.After >= 0 ? e.After : e.Before];
+      const Vec3 edge = this->Mesh.Point(e.W) - p;
+      const Vec3 side = edge.cross(cross);
+      const double length = side.norm();
+      if (length > 0.0)
+      {
+        const Vec3 normal = side / length;
+        q += Quadric::FromPlane(normal, -normal.dot(p), edge.squaredNorm());
+      }
+    }
+  });
+}
+
+bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& result)
+{
+  result = ParallelDecimationResult();
+  CompactMesh compact = MakeCompactMesh(input, this->Context);
+  result.NonFinitePoints = compact.NonFinitePoints;
+  this->InputVertex = std::move(compact.InputVertex);
+  this->InputTriangle = std::move(compact.InputTriangle);
+  const std::int64_t usable = static_cast<std::int64_t>(this->InputTriangle.size());
+  result.UsableTriangles = usable;
+  const std::int64_t target = this->Options.TargetTriangles >= 0
+    ? std::min(this->Options.TargetTriangles, usable)
+    : static_cast<std::int64_t>(std::llround(
+        static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
+  result.TargetTriangles = target;
+  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if ((this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
+      (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
+    {
+      this->Mesh.Lock(v);
+    }
+  }
+
+  if (this->Options.Measure == ImportanceMeasure::Quadric)
+  {
+    this->InitializeQuadrics();
+  }
+  // Step 1–2 of §5.5: every vertex's type and importance, concurrently.
+  this->Importance.assign(n, Never);
+  this->Types.assign(n, DecimationVertexType::Complex);
+  this->Owner.assign(n, 0);
+  this->Stuck.assign(n, 0);
+  this->Accumulated.assign(n, 0.0);
+  auto evaluate = [&](const std::int32_t* vertices, std::int64_t count) {
+    this->ForEachInParts(count, 64, [&](std::int64_t i, Workspace& work) {
+      const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
+      const VertexState state = this->Evaluate(v, work);
+      this->Types[v] = state.Type;
+      this->Importance[v] = state.Importance;
+      this->Stuck[v] = 0;
+    });
+  };
+  evaluate(nullptr, n);
+  if (!this->Context.Report(0.05))
+  {
+    return false;
+  }
+
+  // Steps 3–7: rounds of super-independent sets until the target.
+  const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
+  std::vector<std::int32_t> chosen, affected, around;
+  std::vector<CollapsePlan> plans, applied;
+  std::vector<std::uint8_t> planned;
+  double fraction = std::min(1.0, std::max(1e-3, this->Options.RoundFraction));
+  while (this->Mesh.NumberOfAliveTriangles() > target)
+  {
+    const std::int64_t need = this->Mesh.NumberOfAliveTriangles() - target;
+    const bool all = this->SelectRound(need, fraction, chosen);
+    const std::int64_t count = static_cast<std::int64_t>(chosen.size());
+    plans.resize(chosen.size());
+    planned.assign(chosen.size(), 0);
+    this->ForEachInParts(count, 512, [&](std::int64_t i, Workspace& work) {
+      planned[i] = this->Plan(chosen[i], work, plans[i]) ? 1 : 0;
+    });
+    // The neighbours of each removed vertex are the vertices whose triangles change.
+    applied.clear();
+    affected.clear();
+    for (std::int64_t i = 0; i < count; ++i)
+    {
+      const std::int32_t v = chosen[i];
+      if (!planned[i])
+      {
+        this->Stuck[v] = 1; // until a change nearby re-evaluates it
+        continue;
+      }
+      applied.push_back(plans[i]);
+      // The survivor inherits what the removed vertex measured.
+      const std::int32_t kept = plans[i].Vertices[0];
+      if (this->Options.Measure == ImportanceMeasure::Quadric)
+      {
+        this->Quadrics[kept] += this->Quadrics[v];
+      }
+      else if (this->Options.AccumulateError)
+      {
+        this->Accumulated[kept] += this->Importance[v];
+      }
+      this->Mesh.Neighbours(v, around);
+      affected.insert(affected.end(), around.begin(), around.end());
+      this->Importance[v] = Never;
+    }
+    ++result.Rounds;
+    if (applied.empty())
+    {
+      if (!all)
+      {
+        fraction = std::min(1.0, 2.0 * fraction); // every vertex in the window is stuck
+        continue;
+      }
+      if (this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0)
+      {
+        result.StoppedEarly = true;
+        break;
+      }
+      // Nothing is removable under the angles: relax them a step and start over.
+      this->SetAngles(this->FeatureAngle + RelaxationStep, this->DeviationAngle + RelaxationStep);
+      ++result.Relaxations;
+      evaluate(nullptr, n);
+      continue;
+    }
+    this->Mesh.ApplyIndependent(applied, this->Context);
+    evaluate(affected.data(), static_cast<std::int64_t>(affected.size()));
+    const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
+      static_cast<double>(std::max<std::int64_t>(1, start - target));
+    if (!this->Context.Report(0.05 + 0.9 * std::min(1.0, done)))
+    {
+      return false;
+    }
+  }
+  this->Output(input, result);
+  return this->Context.Report(1.0);
+}
+
+void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& result) const
+{
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
+  std::vector<std::int32_t> outputIndex(n, -1);
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (this->Mesh.IsAlive(t))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        outputIndex[this->Mesh.Triangle(t)[k]] = 0;
+      }
+    }
+  }
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if (outputIndex[v] < 0)
+    {
+      continue;
+    }
+    outputIndex[v] = static_cast<std::int32_t>(result.PointSource.size());
+    const Vec3 p = input.Point(this->InputVertex[v]);
+    result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
+    result.PointSource.push_back(this->InputVertex[v]);
+    result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] : -1.0);
+    result.Types.push_back(this->Types[v]);
+  }
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (this->Mesh.IsAlive(t))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        result.Triangles.push_back(outputIndex[this->Mesh.Triangle(t)[k]]);
+      }
+      result.TriangleSource.push_back(this->InputTriangle[t]);
+    }
+  }
+}
+
+} // namespace
+
+bool ParallelDecimation(const TriangleMeshView& input, const ParallelDecimationOptions& options,
+  ParallelDecimationResult& result, const ExecutionContext& context)
+{
+  Decimator decimator(options, context);
+  return decimator.Run(input, result);
+}
+
+} // namespace meshsimp

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file ParallelDecimation.h
+ * @brief Schroeder-style vertex decimation by half-edge collapse in rounds of super-independent
+ * vertex sets (paper 001, Franc, ch. 5–6), on the shared collapse engine.
+ *
+ * - Classification (§5.2): a vertex is simple (a closed fan, no sharp edge), boundary (an open
+ *   fan), interior-edge (exactly two sharp edges), corner (one or three and more sharp edges, or a
+ *   sharp turn of the boundary) or complex (non-manifold). An edge is sharp when the normals of its
+ *   two triangles differ by more than FeatureAngle. Corners, complex and locked vertices stay.
+ * - Importance (§5.2): for a simple vertex the distance to the average plane of its triangles
+ *   (eq. 5.1–5.3: area-weighted normal and centre); for boundary and interior-edge vertices the
+ *   distance to the line through the two neighbours along the boundary or the sharp edges
+ *   (eq. 5.4).
+ * - Ordering (§5.6): vertices go into buckets by y = C x / (x + k) of their importance relative to
+ *   the largest one (eq. 5.6), with k and C from the parameters a and α (eq. 5.13: a fraction a of
+ *   the importance range fills a share α of the buckets), in O(N) by counting; within a bucket,
+ *   by vertex id.
+ * - Rounds (§5.5): in bucket order, a vertex joins the round's set when no vertex within one edge
+ *   of it is within one edge of a vertex already taken, so the triangles around two taken vertices
+ *   never share an edge (Fig. 5-6) and no two removals touch the same data. Every taken vertex is
+ *   then removed concurrently, without locks, by collapsing one of its half-edges into a
+ *   neighbour: the legal one of least area change among those that turn no triangle by more than
+ *   MaximumNormalDeviation (§5.3), or the shortest legal one (§5.5 step 6). Boundary and
+ *   interior-edge vertices collapse only along their boundary or sharp edges. The engine's checks
+ *   apply (link condition, plane-side fold-over test, no degenerate triangle). The touched
+ *   vertices are re-evaluated, and rounds repeat until the target.
+ * - Each round considers only the least important RoundFraction of the candidates, so that the
+ *   order stays close to a global one; the result does not depend on the number of threads.
+ * - When no vertex is removable before the target (every one is a corner, or none of its
+ *   half-edges keeps the normals within the deviation), FeatureAngle and MaximumNormalDeviation
+ *   are raised by 15° and the vertices re-evaluated; the filter stops early only at 180°.
+ * - Points never move: survivors keep their input coordinates and point data.
+ */
+#ifndef MeshSimplification_ParallelDecimation_h
+#define MeshSimplification_ParallelDecimation_h
+
+#include "Execution.h"
+#include "TriangleMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meshsimp
+{
+
+enum class DecimationVertexType : std::uint8_t
+{
+  Simple,
+  Boundary,
+  InteriorEdge,
+  Corner,
+  Complex
+};
+
+enum class HalfEdgeChoice : std::uint8_t
+{
+  LeastAreaChange, // §5.3
+  ShortestEdge     // §5.5 step 6
+};
+
+enum class ImportanceMeasure : std::uint8_t
+{
+  AveragePlane, // eq. (5.1)–(5.4)
+  Quadric       // accumulated plane quadrics: the least error of the vertex's own half-edges
+};
+
+struct ParallelDecimationOptions
+{
+  /// Fraction of the usable triangles to remove; used when TargetTriangles < 0.
+  double TargetReduction = 0.9;
+  /// Number of triangles to keep; overrides TargetReduction when >= 0.
+  std::int64_t TargetTriangles = -1;
+  /// An edge whose two triangles' normals differ by more than this (degrees) is sharp.
+  double FeatureAngle = 30.0;
+  /// A boundary vertex where the boundary turns by more than this is a corner.
+  double BoundaryCornerAngle = 60.0;
+  /// Lock every boundary vertex.
+  bool PreserveBoundary = false;
+  /// Optional, one flag per input point: nonzero points are never removed.
+  const std::uint8_t* LockedPoints = nullptr;
+  ImportanceMeasure Measure = ImportanceMeasure::AveragePlane;
+  /// AveragePlane: a survivor adds the importance of each vertex collapsed into it to its own,
+  /// so that error does not vanish from the ordering when its vertex goes.
+  bool AccumulateError = true;
+  /// The half-edge of an AveragePlane vertex (Quadric picks the half-edge of least error).
+  HalfEdgeChoice Choice = HalfEdgeChoice::LeastAreaChange;
+  /// §5.3: the largest turn (degrees) of a remaining triangle's normal a collapse may cause.
+  double MaximumNormalDeviation = 45.0;
+  /// The bucketing function's a (a fraction of the largest importance) and α (the share of the
+  /// buckets it fills), eq. (5.13); the paper's 2 % and 80 %.
+  double BucketImportance = 0.02;
+  double BucketShare = 0.8;
+  /// The share of the candidates, least important first, that one round considers.
+  double RoundFraction = 0.1;
+};
+
+struct ParallelDecimationResult
+{
+  std::vector<double> Points;               // 3 per output point (input coordinates)
+  std::vector<std::int32_t> Triangles;      // 3 per output triangle
+  std::vector<std::int32_t> PointSource;    // input point of each output point
+  std::vector<std::int32_t> TriangleSource; // input triangle of each output triangle
+  std::vector<double> Importance;           // per output point; -1 where it can never be removed
+  std::vector<DecimationVertexType> Types;  // per output point
+  std::int64_t UsableTriangles = 0;
+  std::int64_t TargetTriangles = 0;
+  std::int64_t NonFinitePoints = 0;
+  std::int64_t Rounds = 0;
+  /// Times FeatureAngle and MaximumNormalDeviation were raised by 15° because no vertex was
+  /// removable under them before the target.
+  std::int64_t Relaxations = 0;
+  bool StoppedEarly = false; // no removable vertex was left before the target
+};
+
+/// Runs the decimation; the context's ParallelFor carries the threads. Returns false when
+/// aborted through the context's progress.
+bool ParallelDecimation(const TriangleMeshView& input, const ParallelDecimationOptions& options,
+  ParallelDecimationResult& result, const ExecutionContext& context = {});
+
+/// The bucketing function of eq. (5.6) with k and C from eq. (5.13): maps x in [0, 1] (importance
+/// over the largest importance) onto [0, 1], a onto α. Increasing, so buckets keep the order.
+double BucketPosition(double x, double a, double alpha);
+
+} // namespace meshsimp
+
+#endif
