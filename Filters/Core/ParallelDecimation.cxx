@@ -24,6 +24,32 @@ double BucketPosition(double x, double a, double alpha)
   return (1.0 + k) * x / (x + k);                    // eq. (5.6), C = 1 + k
 }
 
+void BucketOrder(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
+  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& buckets)
+{
+  // One bucket per vertex on average; a counting sort by bucket, stable in the given order.
+  const std::size_t count = vertices.size();
+  const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
+  buckets.assign(static_cast<std::size_t>(bucketCount) + 1, 0);
+  order.resize(count);
+  auto bucketOf = [&](std::int32_t v) {
+    const double x = largest > 0.0 ? importance[v] / largest : 0.0;
+    return std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
+  };
+  for (const std::int32_t v : vertices)
+  {
+    ++buckets[bucketOf(v) + 1];
+  }
+  for (std::int32_t b = 0; b < bucketCount; ++b)
+  {
+    buckets[b + 1] += buckets[b];
+  }
+  for (const std::int32_t v : vertices)
+  {
+    order[buckets[bucketOf(v)]++] = v;
+  }
+}
+
 namespace
 {
 using Vec3 = Eigen::Vector3d;
@@ -135,7 +161,7 @@ private:
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
   std::uint32_t Round = 0;
-  std::vector<std::int32_t> Order, Buckets, Scratch, Around;
+  std::vector<std::int32_t> Order, Sorted, Buckets, Around;
   std::vector<Workspace> Workspaces;
 };
 
@@ -383,26 +409,9 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     }
   }
   const std::int64_t candidates = static_cast<std::int64_t>(this->Order.size());
-  const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::int64_t>(1, candidates));
-  this->Buckets.assign(bucketCount + 1, 0);
-  std::vector<std::int32_t>& bucketOf = this->Scratch;
-  bucketOf.resize(this->Order.size());
-  for (std::size_t i = 0; i < this->Order.size(); ++i)
-  {
-    const double x = largest > 0.0 ? this->Importance[this->Order[i]] / largest : 0.0;
-    const double y = BucketPosition(x, this->Options.BucketImportance, this->Options.BucketShare);
-    bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(y * bucketCount));
-    ++this->Buckets[bucketOf[i] + 1];
-  }
-  for (std::int32_t b = 0; b < bucketCount; ++b)
-  {
-    this->Buckets[b + 1] += this->Buckets[b];
-  }
-  std::vector<std::int32_t> sorted(this->Order.size());
-  for (std::size_t i = 0; i < this->Order.size(); ++i)
-  {
-    sorted[this->Buckets[bucketOf[i]]++] = this->Order[i]; // stable: vertex order within a bucket
-  }
+  std::vector<std::int32_t>& sorted = this->Sorted;
+  BucketOrder(this->Importance.data(), this->Order, largest, this->Options.BucketImportance,
+    this->Options.BucketShare, sorted, this->Buckets);
 
   const std::int64_t window =
     std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(fraction * static_cast<double>(candidates))));
@@ -542,6 +551,10 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   {
     const std::int64_t need = this->Mesh.NumberOfAliveTriangles() - target;
     const bool all = this->SelectRound(need, fraction, chosen);
+    if (this->Options.RoundObserver)
+    {
+      this->Options.RoundObserver(this->Mesh, chosen);
+    }
     const std::int64_t count = static_cast<std::int64_t>(chosen.size());
     plans.resize(chosen.size());
     planned.assign(chosen.size(), 0);

@@ -1,0 +1,370 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Unit tests of the parallel decimation core: bucketing, super-independent rounds, the result
+// for any thread count, targets, features, boundaries and locks.
+#include "CollapseMesh.h"
+#include "ParallelDecimation.h"
+#include "TestHelpers.h"
+#include "TestMeshes.h"
+
+#include <map>
+#include <random>
+#include <thread>
+
+using meshsimp::DecimationVertexType;
+using meshsimp::ParallelDecimationOptions;
+using meshsimp::ParallelDecimationResult;
+
+namespace
+{
+ParallelDecimationOptions Reduction(double reduction)
+{
+  ParallelDecimationOptions options;
+  options.TargetReduction = reduction;
+  return options;
+}
+
+/// A context with count real threads, one contiguous chunk each.
+meshsimp::ExecutionContext Threaded(int count)
+{
+  meshsimp::ExecutionContext context;
+  context.Threads = count;
+  context.ParallelFor = [count](std::int64_t n, std::int64_t,
+                          const std::function<void(std::int64_t, std::int64_t)>& body) {
+    std::vector<std::thread> threads;
+    const std::int64_t chunk = (n + count - 1) / count;
+    for (std::int64_t begin = 0; begin < n; begin += chunk)
+    {
+      threads.emplace_back([&body, begin, end = std::min(n, begin + chunk)] { body(begin, end); });
+    }
+    for (std::thread& thread : threads)
+    {
+      thread.join();
+    }
+  };
+  return context;
+}
+
+/// Edge → number of triangles using it, over an output triangle list.
+std::map<std::pair<int, int>, int> EdgeCounts(const std::vector<std::int32_t>& triangles)
+{
+  std::map<std::pair<int, int>, int> counts;
+  for (std::size_t t = 0; t < triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = triangles[t + k], b = triangles[t + (k + 1) % 3];
+      ++counts[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  return counts;
+}
+
+bool Closed(const ParallelDecimationResult& result)
+{
+  for (const auto& edge : EdgeCounts(result.Triangles))
+  {
+    if (edge.second != 2)
+    {
+      return false;
+    }
+  }
+  return !result.Triangles.empty();
+}
+
+double Area(const ParallelDecimationResult& r)
+{
+  double area = 0.0;
+  for (std::size_t t = 0; t < r.Triangles.size(); t += 3)
+  {
+    const Eigen::Vector3d a(&r.Points[3 * r.Triangles[t]]);
+    const Eigen::Vector3d b(&r.Points[3 * r.Triangles[t + 1]]);
+    const Eigen::Vector3d c(&r.Points[3 * r.Triangles[t + 2]]);
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+
+bool WithinTwoPercent(const ParallelDecimationResult& result)
+{
+  const double count = static_cast<double>(result.Triangles.size() / 3);
+  return std::abs(count - static_cast<double>(result.TargetTriangles)) <=
+    0.02 * static_cast<double>(result.TargetTriangles) + 1.0;
+}
+
+void BucketFunction()
+{
+  const double a = 0.02, alpha = 0.8;
+  CHECK(meshsimp::BucketPosition(0.0, a, alpha) == 0.0);
+  CHECK(std::abs(meshsimp::BucketPosition(1.0, a, alpha) - 1.0) < 1e-12);
+  CHECK(std::abs(meshsimp::BucketPosition(a, a, alpha) - alpha) < 1e-12); // eq. (5.8)
+  double previous = -1.0;
+  for (int i = 0; i <= 1000; ++i)
+  {
+    const double y = meshsimp::BucketPosition(i / 1000.0, a, alpha);
+    CHECK(y > previous);
+    previous = y;
+  }
+  // Without a bend (α <= a) the buckets are proportional.
+  CHECK(meshsimp::BucketPosition(0.3, 0.5, 0.5) == 0.3);
+}
+
+void BucketOrderKeepsOrderWithinBucketWidth()
+{
+  // Importances spread over many scales: after the O(N) ordering a vertex of larger importance
+  // comes first only when both share a bucket, and within a bucket vertex order is kept.
+  std::mt19937 random(7);
+  std::lognormal_distribution<double> spread(0.0, 3.0);
+  const int n = 5000;
+  std::vector<double> importance(n);
+  std::vector<std::int32_t> vertices;
+  double largest = 0.0;
+  for (int v = 0; v < n; ++v)
+  {
+    importance[v] = spread(random);
+    if (v % 3 != 0)
+    {
+      vertices.push_back(v);
+      largest = std::max(largest, importance[v]);
+    }
+  }
+  std::vector<std::int32_t> order, buckets;
+  meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, order, buckets);
+  CHECK(order.size() == vertices.size());
+  const int bucketCount = static_cast<int>(vertices.size());
+  auto bucket = [&](int v) {
+    return std::min(bucketCount - 1,
+      static_cast<int>(meshsimp::BucketPosition(importance[v] / largest, 0.02, 0.8) * bucketCount));
+  };
+  for (std::size_t i = 1; i < order.size(); ++i)
+  {
+    const int p = order[i - 1], q = order[i];
+    CHECK(bucket(p) <= bucket(q));
+    if (bucket(p) == bucket(q))
+    {
+      CHECK(p < q);
+    }
+  }
+  std::vector<std::int32_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(sorted == vertices);
+  CHECK(bucket(order.front()) == 0);
+  CHECK(importance[order.back()] == largest);
+}
+
+void RoundsAreSuperIndependent()
+{
+  // In every round no vertex within one edge of a taken vertex is within one edge of another
+  // taken one, so their triangles share no edge (Fig. 5-6).
+  const Mesh sphere = Sphere(16);
+  for (const auto measure : { meshsimp::ImportanceMeasure::Quadric, meshsimp::ImportanceMeasure::AveragePlane })
+  {
+    ParallelDecimationOptions options = Reduction(0.9);
+    options.Measure = measure;
+    int rounds = 0, taken = 0;
+    options.RoundObserver = [&](const meshsimp::CollapseMesh& mesh, const std::vector<std::int32_t>& chosen) {
+      ++rounds;
+      taken += static_cast<int>(chosen.size());
+      std::vector<int> owner(mesh.NumberOfPoints(), -1);
+      std::vector<std::int32_t> around;
+      for (std::size_t i = 0; i < chosen.size(); ++i)
+      {
+        mesh.Neighbours(chosen[i], around);
+        around.push_back(chosen[i]);
+        for (const std::int32_t w : around)
+        {
+          CHECK(owner[w] < 0);
+          owner[w] = static_cast<int>(i);
+        }
+      }
+    };
+    ParallelDecimationResult result;
+    CHECK(meshsimp::ParallelDecimation(sphere.View(), options, result));
+    CHECK(rounds > 3);
+    CHECK(taken > 1000);
+    CHECK(WithinTwoPercent(result));
+    CHECK(Closed(result));
+  }
+}
+
+void SameResultForAnyThreadCount()
+{
+  const Mesh sphere = Sphere(16);
+  const Mesh grid = Grid(24);
+  for (const Mesh* mesh : { &sphere, &grid })
+  {
+    for (const auto choice : { meshsimp::HalfEdgeChoice::LeastAreaChange, meshsimp::HalfEdgeChoice::ShortestEdge })
+    {
+      ParallelDecimationOptions options = Reduction(0.8);
+      options.Measure = meshsimp::ImportanceMeasure::AveragePlane;
+      options.Choice = choice;
+      ParallelDecimationResult serial;
+      CHECK(meshsimp::ParallelDecimation(mesh->View(), options, serial));
+      CHECK(!serial.Triangles.empty());
+      for (const int threads : { 2, 4 })
+      {
+        ParallelDecimationResult other;
+        CHECK(meshsimp::ParallelDecimation(mesh->View(), options, other, Threaded(threads)));
+        CHECK(serial.Points == other.Points);
+        CHECK(serial.Triangles == other.Triangles);
+        CHECK(serial.Importance == other.Importance);
+      }
+    }
+    ParallelDecimationResult serial, threaded;
+    CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), serial));
+    CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), threaded, Threaded(3)));
+    CHECK(serial.Triangles == threaded.Triangles);
+  }
+}
+
+void TargetsAndInputPoints()
+{
+  // Counts within ±2 % from 0.5 to 0.98; survivors keep their input coordinates bit for bit.
+  const Mesh sphere = Sphere(16);
+  for (const double reduction : { 0.5, 0.7, 0.9, 0.95, 0.98 })
+  {
+    ParallelDecimationResult result;
+    CHECK(meshsimp::ParallelDecimation(sphere.View(), Reduction(reduction), result));
+    CHECK(WithinTwoPercent(result));
+    CHECK(Closed(result));
+    CHECK(!result.StoppedEarly);
+    for (std::size_t p = 0; p < result.PointSource.size(); ++p)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        CHECK(result.Points[3 * p + k] == sphere.Points[3 * result.PointSource[p] + k]);
+      }
+    }
+  }
+  ParallelDecimationOptions count;
+  count.TargetTriangles = 500;
+  ParallelDecimationResult result;
+  CHECK(meshsimp::ParallelDecimation(sphere.View(), count, result));
+  CHECK(result.TargetTriangles == 500);
+  CHECK(WithinTwoPercent(result));
+}
+
+void CubeKeepsCornersAndEdges()
+{
+  // Corners (three sharp edges) stay; edge vertices go only along their edge, so the cube's
+  // shape is exact: the area stays 6.
+  const Mesh cube = Cube(8);
+  for (const auto measure : { meshsimp::ImportanceMeasure::Quadric, meshsimp::ImportanceMeasure::AveragePlane })
+  {
+    ParallelDecimationOptions options = Reduction(0.9);
+    options.Measure = measure;
+    ParallelDecimationResult result;
+    CHECK(meshsimp::ParallelDecimation(cube.View(), options, result));
+    CHECK(WithinTwoPercent(result));
+    CHECK(Closed(result));
+    CHECK(std::abs(Area(result) - 6.0) < 1e-9);
+    int corners = 0;
+    for (std::size_t p = 0; p < result.PointSource.size(); ++p)
+    {
+      const double* x = &result.Points[3 * p];
+      const bool corner = (x[0] == 0 || x[0] == 1) && (x[1] == 0 || x[1] == 1) && (x[2] == 0 || x[2] == 1);
+      if (corner)
+      {
+        ++corners;
+        CHECK(result.Types[p] == DecimationVertexType::Corner);
+        CHECK(result.Importance[p] == -1.0);
+      }
+    }
+    CHECK(corners == 8);
+  }
+}
+
+void BoundariesAndLocks()
+{
+  const Mesh grid = Grid(20);
+  auto onBorder = [](const double* x) { return x[0] == 0 || x[0] == 1 || x[1] == 0 || x[1] == 1; };
+  // Boundary vertices collapse only along the boundary: the square stays a square.
+  ParallelDecimationResult free;
+  CHECK(meshsimp::ParallelDecimation(grid.View(), Reduction(0.9), free));
+  CHECK(WithinTwoPercent(free));
+  CHECK(std::abs(Area(free) - 1.0) < 1e-9);
+  // PreserveBoundary keeps every boundary point.
+  ParallelDecimationOptions preserve = Reduction(0.8);
+  preserve.PreserveBoundary = true;
+  ParallelDecimationResult kept;
+  CHECK(meshsimp::ParallelDecimation(grid.View(), preserve, kept));
+  int border = 0;
+  for (std::size_t p = 0; p < kept.PointSource.size(); ++p)
+  {
+    border += onBorder(&kept.Points[3 * p]) ? 1 : 0;
+  }
+  CHECK(border == 80);
+  // Locked points stay.
+  std::vector<std::uint8_t> locks(grid.Points.size() / 3, 0);
+  for (std::size_t v = 0; v < locks.size(); v += 7)
+  {
+    locks[v] = 1;
+  }
+  ParallelDecimationOptions locked = Reduction(0.8);
+  locked.LockedPoints = locks.data();
+  ParallelDecimationResult result;
+  CHECK(meshsimp::ParallelDecimation(grid.View(), locked, result));
+  std::vector<bool> present(locks.size(), false);
+  for (const std::int32_t source : result.PointSource)
+  {
+    present[source] = true;
+  }
+  for (std::size_t v = 0; v < locks.size(); ++v)
+  {
+    CHECK(!locks[v] || present[v]);
+  }
+}
+
+void ProgressAndAbort()
+{
+  const Mesh sphere = Sphere(12);
+  meshsimp::ExecutionContext context;
+  std::vector<double> reports;
+  context.Progress = [&](double p) {
+    reports.push_back(p);
+    return true;
+  };
+  ParallelDecimationResult result;
+  CHECK(meshsimp::ParallelDecimation(sphere.View(), Reduction(0.9), result, context));
+  CHECK(reports.size() >= 3);
+  CHECK(std::is_sorted(reports.begin(), reports.end()));
+  CHECK(reports.back() == 1.0);
+  meshsimp::ExecutionContext abort;
+  abort.Progress = [](double p) { return p < 0.01; };
+  CHECK(!meshsimp::ParallelDecimation(sphere.View(), Reduction(0.9), result, abort));
+}
+
+void DegenerateInputs()
+{
+  // Nothing usable, a lone triangle, a target of zero: a result, no crash.
+  Mesh empty;
+  ParallelDecimationResult result;
+  CHECK(meshsimp::ParallelDecimation(empty.View(), Reduction(0.5), result));
+  CHECK(result.Triangles.empty());
+  Mesh single;
+  single.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  single.Triangles = { 0, 1, 2 };
+  CHECK(meshsimp::ParallelDecimation(single.View(), Reduction(0.9), result));
+  CHECK(result.Triangles.size() == 3); // every vertex is a corner of the boundary
+  CHECK(result.StoppedEarly);
+  const Mesh sphere = Sphere(6);
+  CHECK(meshsimp::ParallelDecimation(sphere.View(), Reduction(1.0), result));
+  CHECK(result.StoppedEarly);
+  CHECK(Closed(result));
+  CHECK(result.Triangles.size() / 3 >= 4);
+}
+} // namespace
+
+int main()
+{
+  return meshsimp_test::RunTests({
+    { "BucketFunction", BucketFunction },
+    { "BucketOrderKeepsOrderWithinBucketWidth", BucketOrderKeepsOrderWithinBucketWidth },
+    { "RoundsAreSuperIndependent", RoundsAreSuperIndependent },
+    { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
+    { "TargetsAndInputPoints", TargetsAndInputPoints },
+    { "CubeKeepsCornersAndEdges", CubeKeepsCornersAndEdges },
+    { "BoundariesAndLocks", BoundariesAndLocks },
+    { "ProgressAndAbort", ProgressAndAbort },
+    { "DegenerateInputs", DegenerateInputs },
+  });
+}
