@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // meshsimplify: run a MeshSimplification filter on a mesh file.
 //
-//   meshsimplify --method octree|volume [--reduction R | --target-triangles N |
+//   meshsimplify --method octree|volume|parallel [--reduction R | --target-triangles N |
 //                --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]
 //                [--repeat N] [--json] INPUT OUTPUT
 //
@@ -13,6 +13,7 @@
 #include "OFFFile.h"
 #include "vtkOFFReader.h"
 #include "vtkOctreeVertexClustering.h"
+#include "vtkParallelDecimation.h"
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkCallbackCommand.h"
@@ -260,8 +261,25 @@ Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
   };
 }
 
+Setters ParallelSetters(vtkParallelDecimation* f)
+{
+  return {
+    { "FeatureAngle", [f](double v) { f->SetFeatureAngle(v); } },
+    { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
+    { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
+    { "ImportanceMeasure", [f](double v) { f->SetImportanceMeasure(static_cast<int>(v)); } },
+    { "AccumulateError", [f](double v) { f->SetAccumulateError(v != 0.0); } },
+    { "HalfEdgeChoice", [f](double v) { f->SetHalfEdgeChoice(static_cast<int>(v)); } },
+    { "MaximumNormalDeviation", [f](double v) { f->SetMaximumNormalDeviation(v); } },
+    { "BucketImportance", [f](double v) { f->SetBucketImportance(v); } },
+    { "BucketShare", [f](double v) { f->SetBucketShare(v); } },
+    { "RoundFraction", [f](double v) { f->SetRoundFraction(v); } },
+    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
+  };
+}
+
 const char* Usage =
-  "usage: meshsimplify --method octree|volume [--reduction R | --target-triangles N |\n"
+  "usage: meshsimplify --method octree|volume|parallel [--reduction R | --target-triangles N |\n"
   "         --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]\n"
   "         [--repeat N] [--json] INPUT OUTPUT\n"
   "  --repeat N  run the filter N times; time_ms is the median\n"
@@ -331,13 +349,13 @@ int main(int argc, char* argv[])
   {
     Fail(std::string("an INPUT and an OUTPUT file are needed\n") + Usage);
   }
-  if (method != "octree" && method != "volume")
+  if (method != "octree" && method != "volume" && method != "parallel")
   {
-    Fail("unknown --method '" + method + "' (available: octree, volume)");
+    Fail("unknown --method '" + method + "' (available: octree, volume, parallel)");
   }
-  if (method == "volume" && maxError >= 0.0)
+  if (method != "octree" && maxError >= 0.0)
   {
-    Fail("--max-error is not a target of --method volume");
+    Fail("--max-error is not a target of --method " + method);
   }
   if ((reduction >= 0.0) + (targetTriangles >= 0) + (maxError >= 0.0) > 1)
   {
@@ -382,6 +400,23 @@ int main(int argc, char* argv[])
     }
     setters = OctreeSetters(octree);
     filter = octree;
+  }
+  else if (method == "parallel")
+  {
+    vtkNew<vtkParallelDecimation> parallel;
+    parallel->SetNumberOfThreads(threads);
+    if (targetTriangles >= 0)
+    {
+      parallel->SetTargetModeToTriangleCount();
+      parallel->SetTargetTriangleCount(targetTriangles);
+    }
+    else
+    {
+      parallel->SetTargetModeToReduction();
+      parallel->SetTargetReduction(reductionWanted);
+    }
+    setters = ParallelSetters(parallel);
+    filter = parallel;
   }
   else
   {
@@ -461,6 +496,10 @@ int main(int argc, char* argv[])
     {
       std::snprintf(number, sizeof(number), "%.9g", volume->GetSquareVolumeError());
       error = std::string(", \"square_volume_error\": ") + number;
+    }
+    else if (auto* parallel = vtkParallelDecimation::SafeDownCast(filter))
+    {
+      error = ", \"rounds\": " + std::to_string(parallel->GetRounds());
     }
     std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
                 "\"time_ms\": %.3f, \"threads\": %d%s}\n",

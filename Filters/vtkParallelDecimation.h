@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkParallelDecimation
+ * @brief   fast vertex decimation by half-edge collapse, in rounds that run on all cores
+ *
+ * vtkParallelDecimation implements the parallel decimation of Franc's dissertation "Methods for
+ * Polygonal Mesh Simplification" (ch. 5–6). Vertices are removed, never moved: each removal
+ * collapses one of the vertex's edges into a neighbour, so the output points are a subset of the
+ * input points with their point data unchanged.
+ *
+ * - Vertex types: simple, boundary, interior-edge (two sharp edges), corner and complex
+ *   (non-manifold). An edge is sharp where its triangles' normals differ by more than
+ *   FeatureAngle; corners (one or three and more sharp edges, or a boundary turning by more than
+ *   BoundaryCornerAngle) and complex vertices are kept. Boundary and interior-edge vertices are
+ *   removed only along their boundary or sharp edges, so creases and borders keep their line.
+ * - Importance, the order of removal: with ImportanceMeasure AVERAGE_PLANE (the paper) the
+ *   distance to the average plane of the vertex's triangles, or to the line through its two
+ *   boundary or feature neighbours (eq. 5.1–5.4), plus, with AccumulateError, the importance of
+ *   the vertices already collapsed into it; with QUADRIC (default) the least accumulated
+ *   plane-distance error (Garland–Heckbert quadrics) of the vertex's allowed collapses, which
+ *   remembers every removed vertex's planes and gives about half the RMS distance.
+ * - Ordering without sorting (§5.6): vertices go into buckets by a function of their importance
+ *   that spreads the least important ones (BucketImportance a, BucketShare α; the paper's 2 %
+ *   and 80 %).
+ * - Rounds (§5.5): the least important vertices (RoundFraction of them per round) are taken
+ *   greedily while any two taken vertices stay at least three edges apart (a
+ *   super-independent set), and then removed concurrently without locks. Each removal collapses
+ *   the legal edge of least area change among those that turn no triangle by more than
+ *   MaximumNormalDeviation (HalfEdgeChoice LEAST_AREA_CHANGE, §5.3) or the shortest legal edge
+ *   (SHORTEST_EDGE, §5.5); with QUADRIC, the edge of least error. Every collapse keeps the mesh
+ *   manifold (link condition) and never folds or degenerates a triangle.
+ * - The output is the same for any NumberOfThreads.
+ *
+ * The triangle count is met within 2 % (TargetReduction or TargetTriangleCount). When no vertex
+ * is removable before that (all corners, or no edge within the deviation), FeatureAngle and
+ * MaximumNormalDeviation are raised by 15° at a time, with a warning; the filter stops early,
+ * with a warning, only when nothing is removable at 180°.
+ *
+ * Points can be locked (never removed) by a point-data array whose nonzero values mark them,
+ * selected as input array 0. Polygons are triangulated and strips decomposed first; vertex and
+ * line cells are dropped (a warning says how many); triangles with repeated point ids or
+ * non-finite points are ignored.
+ *
+ * Point data is copied from each surviving point; normals are recomputed. Cell data is copied
+ * from the input cell of each surviving triangle. The point array "Importance" holds each output
+ * point's final importance (-1 for points that are never removed) and "VertexType" its type
+ * (0 simple, 1 boundary, 2 interior-edge, 3 corner, 4 complex); the field data holds
+ * "AchievedReduction" and "Rounds".
+ *
+ * @sa vtkDecimatePro vtkQuadricDecimation vtkVolumeTriangleCollapse
+ */
+#ifndef vtkParallelDecimation_h
+#define vtkParallelDecimation_h
+
+#include "MeshSimplificationFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkParallelDecimation : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkParallelDecimation* New();
+  vtkTypeMacro(vtkParallelDecimation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum TargetModes
+  {
+    TARGET_REDUCTION = 0,
+    TARGET_TRIANGLE_COUNT = 1
+  };
+  enum ImportanceMeasures
+  {
+    AVERAGE_PLANE = 0,
+    QUADRIC = 1
+  };
+  enum HalfEdgeChoices
+  {
+    LEAST_AREA_CHANGE = 0,
+    SHORTEST_EDGE = 1
+  };
+
+  ///@{
+  /**
+   * What decides how far to simplify: TargetReduction (default) or TargetTriangleCount.
+   */
+  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_TRIANGLE_COUNT);
+  vtkGetMacro(TargetMode, int);
+  void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
+  void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
+  ///@}
+
+  ///@{
+  /**
+   * Fraction of the input triangles to remove, as in vtkQuadricDecimation (default 0.9).
+   */
+  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /**
+   * Number of output triangles wanted in TargetTriangleCount mode (default 1000).
+   */
+  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Degrees between the normals of an edge's two triangles above which the edge is sharp
+   * (default 60). Lower values keep more creases and corners.
+   */
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Keep every boundary vertex (default off). Boundary corners sharper than
+   * BoundaryCornerAngle (degrees, default 60) are kept either way.
+   */
+  vtkSetMacro(PreserveBoundary, bool);
+  vtkGetMacro(PreserveBoundary, bool);
+  vtkBooleanMacro(PreserveBoundary, bool);
+  vtkSetClampMacro(BoundaryCornerAngle, double, 0.0, 180.0);
+  vtkGetMacro(BoundaryCornerAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * The order of removal: QUADRIC (default) or AVERAGE_PLANE (the paper's eq. 5.1–5.4), and for
+   * AVERAGE_PLANE whether a survivor adds the importance of the vertices collapsed into it
+   * (AccumulateError, default on).
+   */
+  vtkSetClampMacro(ImportanceMeasure, int, AVERAGE_PLANE, QUADRIC);
+  vtkGetMacro(ImportanceMeasure, int);
+  vtkSetMacro(AccumulateError, bool);
+  vtkGetMacro(AccumulateError, bool);
+  vtkBooleanMacro(AccumulateError, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The edge an AVERAGE_PLANE vertex collapses along: LEAST_AREA_CHANGE (default, §5.3) among
+   * those that turn no remaining triangle by more than MaximumNormalDeviation degrees (default
+   * 45; also a limit for QUADRIC), or SHORTEST_EDGE (§5.5).
+   */
+  vtkSetClampMacro(HalfEdgeChoice, int, LEAST_AREA_CHANGE, SHORTEST_EDGE);
+  vtkGetMacro(HalfEdgeChoice, int);
+  vtkSetClampMacro(MaximumNormalDeviation, double, 0.0, 180.0);
+  vtkGetMacro(MaximumNormalDeviation, double);
+  ///@}
+
+  ///@{
+  /**
+   * The bucketing function of §5.6: the least important BucketImportance of the importance range
+   * (default 0.02) fills BucketShare of the buckets (default 0.8).
+   */
+  vtkSetClampMacro(BucketImportance, double, 1e-6, 1.0);
+  vtkGetMacro(BucketImportance, double);
+  vtkSetClampMacro(BucketShare, double, 1e-6, 1.0);
+  vtkGetMacro(BucketShare, double);
+  ///@}
+
+  ///@{
+  /**
+   * The share of the removable vertices, least important first, that one round considers
+   * (default 0.1). Smaller keeps the order closer to a global one and takes more rounds.
+   */
+  vtkSetClampMacro(RoundFraction, double, 0.001, 1.0);
+  vtkGetMacro(RoundFraction, double);
+  ///@}
+
+  ///@{
+  /**
+   * Threads; 0 (default) uses all cores. The output does not depend on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * vtkAlgorithm::DEFAULT_PRECISION (default: as the input), SINGLE_PRECISION or
+   * DOUBLE_PRECISION for the output points.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  /**
+   * Rounds of the last execution.
+   */
+  vtkGetMacro(Rounds, vtkIdType);
+
+protected:
+  vtkParallelDecimation();
+  ~vtkParallelDecimation() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int TargetMode = TARGET_REDUCTION;
+  double TargetReduction = 0.9;
+  vtkIdType TargetTriangleCount = 1000;
+  double FeatureAngle = 60.0;
+  bool PreserveBoundary = false;
+  double BoundaryCornerAngle = 60.0;
+  int ImportanceMeasure = QUADRIC;
+  bool AccumulateError = true;
+  int HalfEdgeChoice = LEAST_AREA_CHANGE;
+  double MaximumNormalDeviation = 45.0;
+  double BucketImportance = 0.02;
+  double BucketShare = 0.8;
+  double RoundFraction = 0.1;
+  int NumberOfThreads = 0;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
+  vtkIdType Rounds = 0;
+
+private:
+  vtkParallelDecimation(const vtkParallelDecimation&) = delete;
+  void operator=(const vtkParallelDecimation&) = delete;
+};
+
+#endif
