@@ -118,6 +118,9 @@ private:
   /// The quadric error of collapsing v into u.
   double HalfEdgeError(std::int32_t v, std::int32_t u) const;
   void InitializeQuadrics();
+  /// Half the change of area when v collapses into u (its star in the workspace), or -1 when a
+  /// remaining triangle would turn by more than the deviation limit or degenerate (§5.3).
+  double AreaChange(std::int32_t v, std::int32_t u, const Workspace& work) const;
   bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const;
   /// Fills chosen with the round's set; true when the window covered every candidate.
   bool SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen);
@@ -161,7 +164,8 @@ private:
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
   std::uint32_t Round = 0;
-  std::vector<std::int32_t> Order, Sorted, Buckets, Around;
+  std::vector<std::int32_t> Live, Order, Sorted, Buckets, Around;
+  std::vector<std::uint8_t> Gone; // removed by a collapse
   std::vector<Workspace> Workspaces;
 };
 
@@ -320,6 +324,33 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
   return state;
 }
 
+double Decimator::AreaChange(std::int32_t v, std::int32_t u, const Workspace& work) const
+{
+  const Vec3& target = this->Mesh.Point(u);
+  double before = 0.0, after = 0.0;
+  for (std::size_t i = 0; i < work.Triangles.size(); ++i)
+  {
+    const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
+    const Vec3& old = work.Crosses[i];
+    const double oldLength = old.norm();
+    before += oldLength;
+    if (tri[0] == u || tri[1] == u || tri[2] == u)
+    {
+      continue; // removed by the collapse
+    }
+    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+    const Vec3 moved =
+      (this->Mesh.Point(tri[(k + 1) % 3]) - target).cross(this->Mesh.Point(tri[(k + 2) % 3]) - target);
+    const double newLength = moved.norm();
+    if (!(newLength > 0.0) || moved.dot(old) < this->CosDeviation * newLength * oldLength)
+    {
+      return -1.0;
+    }
+    after += newLength;
+  }
+  return 0.5 * std::abs(after - before);
+}
+
 bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
 {
   const VertexState state = this->Analyze(v, work);
@@ -327,39 +358,29 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
   {
     return false;
   }
-  // Analyze left v's star in the workspace. The half-edges v → u it may collapse, scored.
+  // Analyze left v's star in the workspace. Score the half-edges v → u it may collapse: by
+  // their error (Quadric), length (§5.5) or area change under the deviation limit (§5.3).
+  const bool quadric = this->Options.Measure == ImportanceMeasure::Quadric;
+  const bool shortest = !quadric && this->Options.Choice == HalfEdgeChoice::ShortestEdge;
   const Vec3& p = this->Mesh.Point(v);
   work.Options.clear();
   auto consider = [&](std::int32_t u) {
-    const Vec3& target = this->Mesh.Point(u);
-    const bool quadric = this->Options.Measure == ImportanceMeasure::Quadric;
-    if (this->Options.Choice == HalfEdgeChoice::ShortestEdge && !quadric)
+    if (quadric)
     {
-      work.Options.push_back({ (target - p).squaredNorm(), u });
-      return;
+      work.Options.push_back({ this->HalfEdgeError(v, u), u });
     }
-    // §5.3: the change of area, under the limit on the turn of each remaining triangle.
-    double before = 0.0, after = 0.0;
-    for (std::size_t i = 0; i < work.Triangles.size(); ++i)
+    else if (shortest)
     {
-      const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
-      const Vec3& old = work.Crosses[i];
-      const double oldLength = old.norm();
-      before += oldLength;
-      if (tri[0] == u || tri[1] == u || tri[2] == u)
-      {
-        continue; // removed by the collapse
-      }
-      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-      const Vec3 moved = (this->Mesh.Point(tri[(k + 1) % 3]) - target).cross(this->Mesh.Point(tri[(k + 2) % 3]) - target);
-      const double newLength = moved.norm();
-      if (!(newLength > 0.0) || moved.dot(old) < this->CosDeviation * newLength * oldLength)
-      {
-        return;
-      }
-      after += newLength;
+      work.Options.push_back({ (this->Mesh.Point(u) - p).squaredNorm(), u });
     }
-    work.Options.push_back({ quadric ? this->HalfEdgeError(v, u) : std::abs(after - before), u });
+    else
+    {
+      const double change = this->AreaChange(v, u, work);
+      if (change >= 0.0)
+      {
+        work.Options.push_back({ change, u });
+      }
+    }
   };
   if (state.Type == DecimationVertexType::Simple)
   {
@@ -376,8 +397,13 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
   std::sort(work.Options.begin(), work.Options.end(), [](const Workspace::Option& a, const Workspace::Option& b) {
     return a.Score != b.Score ? a.Score < b.Score : a.Target < b.Target;
   });
+  // The best that passes the engine's checks (and, for Quadric, the deviation limit).
   for (const Workspace::Option& option : work.Options)
   {
+    if (quadric && this->AreaChange(v, option.Target, work) < 0.0)
+    {
+      continue;
+    }
     plan.Vertices[0] = option.Target; // kept
     plan.Vertices[1] = v;
     plan.Vertices[2] = -1;
@@ -397,17 +423,24 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
 {
   // §5.6: bucket the removable vertices by eq. (5.6) of their importance, in O(N) by counting;
   // then §5.5: take them greedily in that order while their neighbourhoods stay disjoint.
-  const std::int32_t n = this->Mesh.NumberOfPoints();
+  // The vertices still in the mesh, compacted as they go; of them the removable ones.
   this->Order.clear();
   double largest = 0.0;
-  for (std::int32_t v = 0; v < n; ++v)
+  std::size_t live = 0;
+  for (const std::int32_t v : this->Live)
   {
+    if (this->Gone[v])
+    {
+      continue;
+    }
+    this->Live[live++] = v;
     if (this->Importance[v] < Never && !this->Stuck[v])
     {
       this->Order.push_back(v);
       largest = std::max(largest, this->Importance[v]);
     }
   }
+  this->Live.resize(live);
   const std::int64_t candidates = static_cast<std::int64_t>(this->Order.size());
   std::vector<std::int32_t>& sorted = this->Sorted;
   BucketOrder(this->Importance.data(), this->Order, largest, this->Options.BucketImportance,
@@ -525,6 +558,12 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   this->Types.assign(n, DecimationVertexType::Complex);
   this->Owner.assign(n, 0);
   this->Stuck.assign(n, 0);
+  this->Gone.assign(n, 0);
+  this->Live.resize(n);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    this->Live[v] = v;
+  }
   this->Accumulated.assign(n, 0.0);
   auto evaluate = [&](const std::int32_t* vertices, std::int64_t count) {
     this->ForEachInParts(count, 64, [&](std::int64_t i, Workspace& work) {
@@ -586,6 +625,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       this->Mesh.Neighbours(v, around);
       affected.insert(affected.end(), around.begin(), around.end());
       this->Importance[v] = Never;
+      this->Gone[v] = 1;
     }
     ++result.Rounds;
     if (applied.empty())
