@@ -34,6 +34,26 @@ if (output_triangles LESS 990 OR output_triangles GREATER 1010 OR NOT square_vol
   message(FATAL_ERROR "unexpected volume result: ${out}")
 endif ()
 
+# The parallel method: counts within 2 %, the same output with 1 and 2 threads, its rounds.
+foreach (threads IN ITEMS 1 2)
+  execute_process(
+    COMMAND "${TOOL}" --method parallel --reduction 0.9 --threads ${threads} --json "${INPUT}" "${OUTPUT}.${threads}.off"
+    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT code EQUAL 0)
+    message(FATAL_ERROR "meshsimplify --method parallel failed (${code}): ${err}")
+  endif ()
+  string(JSON output_triangles GET "${out}" output_triangles)
+  string(JSON rounds GET "${out}" rounds)
+  if (output_triangles LESS 568 OR output_triangles GREATER 592 OR NOT rounds GREATER 0)
+    message(FATAL_ERROR "unexpected parallel result: ${out}")
+  endif ()
+endforeach ()
+file(READ "${OUTPUT}.1.off" one)
+file(READ "${OUTPUT}.2.off" two)
+if (NOT one STREQUAL two)
+  message(FATAL_ERROR "--method parallel: 1 and 2 threads wrote different meshes")
+endif ()
+
 foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--method;octree;--reduction;abc;${INPUT};${OUTPUT}"
                       "--method;octree;--reduction;1.5;${INPUT};${OUTPUT}"
@@ -41,7 +61,9 @@ foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--method;octree;${INPUT};${OUTPUT}.xyz"
                       "--method;octree;--set;Nope=1;${INPUT};${OUTPUT}"
                       "--method;volume;--max-error;0.1;${INPUT};${OUTPUT}"
-                      "--method;volume;--set;MaximumCellSize=1;${INPUT};${OUTPUT}")
+                      "--method;volume;--set;MaximumCellSize=1;${INPUT};${OUTPUT}"
+                      "--method;parallel;--max-error;0.1;${INPUT};${OUTPUT}"
+                      "--method;parallel;--set;FeatureCurvature=1;${INPUT};${OUTPUT}")
   execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
     message(FATAL_ERROR "expected a clean failure for '${bad}', got ${code}: ${err}")

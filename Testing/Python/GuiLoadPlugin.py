@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Run by the ParaView GUI (paraview --script=... --exit): load the plugin, simplify the cow with
-each filter, and write the triangle counts ("octree volume") - or the error - to the file
+each filter, and write the triangle counts ("octree volume parallel") - or the error - to the file
 MESHSIMPLIFICATION_MARKER names, for Testing/GUI/TestParaViewGUI.cmake to check."""
 import os
 import traceback
@@ -17,9 +17,13 @@ try:
     collapsed = VolumeTriangleCollapse(Input=cow, TargetReduction=0.9)
     collapsed.UpdatePipeline()
     Show(collapsed)
+    decimated = ParallelDecimation(Input=cow, TargetReduction=0.9)
+    decimated.UpdatePipeline()
+    Show(decimated)
     Render()
-    result = "%d %d\n" % (simplified.GetDataInformation().GetNumberOfCells(),
-                           collapsed.GetDataInformation().GetNumberOfCells())
+    result = "%d %d %d\n" % (simplified.GetDataInformation().GetNumberOfCells(),
+                              collapsed.GetDataInformation().GetNumberOfCells(),
+                              decimated.GetDataInformation().GetNumberOfCells())
 except Exception:
     result = "error\n" + traceback.format_exc()
 with open(marker, "w") as out:
