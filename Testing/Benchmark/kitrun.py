@@ -21,15 +21,19 @@ def metric(row, key):
 
 def run_cases(meshes, kit, bin_dir, ours, peers, reductions, repeat, workdir):
     """Runs compare.py on every mesh; returns (name, input info, reduction, target, rows by
-    method) per case. `ours` is the kit's --extra template of our CLI."""
+    method) per case. `ours` is the kit's --extra template of our CLI (method "ours"), or a
+    dict of such templates by method name."""
+    extras = ours if isinstance(ours, dict) else {"ours": ours}
     cases = []
     for mesh in meshes:
         name = os.path.splitext(os.path.basename(mesh))[0]
         result = os.path.join(workdir, name + ".json")
         command = ["/usr/bin/python3", os.path.join(kit, "compare.py"), mesh,
                    "--reduction", *map(str, reductions), "--repeat", str(repeat),
-                   "--only", peers + "|^ours$", "--extra", "ours=" + ours,
+                   "--only", peers + "".join("|^%s$" % n for n in extras),
                    "--workdir", os.path.join(workdir, name), "--json", result]
+        for method, template in extras.items():
+            command += ["--extra", method + "=" + template]
         if bin_dir:
             command += ["--bin", bin_dir]
         print("running", name, file=sys.stderr)
