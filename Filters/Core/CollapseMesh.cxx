@@ -459,11 +459,21 @@ void CollapseMesh::CompactRefs()
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
 }
 
-int CollapseMesh::Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo)
+int CollapseMesh::Merge(
+  const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo, std::int64_t& droppedRefs)
 {
   const std::int32_t kept = plan.Vertices[0];
   span.clear();
   int removed = 0;
+  // A removed triangle leaves the span of its corner outside the plan (order kept), so that
+  // walks around that vertex do not skip it ever after.
+  auto dropFromSpan = [&](std::int32_t w, std::int32_t t) {
+    std::int32_t* first = this->Refs.data() + this->Start[w];
+    std::int32_t* last = first + this->Count[w];
+    std::int32_t* end = std::remove(first, last, t);
+    droppedRefs += last - end;
+    this->Count[w] = static_cast<std::int32_t>(end - first);
+  };
   for (int i = 0; i < plan.Count; ++i)
   {
     const std::int32_t s = plan.Vertices[i];
@@ -481,6 +491,18 @@ int CollapseMesh::Merge(const CollapsePlan& plan, std::vector<std::int32_t>& spa
         if (keepUndo)
         {
           this->RemovedTriangles.push_back(t);
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          bool outside = true;
+          for (int j = 0; j < plan.Count; ++j)
+          {
+            outside = outside && tri[k] != plan.Vertices[j];
+          }
+          if (outside)
+          {
+            dropFromSpan(tri[k], t);
+          }
         }
         return;
       }
@@ -526,8 +548,10 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
   record.FirstChange = static_cast<std::int32_t>(this->Changes.size());
   record.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
 
-  const int removed = this->Merge(plan, this->Span, keepUndo);
+  std::int64_t dropped = 0;
+  const int removed = this->Merge(plan, this->Span, keepUndo, dropped);
   this->AliveCount -= removed;
+  this->LiveRefs -= dropped;
   for (int i = 1; i < plan.Count; ++i)
   {
     this->LiveRefs -= this->Count[plan.Vertices[i]];
@@ -569,11 +593,12 @@ std::int64_t CollapseMesh::ApplyIndependent(
   }
   std::vector<std::int32_t> block(offsets[count]);
   std::vector<std::int32_t> sizes(count), removedCounts(count);
+  std::vector<std::int64_t> droppedRefs(count, 0);
   context.For(count, [&](std::int64_t begin, std::int64_t end) {
     std::vector<std::int32_t> span;
     for (std::int64_t i = begin; i < end; ++i)
     {
-      removedCounts[i] = this->Merge(plans[i], span, false);
+      removedCounts[i] = this->Merge(plans[i], span, false, droppedRefs[i]);
       std::copy(span.begin(), span.end(), block.begin() + offsets[i]);
       sizes[i] = static_cast<std::int32_t>(span.size());
     }
@@ -594,6 +619,7 @@ std::int64_t CollapseMesh::ApplyIndependent(
     this->LiveRefs += sizes[i] - this->Count[kept];
     this->Start[kept] = static_cast<std::int32_t>(base + offsets[i]);
     this->Count[kept] = sizes[i];
+    this->LiveRefs -= droppedRefs[i];
     removed += removedCounts[i];
   }
   this->AliveCount -= removed;

@@ -7,7 +7,7 @@
  * Storage is flat: points, 3 vertex ids per triangle, an alive flag per triangle, and per vertex
  * a span {start, count} into one array of incident triangle ids. A collapse writes the merged
  * vertex's new span at the end of that array (old spans become garbage, compacted when it
- * doubles); the other vertices' spans may keep ids of removed triangles, which every walk skips.
+ * doubles) and takes the removed triangles out of their other corners' spans.
  *
  * A collapse merges a connected set of two vertices (an edge, or a half-edge when the position is
  * one end point) or three (a triangle, paper 004) into the first of them, the kept vertex, at a
@@ -173,10 +173,12 @@ private:
   std::int32_t Valence(std::int32_t v, CheckScratch& scratch) const;
   void Neighbours(std::int32_t v, std::vector<std::int32_t>& out, CheckScratch& scratch) const;
   bool LinkCondition(const std::int32_t* merged, int count, std::int32_t next, CheckScratch& scratch) const;
-  /// The collapse itself: triangles, alive flags, the kept point and class, the merged vertices'
-  /// spans emptied; the kept vertex's new triangles go to span (its span is not set). Returns the
-  /// number of triangles removed.
-  int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo);
+  /// The collapse itself: triangles, alive flags, the kept point and class, removed triangles
+  /// taken out of their other corners' spans (droppedRefs counts them); the kept vertex's new
+  /// triangles go to span (its span and the merged vertices' are not set). Returns the number of
+  /// triangles removed.
+  int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo,
+    std::int64_t& droppedRefs);
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
   void CompactRefs();

@@ -25,29 +25,38 @@ double BucketPosition(double x, double a, double alpha)
 }
 
 void BucketOrder(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
-  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& buckets)
+  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& buckets,
+  std::size_t limit)
 {
   // One bucket per vertex on average; a counting sort by bucket, stable in the given order.
   const std::size_t count = vertices.size();
   const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
   buckets.assign(static_cast<std::size_t>(bucketCount) + 1, 0);
-  order.resize(count);
-  auto bucketOf = [&](std::int32_t v) {
-    const double x = largest > 0.0 ? importance[v] / largest : 0.0;
-    return std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
-  };
-  for (const std::int32_t v : vertices)
+  order.resize(2 * count);
+  std::int32_t* bucketOf = order.data() + count; // the second half holds each vertex's bucket
+  for (std::size_t i = 0; i < count; ++i)
   {
-    ++buckets[bucketOf(v) + 1];
+    const double x = largest > 0.0 ? importance[vertices[i]] / largest : 0.0;
+    bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
+    ++buckets[bucketOf[i] + 1];
   }
+  std::int32_t last = bucketCount - 1; // the last bucket needed for the first `limit` vertices
   for (std::int32_t b = 0; b < bucketCount; ++b)
   {
     buckets[b + 1] += buckets[b];
+    if (static_cast<std::size_t>(buckets[b + 1]) >= limit && last == bucketCount - 1)
+    {
+      last = b;
+    }
   }
-  for (const std::int32_t v : vertices)
+  for (std::size_t i = 0; i < count; ++i)
   {
-    order[buckets[bucketOf(v)]++] = v;
+    if (bucketOf[i] <= last)
+    {
+      order[buckets[bucketOf[i]]++] = vertices[i];
+    }
   }
+  order.resize(std::min<std::size_t>(count, static_cast<std::size_t>(buckets[last])));
 }
 
 namespace
@@ -79,10 +88,13 @@ struct Workspace
   std::vector<StarEdge> Edges;
   std::vector<std::int32_t> Triangles;
   std::vector<Vec3> Crosses;
+  std::vector<double> Lengths; // of the crosses: twice the areas
+  std::vector<std::int32_t> Previous;
   CollapseMesh::CheckScratch Scratch;
   struct Option
   {
     double Score;
+    double Length; // squared; breaks ties, so flat regions do not grow hubs of high valence
     std::int32_t Target;
   };
   std::vector<Option> Options;
@@ -160,6 +172,7 @@ private:
   std::vector<double> Importance;
   std::vector<double> Accumulated;  // AveragePlane: importance inherited from removed vertices
   std::vector<Quadric> Quadrics;    // Quadric: the planes around each vertex and its merged ones
+  std::vector<double> OwnError;     // Q_v(p_v)
   std::vector<DecimationVertexType> Types;
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
@@ -171,23 +184,15 @@ private:
 
 void Decimator::CollectStar(std::int32_t v, Workspace& work) const
 {
-  // The triangles around v with their cross products, and the edges (v, w) with the triangles
-  // on either side.
-  work.Edges.clear();
+  // The triangles around v with their cross products and lengths, and the edges (v, w) with the
+  // triangles on either side: the edge to a triangle's next corner is the edge to another's
+  // previous corner (an open fan leaves one of each unmatched).
   work.Triangles.clear();
   work.Crosses.clear();
+  work.Lengths.clear();
+  work.Previous.clear();
+  work.Edges.clear();
   const Vec3& p = this->Mesh.Point(v);
-  auto edge = [&](std::int32_t w) -> StarEdge& {
-    for (StarEdge& e : work.Edges)
-    {
-      if (e.W == w)
-      {
-        return e;
-      }
-    }
-    work.Edges.push_back({ w, -1, -1 });
-    return work.Edges.back();
-  };
   this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
     const std::int32_t* tri = this->Mesh.Triangle(t);
     const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
@@ -195,16 +200,33 @@ void Decimator::CollectStar(std::int32_t v, Workspace& work) const
     const std::int32_t slot = static_cast<std::int32_t>(work.Triangles.size());
     work.Triangles.push_back(t);
     work.Crosses.push_back((this->Mesh.Point(next) - p).cross(this->Mesh.Point(previous) - p));
-    edge(next).After = slot;
-    edge(previous).Before = slot;
+    work.Lengths.push_back(work.Crosses.back().norm());
+    work.Previous.push_back(previous);
+    work.Edges.push_back({ next, slot, -1 });
   });
+  const std::size_t count = work.Edges.size();
+  for (std::size_t j = 0; j < count; ++j)
+  {
+    std::size_t i = 0;
+    while (i < count && work.Edges[i].W != work.Previous[j])
+    {
+      ++i;
+    }
+    if (i < count)
+    {
+      work.Edges[i].Before = static_cast<std::int32_t>(j);
+    }
+    else
+    {
+      work.Edges.push_back({ work.Previous[j], -1, static_cast<std::int32_t>(j) });
+    }
+  }
 }
 
 double Decimator::HalfEdgeError(std::int32_t v, std::int32_t u) const
 {
-  Quadric q = this->Quadrics[v];
-  q += this->Quadrics[u];
-  return q.Evaluate(this->Mesh.Point(u));
+  // (Q_v + Q_u)(p_u), with Q_u(p_u) kept per vertex.
+  return this->Quadrics[v].Evaluate(this->Mesh.Point(u)) + this->OwnError[u];
 }
 
 VertexState Decimator::Evaluate(std::int32_t v, Workspace& work) const
@@ -270,7 +292,7 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
     }
     const Vec3& a = work.Crosses[e.After];
     const Vec3& b = work.Crosses[e.Before];
-    const double lengths = a.norm() * b.norm();
+    const double lengths = work.Lengths[e.After] * work.Lengths[e.Before];
     if (lengths > 0.0 && a.dot(b) < this->CosFeature * lengths)
     {
       if (open == 0 && sharp < 2)
@@ -313,7 +335,7 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
   for (std::size_t i = 0; i < work.Triangles.size(); ++i)
   {
     const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
-    const double a = work.Crosses[i].norm();
+    const double a = work.Lengths[i];
     normal += work.Crosses[i];
     centre += a * (this->Mesh.Point(tri[0]) + this->Mesh.Point(tri[1]) + this->Mesh.Point(tri[2])) / 3.0;
     area += a;
@@ -332,7 +354,7 @@ double Decimator::AreaChange(std::int32_t v, std::int32_t u, const Workspace& wo
   {
     const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
     const Vec3& old = work.Crosses[i];
-    const double oldLength = old.norm();
+    const double oldLength = work.Lengths[i];
     before += oldLength;
     if (tri[0] == u || tri[1] == u || tri[2] == u)
     {
@@ -365,20 +387,21 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
   const Vec3& p = this->Mesh.Point(v);
   work.Options.clear();
   auto consider = [&](std::int32_t u) {
+    const double length = (this->Mesh.Point(u) - p).squaredNorm();
     if (quadric)
     {
-      work.Options.push_back({ this->HalfEdgeError(v, u), u });
+      work.Options.push_back({ this->HalfEdgeError(v, u), length, u });
     }
     else if (shortest)
     {
-      work.Options.push_back({ (this->Mesh.Point(u) - p).squaredNorm(), u });
+      work.Options.push_back({ length, length, u });
     }
     else
     {
       const double change = this->AreaChange(v, u, work);
       if (change >= 0.0)
       {
-        work.Options.push_back({ change, u });
+        work.Options.push_back({ change, length, u });
       }
     }
   };
@@ -395,7 +418,7 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
     consider(state.Along[1]);
   }
   std::sort(work.Options.begin(), work.Options.end(), [](const Workspace::Option& a, const Workspace::Option& b) {
-    return a.Score != b.Score ? a.Score < b.Score : a.Target < b.Target;
+    return a.Score != b.Score ? a.Score < b.Score : a.Length != b.Length ? a.Length < b.Length : a.Target < b.Target;
   });
   // The best that passes the engine's checks (and, for Quadric, the deviation limit).
   for (const Workspace::Option& option : work.Options)
@@ -442,12 +465,12 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
   }
   this->Live.resize(live);
   const std::int64_t candidates = static_cast<std::int64_t>(this->Order.size());
-  std::vector<std::int32_t>& sorted = this->Sorted;
-  BucketOrder(this->Importance.data(), this->Order, largest, this->Options.BucketImportance,
-    this->Options.BucketShare, sorted, this->Buckets);
-
   const std::int64_t window =
     std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(fraction * static_cast<double>(candidates))));
+  std::vector<std::int32_t>& sorted = this->Sorted;
+  BucketOrder(this->Importance.data(), this->Order, largest, this->Options.BucketImportance,
+    this->Options.BucketShare, sorted, this->Buckets, static_cast<std::size_t>(window));
+
   ++this->Round;
   chosen.clear();
   std::int64_t expected = 0, seen = 0;
@@ -491,6 +514,7 @@ void Decimator::InitializeQuadrics()
   // so that boundaries keep their place.
   const std::int32_t n = this->Mesh.NumberOfPoints();
   this->Quadrics.assign(n, Quadric());
+  this->OwnError.assign(n, 0.0);
   this->ForEachInParts(n, 64, [&](std::int64_t i, Workspace& work) {
     const std::int32_t v = static_cast<std::int32_t>(i);
     this->CollectStar(v, work);
@@ -594,6 +618,9 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     {
       this->Options.RoundObserver(this->Mesh, chosen);
     }
+    // Removed in vertex order, which follows space (MakeCompactMesh): nearby vertices share
+    // cache lines where the importance order would jump across the mesh.
+    std::sort(chosen.begin(), chosen.end());
     const std::int64_t count = static_cast<std::int64_t>(chosen.size());
     plans.resize(chosen.size());
     planned.assign(chosen.size(), 0);
@@ -617,6 +644,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       if (this->Options.Measure == ImportanceMeasure::Quadric)
       {
         this->Quadrics[kept] += this->Quadrics[v];
+        this->OwnError[kept] = this->Quadrics[kept].Evaluate(this->Mesh.Point(kept));
       }
       else if (this->Options.AccumulateError)
       {
@@ -647,6 +675,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       continue;
     }
     this->Mesh.ApplyIndependent(applied, this->Context);
+    std::sort(affected.begin(), affected.end());
     evaluate(affected.data(), static_cast<std::int64_t>(affected.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));

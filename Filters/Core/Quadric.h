@@ -82,7 +82,9 @@ struct Quadric
   /// Q(v), eq. (1). Clamped at zero against round-off.
   double Evaluate(const Eigen::Vector3d& v) const
   {
-    const double value = v.dot(this->A() * v) + 2.0 * this->B().dot(v) + this->C;
+    const double x = v.x(), y = v.y(), z = v.z();
+    const double value = x * (A00 * x + 2.0 * (A01 * y + A02 * z + B0)) +
+      y * (A11 * y + 2.0 * (A12 * z + B1)) + z * (A22 * z + 2.0 * B2) + C;
     return value > 0.0 ? value : 0.0;
   }
 };
