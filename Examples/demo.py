@@ -84,3 +84,14 @@ terrain_volume = VolumeTriangleCollapse(Input=terrain, TargetReduction=0.95)
 SaveData(os.path.join(args.output, "terrain_volume_95.vtp"), proxy=terrain_volume)
 side_by_side(terrain, terrain_volume, "elevation", "terrain-volume",
              os.path.join(args.output, "terrain_volume_95.png"), terrain_camera)
+
+# Parallel Decimation: vertices removed on all cores, never moved; the cow coloured by each
+# vertex's type (simple, boundary, crease, corner), the terrain by its elevation.
+cow_parallel = ParallelDecimation(Input=cow, TargetReduction=0.9)
+SaveData(os.path.join(args.output, "cow_parallel_90.vtp"), proxy=cow_parallel)
+side_by_side(cow, cow_parallel, "VertexType", "cow-parallel",
+             os.path.join(args.output, "cow_parallel_90.png"), cow_camera)
+terrain_parallel = ParallelDecimation(Input=terrain, TargetReduction=0.95)
+SaveData(os.path.join(args.output, "terrain_parallel_95.vtp"), proxy=terrain_parallel)
+side_by_side(terrain, terrain_parallel, "elevation", "terrain-parallel",
+             os.path.join(args.output, "terrain_parallel_95.png"), terrain_camera)

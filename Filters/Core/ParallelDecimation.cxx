@@ -177,7 +177,7 @@ private:
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
   std::uint32_t Round = 0;
-  std::vector<std::int32_t> Live, Order, Sorted, Buckets, Around;
+  std::vector<std::int32_t> Live, Order, Sorted, Buckets;
   std::vector<std::uint8_t> Gone; // removed by a collapse
   std::vector<Workspace> Workspaces;
 };
@@ -474,7 +474,7 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
   ++this->Round;
   chosen.clear();
   std::int64_t expected = 0, seen = 0;
-  std::vector<std::int32_t>& around = this->Around;
+  const std::uint32_t round = this->Round;
   for (const std::int32_t v : sorted)
   {
     if (expected >= need || seen >= window)
@@ -482,26 +482,22 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
       break;
     }
     ++seen;
-    if (this->Owner[v] == this->Round)
-    {
-      continue;
-    }
-    this->Mesh.Neighbours(v, around);
-    bool free = true;
-    for (const std::int32_t w : around)
-    {
-      free = free && this->Owner[w] != this->Round;
-    }
+    // Free when no vertex of its triangles is near a vertex taken before; then its triangles'
+    // vertices are marked as near it.
+    bool free = this->Owner[v] != round;
+    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      free = free && this->Owner[tri[0]] != round && this->Owner[tri[1]] != round && this->Owner[tri[2]] != round;
+    });
     if (!free)
     {
       continue;
     }
     chosen.push_back(v);
-    this->Owner[v] = this->Round;
-    for (const std::int32_t w : around)
-    {
-      this->Owner[w] = this->Round;
-    }
+    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      this->Owner[tri[0]] = this->Owner[tri[1]] = this->Owner[tri[2]] = round;
+    });
     expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
   }
   return window >= candidates;
@@ -590,7 +586,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   }
   this->Accumulated.assign(n, 0.0);
   auto evaluate = [&](const std::int32_t* vertices, std::int64_t count) {
-    this->ForEachInParts(count, 64, [&](std::int64_t i, Workspace& work) {
+    this->ForEachInParts(count, 500, [&](std::int64_t i, Workspace& work) {
       const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
       const VertexState state = this->Evaluate(v, work);
       this->Types[v] = state.Type;
@@ -606,7 +602,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
 
   // Steps 3–7: rounds of super-independent sets until the target.
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
-  std::vector<std::int32_t> chosen, affected, around;
+  std::vector<std::int32_t> chosen, affected;
   std::vector<CollapsePlan> plans, applied;
   std::vector<std::uint8_t> planned;
   double fraction = std::min(1.0, std::max(1e-3, this->Options.RoundFraction));
@@ -624,7 +620,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     const std::int64_t count = static_cast<std::int64_t>(chosen.size());
     plans.resize(chosen.size());
     planned.assign(chosen.size(), 0);
-    this->ForEachInParts(count, 512, [&](std::int64_t i, Workspace& work) {
+    this->ForEachInParts(count, 2000, [&](std::int64_t i, Workspace& work) {
       planned[i] = this->Plan(chosen[i], work, plans[i]) ? 1 : 0;
     });
     // The neighbours of each removed vertex are the vertices whose triangles change.
@@ -639,6 +635,16 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         continue;
       }
       applied.push_back(plans[i]);
+      this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+        const std::int32_t* tri = this->Mesh.Triangle(t);
+        for (int k = 0; k < 3; ++k)
+        {
+          if (tri[k] != v)
+          {
+            affected.push_back(tri[k]);
+          }
+        }
+      });
       // The survivor inherits what the removed vertex measured.
       const std::int32_t kept = plans[i].Vertices[0];
       if (this->Options.Measure == ImportanceMeasure::Quadric)
@@ -650,8 +656,6 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       {
         this->Accumulated[kept] += this->Importance[v];
       }
-      this->Mesh.Neighbours(v, around);
-      affected.insert(affected.end(), around.begin(), around.end());
       this->Importance[v] = Never;
       this->Gone[v] = 1;
     }
@@ -676,6 +680,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     }
     this->Mesh.ApplyIndependent(applied, this->Context);
     std::sort(affected.begin(), affected.end());
+    affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
     evaluate(affected.data(), static_cast<std::int64_t>(affected.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));
