@@ -17,7 +17,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
-#include "vtkSMPTools.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -25,6 +24,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
 #include <thread>
 
 namespace vtkMeshSimplificationHelpers
@@ -263,6 +266,103 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVe
   return true;
 }
 
+namespace
+{
+/**
+ * Threads that live for one filter execution and share the chunks of every ParallelFor with
+ * the calling thread. VTK 9.2's STDThread backend starts its threads anew for each For (about
+ * 0.1 ms for two threads here), and the filters that work in rounds call it hundreds of times.
+ * Chunks go to whichever thread asks first; the filters write disjoint data per index, so the
+ * result does not depend on it.
+ */
+class WorkerPool
+{
+public:
+  using Body = std::function<void(std::int64_t, std::int64_t)>;
+
+  explicit WorkerPool(int threads)
+  {
+    for (int i = 1; i < threads; ++i)
+    {
+      this->Workers.emplace_back([this] { this->Serve(); });
+    }
+  }
+
+  ~WorkerPool()
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Stopping = true;
+    }
+    this->Wake.notify_all();
+    for (std::thread& worker : this->Workers)
+    {
+      worker.join();
+    }
+  }
+
+  void For(std::int64_t n, const Body& body)
+  {
+    const std::int64_t threads = static_cast<std::int64_t>(this->Workers.size()) + 1;
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      this->Job = &body;
+      this->Size = n;
+      this->Chunks = std::min(n, 4 * threads);
+      this->Next = 0;
+      this->Busy = static_cast<int>(this->Workers.size());
+      ++this->Generation;
+    }
+    this->Wake.notify_all();
+    this->Work();
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    this->Done.wait(lock, [this] { return this->Busy == 0; });
+  }
+
+private:
+  void Work()
+  {
+    for (std::int64_t chunk = this->Next++; chunk < this->Chunks; chunk = this->Next++)
+    {
+      (*this->Job)(this->Size * chunk / this->Chunks, this->Size * (chunk + 1) / this->Chunks);
+    }
+  }
+
+  void Serve()
+  {
+    std::uint64_t seen = 0;
+    for (;;)
+    {
+      {
+        std::unique_lock<std::mutex> lock(this->Mutex);
+        this->Wake.wait(lock, [&] { return this->Stopping || this->Generation != seen; });
+        if (this->Stopping)
+        {
+          return;
+        }
+        seen = this->Generation;
+      }
+      this->Work();
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      if (--this->Busy == 0)
+      {
+        this->Done.notify_one();
+      }
+    }
+  }
+
+  std::vector<std::thread> Workers;
+  std::mutex Mutex;
+  std::condition_variable Wake, Done;
+  const Body* Job = nullptr;
+  std::int64_t Size = 0, Chunks = 0;
+  std::atomic<std::int64_t> Next{ 0 };
+  int Busy = 0;
+  std::uint64_t Generation = 0;
+  bool Stopping = false;
+};
+}
+
 meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int numberOfThreads)
 {
   meshsimp::ExecutionContext context;
@@ -270,17 +370,14 @@ meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int num
   if (threads > 1)
   {
     context.Threads = threads;
-    context.ParallelFor = [threads](std::int64_t n, std::int64_t work,
-                            const std::function<void(std::int64_t, std::int64_t)>& body) {
-      if (work < 32768)
+    auto pool = std::make_shared<WorkerPool>(threads);
+    context.ParallelFor = [pool](std::int64_t n, std::int64_t work, const WorkerPool::Body& body) {
+      if (work < 131072)
       {
-        body(0, n); // too little work to pay for starting threads
+        body(0, n); // too little work to pay for waking the threads
         return;
       }
-      vtkSMPTools::LocalScope(vtkSMPTools::Config{ threads, "STDThread", false }, [&]() {
-        vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-          [&](vtkIdType begin, vtkIdType end) { body(begin, end); });
-      });
+      pool->For(n, body);
     };
   }
   context.Progress = [algorithm](double progress) {

@@ -72,8 +72,9 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVe
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);
 
-/// Threads (0 = all cores) through vtkSMPTools' STDThread backend in a local scope, so the
-/// application's global SMP setting is untouched; progress and abort through the algorithm.
+/// Threads (0 = all cores) of a worker pool that lives as long as the context, so that filters
+/// working in rounds do not start threads for every loop (VTK's SMP setting is untouched);
+/// progress and abort through the algorithm.
 meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int numberOfThreads);
 
 /// The number of threads MakeExecutionContext uses.

@@ -203,6 +203,43 @@ std::int32_t CollapseMesh::Valence(std::int32_t v, CheckScratch& scratch) const
   return triangles + (this->OnBoundary(v) ? 1 : 0);
 }
 
+void CollapseMesh::Surviving(std::vector<std::int32_t>& used, std::vector<std::int32_t>& triangles,
+  std::vector<std::int32_t>& kept) const
+{
+  const std::int32_t n = this->NumberOfPoints();
+  const std::int32_t m = this->NumberOfTriangles();
+  std::vector<std::int32_t> index(n, -1);
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (this->Alive[t])
+    {
+      index[this->Triangles[3 * t]] = index[this->Triangles[3 * t + 1]] = index[this->Triangles[3 * t + 2]] = 0;
+    }
+  }
+  used.clear();
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if (index[v] == 0)
+    {
+      index[v] = static_cast<std::int32_t>(used.size());
+      used.push_back(v);
+    }
+  }
+  triangles.clear();
+  kept.clear();
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (this->Alive[t])
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        triangles.push_back(index[this->Triangles[3 * t + k]]);
+      }
+      kept.push_back(t);
+    }
+  }
+}
+
 std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) const
 {
   std::vector<std::int32_t> list;

@@ -158,6 +158,13 @@ public:
   /// The neighbouring vertices of v that share an alive triangle with it (unsorted, unique).
   void Neighbours(std::int32_t v, std::vector<std::int32_t>& out) const;
 
+  /**
+   * What is left: the vertices of the alive triangles in vertex order (used), and the alive
+   * triangles in triangle order (their ids in kept) as 3 indices each into used.
+   */
+  void Surviving(std::vector<std::int32_t>& used, std::vector<std::int32_t>& triangles,
+    std::vector<std::int32_t>& kept) const;
+
   /// The number of neighbours of v.
   std::int32_t Valence(std::int32_t v) const { return this->Valence(v, this->Scratch); }
 

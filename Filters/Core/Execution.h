@@ -3,8 +3,8 @@
  * @file Execution.h
  * @brief How a core algorithm runs: an injected parallel-for, progress and abort.
  *
- * The core never creates threads itself. The VTK layer passes a ParallelFor built on
- * vtkSMPTools with real threads; tests and plain C++ users may leave it empty (serial).
+ * The core never creates threads itself. The VTK layer passes a ParallelFor on a pool of real
+ * threads (vtkMeshSimplificationHelpers); tests and plain C++ users may leave it empty (serial).
  * Work split by ParallelFor must write disjoint outputs so results do not depend on the
  * thread count.
  */

@@ -695,42 +695,20 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
 
 void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& result) const
 {
-  const std::int32_t n = this->Mesh.NumberOfPoints();
-  const std::int32_t m = this->Mesh.NumberOfTriangles();
-  std::vector<std::int32_t> outputIndex(n, -1);
-  for (std::int32_t t = 0; t < m; ++t)
+  // The surviving triangles and their points: input points, with their importance and type.
+  std::vector<std::int32_t> used, kept;
+  this->Mesh.Surviving(used, result.Triangles, kept);
+  for (const std::int32_t v : used)
   {
-    if (this->Mesh.IsAlive(t))
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        outputIndex[this->Mesh.Triangle(t)[k]] = 0;
-      }
-    }
-  }
-  for (std::int32_t v = 0; v < n; ++v)
-  {
-    if (outputIndex[v] < 0)
-    {
-      continue;
-    }
-    outputIndex[v] = static_cast<std::int32_t>(result.PointSource.size());
     const Vec3 p = input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
     result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] : -1.0);
     result.Types.push_back(this->Types[v]);
   }
-  for (std::int32_t t = 0; t < m; ++t)
+  for (const std::int32_t t : kept)
   {
-    if (this->Mesh.IsAlive(t))
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        result.Triangles.push_back(outputIndex[this->Mesh.Triangle(t)[k]]);
-      }
-      result.TriangleSource.push_back(this->InputTriangle[t]);
-    }
+    result.TriangleSource.push_back(this->InputTriangle[t]);
   }
 }
 

@@ -612,28 +612,11 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
 void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult& result) const
 {
   // The surviving triangles and their points, in the compact order, back in input coordinates.
-  const std::int32_t n = this->Mesh.NumberOfPoints();
-  const std::int32_t m = this->Mesh.NumberOfTriangles();
-  std::vector<std::int32_t> outputIndex(n, -1);
-  for (std::int32_t t = 0; t < m; ++t)
-  {
-    if (!this->Mesh.IsAlive(t))
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      outputIndex[this->Mesh.Triangle(t)[k]] = 0;
-    }
-  }
+  std::vector<std::int32_t> used, kept;
+  this->Mesh.Surviving(used, result.Triangles, kept);
   const double scale8 = std::pow(this->Diagonal, 8); // error units: length⁸ (eq. 4–5)
-  for (std::int32_t v = 0; v < n; ++v)
+  for (const std::int32_t v : used)
   {
-    if (outputIndex[v] < 0)
-    {
-      continue;
-    }
-    outputIndex[v] = static_cast<std::int32_t>(result.PointSource.size());
     // Points no collapse moved keep their input coordinates bit for bit.
     const Vec3 p = this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale + this->Origin)
                                   : input.Point(this->InputVertex[v]);
@@ -641,16 +624,9 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
     result.PointSource.push_back(this->InputVertex[v]);
     result.PointError.push_back(this->VertexError[v] * scale8);
   }
-  for (std::int32_t t = 0; t < m; ++t)
+  for (const std::int32_t t : kept)
   {
-    if (this->Mesh.IsAlive(t))
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        result.Triangles.push_back(outputIndex[this->Mesh.Triangle(t)[k]]);
-      }
-      result.TriangleSource.push_back(this->InputTriangle[t]);
-    }
+    result.TriangleSource.push_back(this->InputTriangle[t]);
   }
   result.Records = this->Mesh.Records();
   for (CollapseRecord& record : result.Records)

@@ -14,10 +14,12 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TestHelpers.h"
 
+#include <array>
 #include <cmath>
 #include <set>
 #include <string>
@@ -131,6 +133,53 @@ inline void CheckCarriedData(vtkPolyData* cow, vtkPolyData* out)
   CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
   CHECK(out->GetCellData()->GetNormals() != nullptr);
 }
+/// The coordinates of a mesh's points, to look points up exactly.
+inline std::set<std::array<double, 3>> PointSet(vtkPolyData* mesh)
+{
+  std::set<std::array<double, 3>> points;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    mesh->GetPoint(i, p.data());
+    points.insert(p);
+  }
+  return points;
+}
+
+/// An open mesh (a 64 × 64 hemisphere) simplified to 500 triangles with PreserveBoundary: the
+/// count within countTolerance, and every rim point (z = 0) still there.
+template <typename Filter>
+void CheckPreservedRim(double countTolerance)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(64);
+  source->SetPhiResolution(64);
+  source->SetEndPhi(90);
+  source->Update();
+  vtkPolyData* cap = source->GetOutput();
+  vtkNew<Filter> filter;
+  filter->SetInputData(cap);
+  filter->SetTargetModeToTriangleCount();
+  filter->SetTargetTriangleCount(500);
+  filter->PreserveBoundaryOn();
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  CHECK(std::abs(out->GetNumberOfPolys() - 500) <= countTolerance * 500);
+  const std::set<std::array<double, 3>> outputPoints = PointSet(out);
+  int rim = 0;
+  for (vtkIdType i = 0; i < cap->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    cap->GetPoint(i, p.data());
+    if (std::abs(p[2]) < 1e-9)
+    {
+      ++rim;
+      CHECK(outputPoints.count(p) == 1);
+    }
+  }
+  CHECK(rim >= 64);
+}
+
 /// The same output whatever the thread count (1, 2, 4), and the input untouched. run(threads)
 /// runs the filter under test on cow and returns its output.
 template <typename Run>
