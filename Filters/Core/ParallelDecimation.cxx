@@ -157,8 +157,7 @@ private:
     }, workPerItem * count);
   }
 
-  const ParallelDecimationOptions& Options;
-  const ExecutionContext& Context;
+  /// The angles in force (raised by relaxation) and their cosines.
   void SetAngles(double feature, double deviation)
   {
     this->FeatureAngle = std::min(180.0, std::max(0.0, feature));
@@ -166,6 +165,9 @@ private:
     this->CosFeature = std::cos(this->FeatureAngle * Pi / 180.0);
     this->CosDeviation = std::cos(this->DeviationAngle * Pi / 180.0);
   }
+
+  const ParallelDecimationOptions& Options;
+  const ExecutionContext& Context;
   double FeatureAngle = 0.0, DeviationAngle = 0.0, CosFeature = 1.0, CosDeviation = 1.0;
   CollapseMesh Mesh;
   std::vector<std::int32_t> InputVertex, InputTriangle;
