@@ -241,6 +241,10 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVe
   if (selection->Has(vtkDataObject::FIELD_NAME()))
   {
     name = selection->Get(vtkDataObject::FIELD_NAME());
+    if (name.empty() || name == "None")
+    {
+      return false; // ParaView's "no array" choice
+    }
     array = input->GetPointData()->GetArray(name.c_str());
   }
   else if (selection->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))

@@ -64,8 +64,8 @@ void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleI
   const std::vector<std::int32_t>& sourceTriangles, int outputPointsPrecision);
 
 /// User-chosen locks: one flag per input point, nonzero where input array 0 (if one is selected)
-/// is nonzero. False, with a warning when the selected array is not a point array of the input,
-/// when there is none.
+/// is nonzero. False when none is selected (no name, or ParaView's "None"), and with a warning
+/// when the selected array is not a point array of the input.
 bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVector** inputVector,
   std::vector<std::uint8_t>& locked);
 

@@ -6,7 +6,9 @@
 #include "vtkParallelDecimation.h"
 
 #include "vtkFeatureEdges.h"
+#include "vtkCommand.h"
 #include "vtkFieldData.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TestVTKHelpers.h"
@@ -145,6 +147,19 @@ void TestLocks(vtkPolyData* cow)
     CHECK(outputIds.count(p) == 1);
   }
   CHECK(std::abs(filter->GetOutput()->GetNumberOfPolys() - 580) <= 12);
+
+  // ParaView's "None" selects no array, silently; a name that is no point array warns.
+  for (const char* name : { "None", "Nope" })
+  {
+    vtkNew<vtkTest::ErrorObserver> observer;
+    vtkNew<vtkParallelDecimation> selected;
+    selected->SetInputData(marked);
+    selected->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name);
+    selected->AddObserver(vtkCommand::WarningEvent, observer);
+    selected->Update();
+    CHECK(observer->GetWarning() == (std::string(name) == "Nope"));
+    CHECK(std::abs(selected->GetOutput()->GetNumberOfPolys() - 580) <= 12);
+  }
 }
 }
 
