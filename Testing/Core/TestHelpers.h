@@ -4,9 +4,12 @@
 #ifndef MeshSimplification_TestHelpers_h
 #define MeshSimplification_TestHelpers_h
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -27,6 +30,30 @@ inline int& Failures()
       ++meshsimp_test::Failures();                                                                 \
     }                                                                                              \
   } while (false)
+
+/// An execution context (meshsimp::ExecutionContext; a template so that this header needs no
+/// core include) whose ParallelFor runs count real threads, one contiguous chunk each: results
+/// must not depend on the thread count.
+template <typename Context>
+Context Threaded(int count)
+{
+  Context context;
+  context.Threads = count;
+  context.ParallelFor = [count](std::int64_t n, std::int64_t,
+                          const std::function<void(std::int64_t, std::int64_t)>& body) {
+    std::vector<std::thread> threads;
+    const std::int64_t chunk = (n + count - 1) / count;
+    for (std::int64_t begin = 0; begin < n; begin += chunk)
+    {
+      threads.emplace_back([&body, begin, end = std::min(n, begin + chunk)] { body(begin, end); });
+    }
+    for (std::thread& thread : threads)
+    {
+      thread.join();
+    }
+  };
+  return context;
+}
 
 /// Runs the named tests and prints "N passed, M failed".
 inline int RunTests(const std::vector<std::pair<std::string, std::function<void()>>>& tests)

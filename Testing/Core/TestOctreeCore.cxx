@@ -363,23 +363,7 @@ void SameResultForAnyThreadCount()
       body(begin, std::min(n, begin + chunk));
     }
   };
-  auto threaded = [](int count) {
-    meshsimp::ExecutionContext context;
-    context.ParallelFor = [count](std::int64_t n, std::int64_t,
-                            const std::function<void(std::int64_t, std::int64_t)>& body) {
-      std::vector<std::thread> threads;
-      const std::int64_t chunk = (n + count - 1) / count;
-      for (std::int64_t begin = 0; begin < n; begin += chunk)
-      {
-        threads.emplace_back([&body, begin, end = std::min(n, begin + chunk)] { body(begin, end); });
-      }
-      for (std::thread& thread : threads)
-      {
-        thread.join();
-      }
-    };
-    return context;
-  };
+  auto threaded = meshsimp_test::Threaded<meshsimp::ExecutionContext>;
   const std::pair<const Mesh*, OctreeClusteringOptions> cases[] = { { &cube, Target(100) },
     { &sheet, Target(4000) }, { &sheet, bounded } };
   for (const auto& c : cases)

@@ -8,7 +8,6 @@
 
 #include <map>
 #include <random>
-#include <thread>
 
 using meshsimp::DecimationVertexType;
 using meshsimp::ParallelDecimationOptions;
@@ -21,27 +20,6 @@ ParallelDecimationOptions Reduction(double reduction)
   ParallelDecimationOptions options;
   options.TargetReduction = reduction;
   return options;
-}
-
-/// A context with count real threads, one contiguous chunk each.
-meshsimp::ExecutionContext Threaded(int count)
-{
-  meshsimp::ExecutionContext context;
-  context.Threads = count;
-  context.ParallelFor = [count](std::int64_t n, std::int64_t,
-                          const std::function<void(std::int64_t, std::int64_t)>& body) {
-    std::vector<std::thread> threads;
-    const std::int64_t chunk = (n + count - 1) / count;
-    for (std::int64_t begin = 0; begin < n; begin += chunk)
-    {
-      threads.emplace_back([&body, begin, end = std::min(n, begin + chunk)] { body(begin, end); });
-    }
-    for (std::thread& thread : threads)
-    {
-      thread.join();
-    }
-  };
-  return context;
 }
 
 /// Edge → number of triangles using it, over an output triangle list.
@@ -203,7 +181,7 @@ void SameResultForAnyThreadCount()
       for (const int threads : { 2, 4 })
       {
         ParallelDecimationResult other;
-        CHECK(meshsimp::ParallelDecimation(mesh->View(), options, other, Threaded(threads)));
+        CHECK(meshsimp::ParallelDecimation(mesh->View(), options, other, meshsimp_test::Threaded<meshsimp::ExecutionContext>(threads)));
         CHECK(serial.Points == other.Points);
         CHECK(serial.Triangles == other.Triangles);
         CHECK(serial.Importance == other.Importance);
@@ -211,7 +189,7 @@ void SameResultForAnyThreadCount()
     }
     ParallelDecimationResult serial, threaded;
     CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), serial));
-    CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), threaded, Threaded(3)));
+    CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), threaded, meshsimp_test::Threaded<meshsimp::ExecutionContext>(3)));
     CHECK(serial.Triangles == threaded.Triangles);
   }
 }

@@ -5,7 +5,6 @@
 // independence, input untouched.
 #include "vtkParallelDecimation.h"
 
-#include "vtkFeatureEdges.h"
 #include "vtkCommand.h"
 #include "vtkFieldData.h"
 #include "vtkTestErrorObserver.h"
@@ -19,18 +18,6 @@
 
 namespace
 {
-vtkIdType OpenEdges(vtkPolyData* mesh)
-{
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(mesh);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfLines();
-}
-
 /// Input point id by exact coordinates.
 std::map<std::array<double, 3>, vtkIdType> PointIds(vtkPolyData* mesh)
 {
@@ -60,7 +47,7 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
       vtkPolyData* out = filter->GetOutput();
       const double target = std::round(inputTriangles * (1 - reduction));
       CHECK(std::abs(out->GetNumberOfPolys() - target) <= 0.02 * target);
-      CHECK(OpenEdges(out) == 0);
+      CHECK(meshsimp_test::OpenEdges(out) == 0);
       meshsimp_test::CheckCarriedData(cow, out);
 
       // Every output point is an input point with that point's own data.
@@ -103,7 +90,7 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
   shortest->SetHalfEdgeChoice(vtkParallelDecimation::SHORTEST_EDGE);
   shortest->Update();
   CHECK(std::abs(shortest->GetOutput()->GetNumberOfPolys() - 580) <= 12);
-  CHECK(OpenEdges(shortest->GetOutput()) == 0);
+  CHECK(meshsimp_test::OpenEdges(shortest->GetOutput()) == 0);
 }
 
 void TestThreads(vtkPolyData* cow)

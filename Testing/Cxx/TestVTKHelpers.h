@@ -6,6 +6,7 @@
 #include "vtkCellData.h"
 #include "vtkMath.h"
 #include "vtkDoubleArray.h"
+#include "vtkFeatureEdges.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
@@ -133,6 +134,19 @@ inline void CheckCarriedData(vtkPolyData* cow, vtkPolyData* out)
   CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
   CHECK(out->GetCellData()->GetNormals() != nullptr);
 }
+/// Boundary plus non-manifold edges: zero for a closed 2-manifold.
+inline vtkIdType OpenEdges(vtkPolyData* mesh)
+{
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(mesh);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfLines();
+}
+
 /// The coordinates of a mesh's points, to look points up exactly.
 inline std::set<std::array<double, 3>> PointSet(vtkPolyData* mesh)
 {

@@ -5,7 +5,6 @@
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkCellArray.h"
-#include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
 #include "vtkMassProperties.h"
 #include "vtkMath.h"
@@ -22,23 +21,10 @@
 
 namespace
 {
-/// Boundary plus non-manifold edges: zero for a closed 2-manifold.
-vtkIdType OpenEdges(vtkPolyData* mesh)
-{
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(mesh);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfLines();
-}
-
 void TestTargetsAndAttributes(vtkPolyData* cow)
 {
   const double inputTriangles = cow->GetNumberOfPolys();
-  CHECK(OpenEdges(cow) == 0);
+  CHECK(meshsimp_test::OpenEdges(cow) == 0);
   for (const double reduction : { 0.5, 0.7, 0.9, 0.95 })
   {
     vtkNew<vtkVolumeTriangleCollapse> filter;
@@ -49,7 +35,7 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
     const double target = std::round(inputTriangles * (1 - reduction));
     CHECK(std::abs(out->GetNumberOfPolys() - target) <= 0.01 * target);
     CHECK(out->GetNumberOfPolys() == out->GetNumberOfCells());
-    CHECK(OpenEdges(out) == 0);
+    CHECK(meshsimp_test::OpenEdges(out) == 0);
 
     meshsimp_test::CheckCarriedData(cow, out);
     vtkPointData* pd = out->GetPointData();
@@ -102,7 +88,7 @@ void TestSphereVolume()
   std::cout << "sphere volume change at 90 %: ours " << oursChange << ", vtkQuadricDecimation "
             << quadricChange << "\n";
   CHECK(oursChange < quadricChange);
-  CHECK(OpenEdges(ours->GetOutput()) == 0);
+  CHECK(meshsimp_test::OpenEdges(ours->GetOutput()) == 0);
 }
 
 void TestThreadsAndInput(vtkPolyData* cow)
