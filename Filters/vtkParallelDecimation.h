@@ -107,7 +107,7 @@ public:
   ///@{
   /**
    * Degrees between the normals of an edge's two triangles above which the edge is sharp
-   * (default 60). Lower values keep more creases and corners.
+   * (default 75). Lower values keep more creases and corners.
    */
   vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
@@ -142,7 +142,7 @@ public:
   /**
    * The edge an AVERAGE_PLANE vertex collapses along: LEAST_AREA_CHANGE (default, §5.3) among
    * those that turn no remaining triangle by more than MaximumNormalDeviation degrees (default
-   * 45; also a limit for QUADRIC), or SHORTEST_EDGE (§5.5).
+   * 90; also a limit for QUADRIC), or SHORTEST_EDGE (§5.5).
    */
   vtkSetClampMacro(HalfEdgeChoice, int, LEAST_AREA_CHANGE, SHORTEST_EDGE);
   vtkGetMacro(HalfEdgeChoice, int);
@@ -201,13 +201,13 @@ protected:
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;
   vtkIdType TargetTriangleCount = 1000;
-  double FeatureAngle = 60.0;
+  double FeatureAngle = 75.0;
   bool PreserveBoundary = false;
   double BoundaryCornerAngle = 60.0;
   int ImportanceMeasure = QUADRIC;
   bool AccumulateError = true;
   int HalfEdgeChoice = LEAST_AREA_CHANGE;
-  double MaximumNormalDeviation = 45.0;
+  double MaximumNormalDeviation = 90.0;
   double BucketImportance = 0.02;
   double BucketShare = 0.8;
   double RoundFraction = 0.1;
