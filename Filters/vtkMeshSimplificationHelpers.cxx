@@ -231,8 +231,7 @@ int ResolveThreadCount(int numberOfThreads)
                              : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVector**,
-  std::vector<std::uint8_t>& locked)
+bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std::uint8_t>& locked)
 {
   // Input array 0, as SetInputArrayToProcess or the XML's "Locked Points" selected it.
   vtkInformation* selection = filter->GetInputArrayInformation(0);

@@ -21,7 +21,6 @@
 class vtkAlgorithm;
 class vtkCellArray;
 class vtkDataArray;
-class vtkInformationVector;
 class vtkPoints;
 class vtkPolyData;
 
@@ -66,8 +65,7 @@ void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleI
 /// User-chosen locks: one flag per input point, nonzero where input array 0 (if one is selected)
 /// is nonzero. False when none is selected (no name, or ParaView's "None"), and with a warning
 /// when the selected array is not a point array of the input.
-bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, vtkInformationVector** inputVector,
-  std::vector<std::uint8_t>& locked);
+bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std::uint8_t>& locked);
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);

@@ -52,7 +52,7 @@ int vtkParallelDecimation::RequestData(
   options.BucketShare = this->BucketShare;
   options.RoundFraction = this->RoundFraction;
   std::vector<std::uint8_t> locked;
-  if (vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, inputVector, locked))
+  if (vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, locked))
   {
     options.LockedPoints = locked.data();
   }

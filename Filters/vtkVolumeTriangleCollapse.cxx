@@ -94,7 +94,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   options.MinimumAngle = this->MinimumAngle;
 
   std::vector<std::uint8_t> locked;
-  if (vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, inputVector, locked))
+  if (vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, locked))
   {
     options.LockedPoints = locked.data();
   }

@@ -8,7 +8,6 @@
 #include "vtkCommand.h"
 #include "vtkFieldData.h"
 #include "vtkTestErrorObserver.h"
-#include "vtkUnsignedCharArray.h"
 
 #include "TestVTKHelpers.h"
 
@@ -112,16 +111,7 @@ void TestThreads(vtkPolyData* cow)
 void TestLocks(vtkPolyData* cow)
 {
   // Locked points stay.
-  vtkNew<vtkPolyData> marked;
-  marked->ShallowCopy(cow);
-  vtkNew<vtkUnsignedCharArray> locks;
-  locks->SetName("Locked");
-  locks->SetNumberOfValues(cow->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
-  {
-    locks->SetValue(i, i % 40 == 0 ? 1 : 0);
-  }
-  marked->GetPointData()->AddArray(locks);
+  vtkSmartPointer<vtkPolyData> marked = meshsimp_test::WithLockArray(cow, 40);
   vtkNew<vtkParallelDecimation> filter;
   filter->SetInputData(marked);
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked");

@@ -147,6 +147,22 @@ inline vtkIdType OpenEdges(vtkPolyData* mesh)
   return edges->GetOutput()->GetNumberOfLines();
 }
 
+/// A shallow copy of mesh with a point array "Locked" that is 1 on every step-th point.
+inline vtkSmartPointer<vtkPolyData> WithLockArray(vtkPolyData* mesh, vtkIdType step)
+{
+  auto marked = vtkSmartPointer<vtkPolyData>::New();
+  marked->ShallowCopy(mesh);
+  vtkNew<vtkUnsignedCharArray> locks;
+  locks->SetName("Locked");
+  locks->SetNumberOfValues(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    locks->SetValue(i, i % step == 0 ? 1 : 0);
+  }
+  marked->GetPointData()->AddArray(locks);
+  return marked;
+}
+
 /// The coordinates of a mesh's points, to look points up exactly.
 inline std::set<std::array<double, 3>> PointSet(vtkPolyData* mesh)
 {

@@ -10,7 +10,6 @@
 #include "vtkMath.h"
 #include "vtkQuadricDecimation.h"
 #include "vtkSphereSource.h"
-#include "vtkUnsignedCharArray.h"
 
 #include "TestVTKHelpers.h"
 
@@ -106,16 +105,7 @@ void TestThreadsAndInput(vtkPolyData* cow)
 void TestLockedPoints(vtkPolyData* cow)
 {
   // Every 40th point locked by a point array selected as input array 0: each stays, exactly.
-  vtkNew<vtkPolyData> marked;
-  marked->ShallowCopy(cow);
-  vtkNew<vtkUnsignedCharArray> locks;
-  locks->SetName("Locked");
-  locks->SetNumberOfValues(cow->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
-  {
-    locks->SetValue(i, i % 40 == 0 ? 1 : 0);
-  }
-  marked->GetPointData()->AddArray(locks);
+  vtkSmartPointer<vtkPolyData> marked = meshsimp_test::WithLockArray(cow, 40);
   vtkNew<vtkVolumeTriangleCollapse> filter;
   filter->SetInputData(marked);
   filter->SetTargetReduction(0.9);
