@@ -373,14 +373,20 @@ meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int num
   if (threads > 1)
   {
     context.Threads = threads;
-    auto pool = std::make_shared<WorkerPool>(threads);
-    context.ParallelFor = [pool](std::int64_t n, std::int64_t work, const WorkerPool::Body& body) {
+    // The threads start with the first loop worth them: small inputs never pay for them.
+    auto pool = std::make_shared<std::unique_ptr<WorkerPool>>();
+    context.ParallelFor = [pool, threads](
+                            std::int64_t n, std::int64_t work, const WorkerPool::Body& body) {
       if (work < 131072)
       {
         body(0, n); // too little work to pay for waking the threads
         return;
       }
-      pool->For(n, body);
+      if (!*pool)
+      {
+        *pool = std::make_unique<WorkerPool>(threads);
+      }
+      (*pool)->For(n, body);
     };
   }
   context.Progress = [algorithm](double progress) {
