@@ -8,8 +8,26 @@
 
 namespace meshsimp
 {
+namespace
+{
+/// The input's arrays with their element types fixed, so the loops below need no per-element
+/// test of which arrays the view holds.
+template <typename PointType, typename IdType>
+struct TypedView
+{
+  const PointType* Points;
+  const IdType* Ids;
+  std::int64_t NumberOfPoints, NumberOfTriangles;
+  Eigen::Vector3d Point(std::int64_t i) const
+  {
+    return { static_cast<double>(this->Points[3 * i]), static_cast<double>(this->Points[3 * i + 1]),
+      static_cast<double>(this->Points[3 * i + 2]) };
+  }
+  std::int64_t Id(std::int64_t i) const { return static_cast<std::int64_t>(this->Ids[i]); }
+};
 
-CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context)
+template <typename PointType, typename IdType>
+CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const ExecutionContext& context)
 {
   const std::int64_t n = input.NumberOfPoints;
   const std::int64_t m = input.NumberOfTriangles;
@@ -167,6 +185,21 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
     }
   }
   return mesh;
+}
+} // namespace
+
+CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context)
+{
+  const std::int64_t n = input.NumberOfPoints, m = input.NumberOfTriangles;
+  if (input.Points)
+  {
+    return input.Triangles
+      ? BuildCompactMesh(TypedView<double, std::int32_t>{ input.Points, input.Triangles, n, m }, context)
+      : BuildCompactMesh(TypedView<double, long long>{ input.Points, input.Triangles64, n, m }, context);
+  }
+  return input.Triangles
+    ? BuildCompactMesh(TypedView<float, std::int32_t>{ input.FloatPoints, input.Triangles, n, m }, context)
+    : BuildCompactMesh(TypedView<float, long long>{ input.FloatPoints, input.Triangles64, n, m }, context);
 }
 
 } // namespace meshsimp
