@@ -90,11 +90,13 @@ public:
 
 private:
   /// Per-thread scratch of EvaluateLeaf, indexed by position in the leaf: the union-find of
-  /// its components and the members of each cluster (CSR).
+  /// its components and the members of each cluster (CSR); and of ScanLeaf.
   struct Scratch
   {
     std::vector<std::int32_t> Parent, Root;
     std::vector<std::int32_t> Offsets, Fill, Members;
+    std::vector<std::uint8_t> Survives;    // per cluster of the leaf
+    std::vector<std::int32_t> Neighbours; // (cluster, neighbouring cluster) pairs
   };
 
   /// ε in the normalised coordinates.
@@ -132,7 +134,7 @@ private:
   /// flip test of its heap entry; always, the triangles with three distinct clusters that have
   /// another corner in [countBegin, countEnd), each counted from its first corner there.
   LeafScan ScanLeaf(std::int32_t node, bool forEntry, std::int32_t countBegin,
-    std::int32_t countEnd) const;
+    std::int32_t countEnd, Scratch& scratch) const;
   HeapEntry MakeEntry(std::int32_t node, double error, const LeafScan& scan, bool counting) const;
   void SetKey(HeapEntry& entry, bool counting) const;
   Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
@@ -202,6 +204,7 @@ private:
   std::vector<double> VertexWeights; // a third of the incident area
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
   std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot, empty without boundary planes
+  std::vector<std::uint8_t> BoundaryVertices; // per vertex: one of its slots has a flag
 
   // Octree: every node owns a contiguous range of Order (the compact mesh's vertices, in its
   // spatial order within a leaf); Position is the inverse permutation.
@@ -215,7 +218,9 @@ private:
   std::vector<Vec3> ClusterPositions;
   std::vector<std::int32_t> ClusterNodes;
 
-  std::vector<std::int32_t> Reordered; // PartitionNode's scratch, indexed by Order position
+  // PartitionNode's scratch, indexed by Order position.
+  std::vector<std::int32_t> Reordered;
+  std::vector<std::uint8_t> Octants;
 
   // Every split, so that splits can be undone last-first: an overshooting one, or cheap late
   // ones that make room for a leaf of much larger error (see Refine).
@@ -301,10 +306,12 @@ void Clusterer::PrepareQuadrics()
   if (this->Options.BoundaryPlanes)
   {
     this->BoundaryCorners.resize(this->Adjacency.Corners.size());
+    this->BoundaryVertices.resize(n);
   }
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
+      // Every plane passes through P[v]: the face planes and the boundary planes of v's edges.
       Quadric q;
       double weight = 0.0;
       Vec3 areaNormal = Vec3::Zero();
@@ -312,29 +319,31 @@ void Clusterer::PrepareQuadrics()
       {
         const Vec3& normal = this->TriangleNormals[c->Triangle];
         const double third = this->TriangleAreas[c->Triangle] / 3.0;
-        q += Quadric::FromPlane(normal, -normal.dot(this->P[v]), third);
+        q.AddNormal(normal, third);
         weight += third;
         areaNormal += third * normal;
       }
       if (this->Options.BoundaryPlanes)
       {
         std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
-        MarkBoundaryCorners(this->Adjacency, v, flags);
-        for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c, ++flags)
+        this->BoundaryVertices[v] = MarkBoundaryCorners(this->Adjacency, v, flags) ? 1 : 0;
+        for (const Corner* c = this->Adjacency.Begin(v);
+             this->BoundaryVertices[v] && c != this->Adjacency.End(v); ++c, ++flags)
         {
           double edgeWeight;
           if (*flags & OutgoingBoundaryEdge)
           {
             const Plane plane = this->BoundaryPlane(static_cast<std::int32_t>(v), c->Next, c->Triangle, edgeWeight);
-            q += Quadric::FromPlane(plane.Normal, plane.Offset, 0.5 * edgeWeight);
+            q.AddNormal(plane.Normal, 0.5 * edgeWeight);
           }
           if (*flags & IncomingBoundaryEdge)
           {
             const Plane plane = this->BoundaryPlane(c->Previous, static_cast<std::int32_t>(v), c->Triangle, edgeWeight);
-            q += Quadric::FromPlane(plane.Normal, plane.Offset, 0.5 * edgeWeight);
+            q.AddNormal(plane.Normal, 0.5 * edgeWeight);
           }
         }
       }
+      q.ThroughPoint(this->P[v]);
       this->VertexQuadrics[v] = q;
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
@@ -484,7 +493,7 @@ double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::
     {
       error = std::max(error, std::abs(this->TriangleNormals[c->Triangle].dot(offset)));
     }
-    if (this->BoundaryCorners.empty())
+    if (this->BoundaryVertices.empty() || !this->BoundaryVertices[v])
     {
       continue;
     }
@@ -606,14 +615,17 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
 }
 
 LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t countBegin,
-  std::int32_t countEnd) const
+  std::int32_t countEnd, Scratch& scratch) const
 {
   const OctreeNode& cell = this->Nodes[node];
   const std::int32_t begin = cell.Begin, end = cell.End;
   const bool flips = forEntry && this->Options.PreventFlips;
+  const std::uint32_t countSpan = static_cast<std::uint32_t>(countEnd - countBegin);
   LeafScan scan;
-  std::vector<std::uint8_t> survives(forEntry ? cell.ClusterCount : 0, 0);
-  std::vector<std::int32_t> neighbours; // (cluster, neighbouring cluster) pairs
+  std::vector<std::uint8_t>& survives = scratch.Survives;
+  std::vector<std::int32_t>& neighbours = scratch.Neighbours;
+  survives.assign(forEntry ? cell.ClusterCount : 0, 0);
+  neighbours.clear();
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
@@ -627,8 +639,8 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
       const bool distinct = c0 != c1 && c1 != c2 && c0 != c2;
 
       // The count: each triangle once, from its first corner in the count range.
-      const bool nextCounted = next >= countBegin && next < countEnd;
-      const bool previousCounted = previous >= countBegin && previous < countEnd;
+      const bool nextCounted = static_cast<std::uint32_t>(next - countBegin) < countSpan;
+      const bool previousCounted = static_cast<std::uint32_t>(previous - countBegin) < countSpan;
       if ((nextCounted || previousCounted) && !(nextCounted && next < i) &&
         !(previousCounted && previous < i))
       {
@@ -765,15 +777,15 @@ std::int32_t Clusterer::PartitionNode(std::int32_t node)
   std::array<std::int32_t, 9> start{};
   for (std::int32_t i = begin; i < end; ++i)
   {
-    ++start[octant(this->Order[i]) + 1];
+    this->Octants[i] = static_cast<std::uint8_t>(octant(this->Order[i]));
+    ++start[this->Octants[i] + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   std::array<std::int32_t, 8> fill;
   std::copy(start.begin(), start.begin() + 8, fill.begin());
   for (std::int32_t i = begin; i < end; ++i)
   {
-    const std::int32_t v = this->Order[i];
-    this->Reordered[begin + fill[octant(v)]++] = v;
+    this->Reordered[begin + fill[this->Octants[i]]++] = this->Order[i];
   }
   for (std::int32_t i = begin; i < end; ++i)
   {
@@ -827,11 +839,12 @@ std::int32_t Clusterer::ClusterLeaves(std::vector<NewLeaf>& leaves, std::int32_t
   this->ClusterPositions.resize(first);
   this->ClusterNodes.resize(first);
   this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
+    Scratch scratch;
     for (std::int64_t k = b; k < e; ++k)
     {
       NewLeaf& leaf = leaves[k];
       const bool forEntry = leaf.Splittable && leaf.Key != ForcedSplitKey;
-      leaf.Scan = this->ScanLeaf(leaf.Node, forEntry, leaf.CountBegin, leaf.CountEnd);
+      leaf.Scan = this->ScanLeaf(leaf.Node, forEntry, leaf.CountBegin, leaf.CountEnd, scratch);
     }
   }, work);
   return first;
@@ -983,7 +996,8 @@ bool Clusterer::Refine(std::int64_t target, double bound)
       {
         // Neighbours split since the leaf was queued may have brought its clusters back.
         HeapEntry entry = top;
-        entry.Vanishing = this->ScanLeaf(top.Node, true, 0, 0).Vanishing;
+        Scratch scratch;
+        entry.Vanishing = this->ScanLeaf(top.Node, true, 0, 0, scratch).Vanishing;
         this->SetKey(entry, counting);
         if (entry.Key < top.Key)
         {
@@ -1343,6 +1357,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   }
   this->VertexCluster.assign(n, -1);
   this->Reordered.resize(this->Order.size());
+  this->Octants.resize(this->Order.size());
 
   OctreeNode root;
   // The bounding cube of the normalised points (a margin covers their rounding).

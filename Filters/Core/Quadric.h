@@ -41,6 +41,30 @@ struct Quadric
     return q;
   }
 
+  /// Adds the 3x3 part w · n nᵀ of a plane with unit normal n (eq. 7) when every plane of the
+  /// quadric passes through one point: ThroughPoint then gives b and c. Half the work of FromPlane.
+  void AddNormal(const Eigen::Vector3d& n, double w)
+  {
+    const Eigen::Vector3d wn = w * n;
+    A00 += wn.x() * n.x();
+    A01 += wn.x() * n.y();
+    A02 += wn.x() * n.z();
+    A11 += wn.y() * n.y();
+    A12 += wn.y() * n.z();
+    A22 += wn.z() * n.z();
+  }
+
+  /// Completes a quadric built by AddNormal with planes through p: d = −nᵀp for each, so
+  /// b = Σ w d n = −A p and c = Σ w d² = pᵀ A p.
+  void ThroughPoint(const Eigen::Vector3d& p)
+  {
+    const Eigen::Vector3d ap = this->A() * p;
+    B0 = -ap.x();
+    B1 = -ap.y();
+    B2 = -ap.z();
+    C = p.dot(ap);
+  }
+
   Quadric& operator+=(const Quadric& o)
   {
     A00 += o.A00;
@@ -90,24 +114,30 @@ struct Quadric
 };
 
 /**
- * Minimise Q (eq. 2–3) when its 3x3 block is well conditioned.
- * Conditioning is judged from the eigenvalues of A, not from det(A): the solve is accepted only
- * when λmin > relativeTolerance · λmax, so a nearly planar or nearly cylindrical set of planes
- * (rank 1 or 2) is reported as singular instead of producing a far-away point.
+ * Minimise Q (eq. 2–3) when its 3x3 block is well conditioned, judged without eigenvalues:
+ * with the cofactors of A, det(A) / (tr(A) · Σ principal 2x2 minors) lies within
+ * [λmin / 9λmax, λmin / λmax] (det / Σ minors ∈ [λmin / 3, λmin], tr ∈ [λmax, 3λmax]). The solve
+ * is accepted only when that ratio exceeds relativeTolerance, so a nearly planar or nearly
+ * cylindrical set of planes (rank 1 or 2) is reported as singular instead of producing a
+ * far-away point; the adjugate then solves it.
  */
 inline bool MinimizeQuadric(const Quadric& q, Eigen::Vector3d& x, double relativeTolerance = 1e-6)
 {
-  const Eigen::Matrix3d a = q.A();
-  // The closed-form eigenvalues suffice to judge conditioning; the solve itself uses a pivoted
-  // LDLT, which is accurate to round-off where the closed-form eigenvectors are not.
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(a, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
-  if (!(lambda(2) > 0.0) || !(lambda(0) > relativeTolerance * lambda(2)))
+  const double trace = q.A00 + q.A11 + q.A22;
+  const double c00 = q.A11 * q.A22 - q.A12 * q.A12;
+  const double c01 = q.A02 * q.A12 - q.A01 * q.A22;
+  const double c02 = q.A01 * q.A12 - q.A02 * q.A11;
+  const double c11 = q.A00 * q.A22 - q.A02 * q.A02;
+  const double c12 = q.A01 * q.A02 - q.A00 * q.A12;
+  const double c22 = q.A00 * q.A11 - q.A01 * q.A01;
+  const double det = q.A00 * c00 + q.A01 * c01 + q.A02 * c02;
+  if (!(trace > 0.0) || !(det > relativeTolerance * trace * (c00 + c11 + c22)))
   {
     return false;
   }
-  x = a.ldlt().solve(-q.B());
+  const double s = -1.0 / det;
+  x = Eigen::Vector3d(s * (c00 * q.B0 + c01 * q.B1 + c02 * q.B2),
+    s * (c01 * q.B0 + c11 * q.B1 + c12 * q.B2), s * (c02 * q.B0 + c12 * q.B1 + c22 * q.B2));
   return x.allFinite();
 }
 
@@ -127,25 +157,9 @@ inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eige
     x = x0; // no planes at all
     return 0;
   }
-  // Well conditioned: with the cofactors of A, det(A) / (tr(A) · Σ principal 2x2 minors) lies
-  // within [λmin / 9λmax, λmin / λmax] (det / Σ minors ∈ [λmin / 3, λmin], tr ∈ [λmax, 3λmax]),
-  // so the ratio judges conditioning without any eigenvalue, and the adjugate solves it.
-  const double c00 = q.A11 * q.A22 - q.A12 * q.A12;
-  const double c01 = q.A02 * q.A12 - q.A01 * q.A22;
-  const double c02 = q.A01 * q.A12 - q.A02 * q.A11;
-  const double c11 = q.A00 * q.A22 - q.A02 * q.A02;
-  const double c12 = q.A01 * q.A02 - q.A00 * q.A12;
-  const double c22 = q.A00 * q.A11 - q.A01 * q.A01;
-  const double det = q.A00 * c00 + q.A01 * c01 + q.A02 * c02;
-  if (det > relativeTolerance * a.trace() * (c00 + c11 + c22))
+  if (MinimizeQuadric(q, x, relativeTolerance))
   {
-    const double s = -1.0 / det;
-    x = Eigen::Vector3d(s * (c00 * q.B0 + c01 * q.B1 + c02 * q.B2),
-      s * (c01 * q.B0 + c11 * q.B1 + c12 * q.B2), s * (c02 * q.B0 + c12 * q.B1 + c22 * q.B2));
-    if (x.allFinite())
-    {
-      return 3;
-    }
+    return 3;
   }
   // Rank-deficient: closed-form eigenvectors are accurate enough for the directions kept.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;

@@ -118,12 +118,12 @@ enum BoundaryCorner : std::uint8_t
 };
 
 /**
- * Writes the BoundaryCorner flags of every corner slot around v to flags[0 .. degree(v)). An
- * edge shared by three or more triangles, or by two of opposite orientations, is not a
- * boundary. Works one vertex at a time, so callers fuse it into their own vertex loops and
- * vertices can be processed concurrently.
+ * Writes the BoundaryCorner flags of every corner slot around v to flags[0 .. degree(v)) and
+ * returns whether any is set. An edge shared by three or more triangles, or by two of opposite
+ * orientations, is not a boundary. Works one vertex at a time, so callers fuse it into their
+ * own vertex loops and vertices can be processed concurrently.
  */
-inline void MarkBoundaryCorners(
+inline bool MarkBoundaryCorners(
   const VertexTriangleAdjacency& adjacency, std::int64_t v, std::uint8_t* flags)
 {
   const Corner* first = adjacency.Begin(v);
@@ -135,16 +135,22 @@ inline void MarkBoundaryCorners(
   // with the edge's far end as any corner.
   for (std::size_t i = 0; i < degree; ++i)
   {
-    for (std::size_t j = 0; j < degree; ++j)
+    std::size_t j = 0;
+    while (j < degree && first[j].Previous != first[i].Next)
     {
-      if (first[j].Previous == first[i].Next)
-      {
-        flags[i] &= static_cast<std::uint8_t>(~OutgoingBoundaryEdge);
-        flags[j] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
-        break;
-      }
+      ++j;
+    }
+    if (j < degree)
+    {
+      flags[i] &= static_cast<std::uint8_t>(~OutgoingBoundaryEdge);
+      flags[j] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
     }
   }
+  if (std::all_of(flags, flags + degree, [](std::uint8_t f) { return f == 0; }))
+  {
+    return false; // every edge paired: a closed fan
+  }
+  bool any = false;
   for (std::size_t i = 0; i < degree; ++i)
   {
     for (std::size_t j = 0; j < degree && flags[i]; ++j)
@@ -161,7 +167,9 @@ inline void MarkBoundaryCorners(
         flags[i] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
       }
     }
+    any = any || flags[i] != 0;
   }
+  return any;
 }
 
 } // namespace meshsimp
