@@ -275,8 +275,13 @@ namespace
  * Threads that live for one filter execution and share the chunks of every ParallelFor with
  * the calling thread. VTK 9.2's STDThread backend starts its threads anew for each For (about
  * 0.1 ms for two threads here), and the filters that work in rounds call it hundreds of times.
- * Chunks go to whichever thread asks first; the filters write disjoint data per index, so the
- * result does not depend on it.
+ * Waking a sleeping thread through the kernel costs 40-60 us here, so both sides poll a while
+ * before they sleep: a worker polls for the next loop for about a millisecond, the caller for
+ * the workers' last chunks for about 0.1 ms; loops that follow each other closely then start
+ * in about a microsecond. (Polling is a plain load: a PAUSE loop makes virtual machines
+ * deschedule the polling CPU, which stalled loops by milliseconds.) Chunks go to whichever
+ * thread asks first; the filters write disjoint data per index, so the result does not depend
+ * on it.
  */
 class WorkerPool
 {
@@ -296,6 +301,7 @@ public:
     {
       std::lock_guard<std::mutex> lock(this->Mutex);
       this->Stopping = true;
+      this->Generation.fetch_add(1, std::memory_order_release);
     }
     this->Wake.notify_all();
     for (std::thread& worker : this->Workers)
@@ -307,22 +313,41 @@ public:
   void For(std::int64_t n, const Body& body)
   {
     const std::int64_t threads = static_cast<std::int64_t>(this->Workers.size()) + 1;
+    this->Job = &body;
+    this->Size = n;
+    this->Chunks = std::min(n, 4 * threads);
+    this->Next = 0;
+    this->Busy.store(static_cast<int>(this->Workers.size()), std::memory_order_relaxed);
     {
+      // Under the lock, so that a worker about to sleep either sees the new generation or is
+      // counted in Sleepers before it is read below.
       std::lock_guard<std::mutex> lock(this->Mutex);
-      this->Job = &body;
-      this->Size = n;
-      this->Chunks = std::min(n, 4 * threads);
-      this->Next = 0;
-      this->Busy = static_cast<int>(this->Workers.size());
-      ++this->Generation;
+      this->Generation.fetch_add(1, std::memory_order_release);
     }
-    this->Wake.notify_all();
+    if (this->Sleepers.load() > 0)
+    {
+      this->Wake.notify_all();
+    }
     this->Work();
-    std::unique_lock<std::mutex> lock(this->Mutex);
-    this->Done.wait(lock, [this] { return this->Busy == 0; });
+    for (int polls = 1; polls < CallerPolls && !this->Finished(); ++polls)
+    {
+      if (polls % 1024 == 0)
+      {
+        std::this_thread::yield();
+      }
+    }
+    if (!this->Finished())
+    {
+      std::unique_lock<std::mutex> lock(this->Mutex);
+      this->CallerWaiting = true;
+      this->Done.wait(lock, [this] { return this->Finished(); });
+      this->CallerWaiting = false;
+    }
   }
 
 private:
+  bool Finished() const { return this->Busy.load(std::memory_order_acquire) == 0; }
+
   void Work()
   {
     for (std::int64_t chunk = this->Next++; chunk < this->Chunks; chunk = this->Next++)
@@ -336,33 +361,49 @@ private:
     std::uint64_t seen = 0;
     for (;;)
     {
+      for (int polls = 1; polls < WorkerPolls && this->Generation.load(std::memory_order_acquire) == seen; ++polls)
+      {
+        if (polls % 1024 == 0)
+        {
+          std::this_thread::yield(); // lets the caller run if the two share a CPU
+        }
+      }
+      if (this->Generation.load(std::memory_order_acquire) == seen)
       {
         std::unique_lock<std::mutex> lock(this->Mutex);
-        this->Wake.wait(lock, [&] { return this->Stopping || this->Generation != seen; });
-        if (this->Stopping)
-        {
-          return;
-        }
-        seen = this->Generation;
+        ++this->Sleepers;
+        this->Wake.wait(lock, [&] { return this->Generation.load() != seen; });
+        --this->Sleepers;
+      }
+      seen = this->Generation.load(std::memory_order_acquire);
+      if (this->Stopping.load())
+      {
+        return;
       }
       this->Work();
-      std::lock_guard<std::mutex> lock(this->Mutex);
-      if (--this->Busy == 0)
+      if (this->Busy.fetch_sub(1, std::memory_order_acq_rel) == 1)
       {
-        this->Done.notify_one();
+        std::lock_guard<std::mutex> lock(this->Mutex);
+        if (this->CallerWaiting)
+        {
+          this->Done.notify_one();
+        }
       }
     }
   }
 
+  static constexpr int WorkerPolls = 1 << 20; // about a millisecond
+  static constexpr int CallerPolls = 1 << 17;
   std::vector<std::thread> Workers;
   std::mutex Mutex;
   std::condition_variable Wake, Done;
   const Body* Job = nullptr;
   std::int64_t Size = 0, Chunks = 0;
   std::atomic<std::int64_t> Next{ 0 };
-  int Busy = 0;
-  std::uint64_t Generation = 0;
-  bool Stopping = false;
+  std::atomic<int> Busy{ 0 }, Sleepers{ 0 };
+  std::atomic<std::uint64_t> Generation{ 0 };
+  std::atomic<bool> Stopping{ false };
+  bool CallerWaiting = false; // guarded by Mutex
 };
 }
 
@@ -373,13 +414,16 @@ meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int num
   if (threads > 1)
   {
     context.Threads = threads;
-    // The threads start with the first loop worth them: small inputs never pay for them.
+    // Work is estimated in nanoseconds (ExecutionContext). The threads start with the first
+    // loop of a millisecond or more, so small inputs never pay for them (about 0.1 ms); then
+    // loops of 30 us or more are shared (a polled start costs about 1 us, see WorkerPool).
+    constexpr std::int64_t StartWork = 1 << 20, LoopWork = 1 << 15;
     auto pool = std::make_shared<std::unique_ptr<WorkerPool>>();
     context.ParallelFor = [pool, threads](
                             std::int64_t n, std::int64_t work, const WorkerPool::Body& body) {
-      if (work < 131072)
+      if (work < (*pool ? LoopWork : StartWork))
       {
-        body(0, n); // too little work to pay for waking the threads
+        body(0, n); // too little work to pay for the threads
         return;
       }
       if (!*pool)

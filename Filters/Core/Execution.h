@@ -20,8 +20,8 @@ namespace meshsimp
 struct ExecutionContext
 {
   /// Calls body(begin, end) over sub-ranges covering [0, n), possibly concurrently; work
-  /// estimates the whole loop's cost in simple per-element steps, so that an implementation can
-  /// run small loops inline rather than wake threads for them.
+  /// estimates the whole loop's single-thread time in nanoseconds (an order of magnitude is
+  /// enough), so that an implementation can run small loops inline rather than wake threads.
   std::function<void(std::int64_t n, std::int64_t work,
     const std::function<void(std::int64_t, std::int64_t)>& body)>
     ParallelFor;

@@ -270,7 +270,7 @@ void Clusterer::PrepareGeometry()
         this->TriangleAreas[t] = 0.5 * length;
       }
     }
-  });
+  }, 8 * m);
   // From here on triangles are read at their corners in the adjacency; the list's memory
   // serves the arrays that follow.
   std::vector<std::int32_t>().swap(this->Local.Triangles);
@@ -348,7 +348,7 @@ void Clusterer::PrepareQuadrics()
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
     }
-  }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
+  }, 16 * static_cast<std::int64_t>(this->Adjacency.Corners.size()));
   // Not needed any more: its memory serves the refinement's arrays.
   std::vector<double>().swap(this->TriangleAreas);
 }
@@ -821,7 +821,7 @@ std::int32_t Clusterer::ClusterLeaves(std::vector<NewLeaf>& leaves, std::int32_t
   std::int64_t work = 0;
   for (const NewLeaf& leaf : leaves)
   {
-    work += 8 * (this->Nodes[leaf.Node].End - this->Nodes[leaf.Node].Begin);
+    work += 256 * (this->Nodes[leaf.Node].End - this->Nodes[leaf.Node].Begin); // ns per vertex
   }
   const std::int64_t count = static_cast<std::int64_t>(leaves.size());
   this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
@@ -1127,7 +1127,7 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
         }
       }
     }
-  }, static_cast<std::int64_t>(this->Adjacency.Corners.size()));
+  }, 8 * static_cast<std::int64_t>(this->Adjacency.Corners.size()));
   std::vector<Key> keys;
   for (const std::vector<Key>& chunk : chunks)
   {
@@ -1221,7 +1221,7 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
         protruding[p] = 1;
       }
     }
-  }, static_cast<std::int64_t>(clusterVertices.size()));
+  }, 64 * static_cast<std::int64_t>(clusterVertices.size()));
 
   // e2 by the paper's iteration (eq. 8–11): with the representatives of the previous iterate,
   // the squared distance of a cluster vertex a to a new triangle (v0, b', c') is the squared
@@ -1274,7 +1274,7 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
           next[p] = x;
         }
       }
-    }, static_cast<std::int64_t>(clusterVertices.size()));
+    }, 64 * static_cast<std::int64_t>(clusterVertices.size()));
     position.swap(next);
   }
 
@@ -1303,7 +1303,7 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
           total > 0.0 ? this->VertexWeights[members(p)[i]] / total : 1.0 / size(p);
       }
     }
-  }, static_cast<std::int64_t>(clusterVertices.size()));
+  }, 64 * static_cast<std::int64_t>(clusterVertices.size()));
   result.MaximumClusterError =
     result.ClusterErrors.empty() ? 0.0 : *std::max_element(result.ClusterErrors.begin(), result.ClusterErrors.end());
 
