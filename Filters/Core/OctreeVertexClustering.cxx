@@ -96,7 +96,7 @@ private:
     std::vector<std::int32_t> Parent, Root;
     std::vector<std::int32_t> Offsets, Fill, Members;
     std::vector<std::uint8_t> Survives;    // per cluster of the leaf
-    std::vector<std::int32_t> Neighbours; // (cluster, neighbouring cluster) pairs
+    std::vector<std::int64_t> Neighbours; // cluster << 32 | neighbouring cluster
   };
 
   /// ε in the normalised coordinates.
@@ -623,7 +623,7 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
   const std::uint32_t countSpan = static_cast<std::uint32_t>(countEnd - countBegin);
   LeafScan scan;
   std::vector<std::uint8_t>& survives = scratch.Survives;
-  std::vector<std::int32_t>& neighbours = scratch.Neighbours;
+  std::vector<std::int64_t>& neighbours = scratch.Neighbours;
   survives.assign(forEntry ? cell.ClusterCount : 0, 0);
   neighbours.clear();
   for (std::int32_t i = begin; i < end; ++i)
@@ -660,8 +660,7 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
         {
           if (other != c0)
           {
-            neighbours.push_back(c0);
-            neighbours.push_back(other);
+            neighbours.push_back(static_cast<std::int64_t>(c0) << 32 | other);
           }
         }
       }
@@ -687,6 +686,8 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
   // (a leg or a corner folded onto its neighbours): its vertices end up about as far from the
   // surface as from the nearest neighbouring cluster's point. Refining elsewhere can only
   // bring it back, so this value never grows while the leaf waits in the heap.
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
   for (std::int32_t i = begin; i < end; ++i)
   {
     const std::int32_t v = this->Order[i];
@@ -697,14 +698,12 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
     }
     double nearest = (this->P[v] - this->ClusterPositions[c]).norm();
     bool found = false;
-    for (std::size_t k = 0; k < neighbours.size(); k += 2)
+    for (auto k = std::lower_bound(neighbours.begin(), neighbours.end(), static_cast<std::int64_t>(c) << 32);
+         k != neighbours.end() && (*k >> 32) == c; ++k)
     {
-      if (neighbours[k] == c)
-      {
-        const double d = (this->P[v] - this->ClusterPositions[neighbours[k + 1]]).norm();
-        nearest = found ? std::min(nearest, d) : d;
-        found = true;
-      }
+      const double d = (this->P[v] - this->ClusterPositions[static_cast<std::int32_t>(*k & 0xffffffff)]).norm();
+      nearest = found ? std::min(nearest, d) : d;
+      found = true;
     }
     scan.Vanishing = std::max(scan.Vanishing, nearest);
   }
