@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <queue>
@@ -144,9 +145,12 @@ private:
   double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count,
     bool folded, const Vec3* ring) const;
   bool Folded(const std::int32_t* members, std::int32_t count) const;
-  bool RingCentre(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
+  /// Member(v) says whether vertex v belongs to the cluster of members.
+  template <typename Member>
+  bool RingCentre(const Member& member, const std::int32_t* members, std::int32_t count,
     Vec3& centre, double& radius) const;
-  bool ProtrudingTip(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
+  template <typename Member>
+  bool ProtrudingTip(const Member& member, const std::int32_t* members, std::int32_t count,
     std::int32_t& tip, Vec3& ring) const;
   double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
     const std::int32_t* members, std::int32_t count, Vec3& x) const;
@@ -398,7 +402,8 @@ bool Clusterer::Folded(const std::int32_t* members, std::int32_t count) const
   return !(weight > 0.0) || areaNormal.norm() / weight < 0.5;
 }
 
-bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, std::int32_t count,
+template <typename Member>
+bool Clusterer::RingCentre(const Member& member, const std::int32_t* members, std::int32_t count,
   Vec3& centre, double& radius) const
 {
   // Mean of the members with a neighbour in another cluster: where the cluster meets the rest.
@@ -410,7 +415,7 @@ bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, st
     bool touches = false;
     for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v) && !touches; ++c)
     {
-      touches = !this->InCluster(c->Next, cluster) || !this->InCluster(c->Previous, cluster);
+      touches = !member(c->Next) || !member(c->Previous);
     }
     if (touches)
     {
@@ -429,7 +434,7 @@ bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, st
     const std::int32_t v = members[i];
     for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
     {
-      if (!this->InCluster(c->Next, cluster) || !this->InCluster(c->Previous, cluster))
+      if (!member(c->Next) || !member(c->Previous))
       {
         radius = std::max(radius, (this->P[v] - centre).norm());
         break;
@@ -439,14 +444,15 @@ bool Clusterer::RingCentre(std::int32_t cluster, const std::int32_t* members, st
   return true;
 }
 
-bool Clusterer::ProtrudingTip(std::int32_t cluster, const std::int32_t* members,
+template <typename Member>
+bool Clusterer::ProtrudingTip(const Member& member, const std::int32_t* members,
   std::int32_t count, std::int32_t& tip, Vec3& ring) const
 {
   // A folded cluster (see Folded; the caller has checked) sticks out when its member farthest
   // from where it meets its neighbours (the ring) lies farther than the ring is wide: a leg, a
   // finger.
   double radius = 0.0;
-  if (!this->RingCentre(cluster, members, count, ring, radius))
+  if (!this->RingCentre(member, members, count, ring, radius))
   {
     return false;
   }
@@ -471,7 +477,8 @@ double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Octree
   const bool folded = this->Folded(members, count);
   std::int32_t tip;
   Vec3 ring;
-  if (folded && this->ProtrudingTip(cluster, members, count, tip, ring))
+  const auto member = [this, cluster](std::int32_t v) { return this->InCluster(v, cluster); };
+  if (folded && this->ProtrudingTip(member, members, count, tip, ring))
   {
     x = this->P[tip];
     return this->ClusterError(x, members, count, true, &ring);
@@ -1159,13 +1166,59 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
       referenced[this->VertexCluster[v]] = 1;
     }
   }
-  std::vector<std::int32_t> pointOfCluster(this->ClusterPositions.size(), -1);
+  // With a count target, a cluster that lost every triangle and touches a single surviving
+  // cluster (a cap on a thin part: a trunk's or a finger's end) has its vertices represented by
+  // that cluster's point, so they join it: its point then accounts for them, and the
+  // protruding-tip rule can put it at the part's end instead of leaving the part cut off.
+  // Repeated, so chains of such caps join too. (Under an error bound every such cap is within
+  // ε of its neighbours already, and a joined point's error is not bounded.)
+  const std::size_t clusters = this->ClusterPositions.size();
+  std::vector<std::int32_t> owner(clusters, -1); // the surviving cluster each cluster joins
+  for (std::size_t c = 0; c < clusters; ++c)
+  {
+    owner[c] = referenced[c] ? static_cast<std::int32_t>(c) : -1;
+  }
+  constexpr std::int32_t Several = -2;
+  std::vector<std::int32_t> candidate(clusters, -1);
+  for (bool joined = this->Options.TargetTriangles >= 0; joined;)
+  {
+    std::fill(candidate.begin(), candidate.end(), -1);
+    for (std::int64_t v = 0; v < n; ++v)
+    {
+      const std::int32_t c = this->VertexCluster[v];
+      if (owner[c] >= 0)
+      {
+        continue;
+      }
+      for (const Corner* k = this->Adjacency.Begin(v); k != this->Adjacency.End(v); ++k)
+      {
+        for (const std::int32_t w : { k->Next, k->Previous })
+        {
+          const std::int32_t o = owner[this->VertexCluster[w]];
+          if (o >= 0 && candidate[c] != o)
+          {
+            candidate[c] = candidate[c] == -1 ? o : Several;
+          }
+        }
+      }
+    }
+    joined = false;
+    for (std::size_t c = 0; c < clusters; ++c)
+    {
+      if (owner[c] < 0 && candidate[c] >= 0)
+      {
+        owner[c] = candidate[c];
+        joined = true;
+      }
+    }
+  }
+  std::vector<std::int32_t> pointOfCluster(clusters, -1);
   std::vector<std::int32_t> clusterOfPoint;
   std::vector<std::int32_t> pointOf(n, -1); // vertex → output point
   for (std::int64_t v = 0; v < n; ++v)
   {
-    const std::int32_t c = this->VertexCluster[v];
-    if (!referenced[c])
+    const std::int32_t c = owner[this->VertexCluster[v]];
+    if (c < 0)
     {
       continue;
     }
@@ -1200,24 +1253,53 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
   auto size = [&](std::int64_t p) { return result.ClusterOffsets[p + 1] - result.ClusterOffsets[p]; };
 
   // Protruding clusters take their tip again (the clusters around them may have changed
-  // since); the others start from their refinement point.
+  // since); the others start from their refinement point. A point with joined caps takes
+  // whichever of its own cluster's point and the whole set's point represents the whole set
+  // better (the cluster error with the members' distances, see ClusterError).
   std::vector<Vec3> position(numberOfPoints), centre(numberOfPoints);
   std::vector<Quadric> faceQuadric(numberOfPoints);
   std::vector<std::uint8_t> folded(numberOfPoints, 0);     // see Folded
   std::vector<std::uint8_t> protruding(numberOfPoints, 0); // keeps its tip
   std::vector<Vec3> ring(numberOfPoints);                  // where a protruding one meets the rest
   this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+    std::vector<std::int32_t> own;
     for (std::int64_t p = b; p < e; ++p)
     {
-      position[p] = this->ClusterPositions[clusterOfPoint[p]];
+      const std::int32_t cluster = clusterOfPoint[p];
       centre[p] = this->ClusterCentre(members(p), size(p));
       faceQuadric[p] = this->ClusterQuadric(members(p), size(p));
       folded[p] = this->Folded(members(p), size(p)) ? 1 : 0;
-      std::int32_t tip;
-      if (folded[p] && this->ProtrudingTip(clusterOfPoint[p], members(p), size(p), tip, ring[p]))
+      // The point of the given members: their tip when they protrude, else the cluster's.
+      const auto place = [&](const std::int32_t* set, std::int32_t count, bool isFolded,
+                           const auto& member, Vec3& x, Vec3& setRing) {
+        std::int32_t tip;
+        x = this->ClusterPositions[cluster];
+        if (isFolded && this->ProtrudingTip(member, set, count, tip, setRing))
+        {
+          x = this->P[tip];
+          return true;
+        }
+        return false;
+      };
+      const auto inPoint = [&pointOf, p](std::int32_t v) { return pointOf[v] == p; };
+      protruding[p] = place(members(p), size(p), folded[p], inPoint, position[p], ring[p]) ? 1 : 0;
+      own.clear();
+      std::copy_if(members(p), members(p) + size(p), std::back_inserter(own),
+        [&](std::int32_t v) { return this->VertexCluster[v] == cluster; });
+      if (static_cast<std::int32_t>(own.size()) == size(p))
       {
-        position[p] = this->P[tip];
-        protruding[p] = 1;
+        continue;
+      }
+      Vec3 x, ownRing;
+      const auto inCluster = [&](std::int32_t v) { return this->VertexCluster[v] == cluster; };
+      const bool ownTip = place(own.data(), static_cast<std::int32_t>(own.size()),
+        this->Folded(own.data(), static_cast<std::int32_t>(own.size())), inCluster, x, ownRing);
+      if (this->ClusterError(x, members(p), size(p), true, ownTip ? &ownRing : nullptr) <
+        this->ClusterError(position[p], members(p), size(p), true, protruding[p] ? &ring[p] : nullptr))
+      {
+        position[p] = x;
+        protruding[p] = ownTip ? 1 : 0;
+        ring[p] = ownRing;
       }
     }
   }, 64 * static_cast<std::int64_t>(clusterVertices.size()));

@@ -21,12 +21,16 @@
  *  - the second error term e2 (squared distances of the cluster's vertices to the new triangles
  *    around the representative, eq. 8–11) is added by the paper's fixed-point iteration.
  *
- * Beyond the paper, three rules keep thin parts: a cluster none of whose triangles survives
+ * Beyond the paper, four rules keep thin parts: a cluster none of whose triangles survives
  * (a leg folded onto its neighbours) is charged the distance of its vertices to the nearest
  * neighbouring representative, so its leaf is split first; a folded cluster (its normals
  * spread, |area-weighted mean unit normal| < 1/2) that sticks out of the surface collapses to
- * its tip, not to a point inside it; and a split log lets late, cheap splits be undone to make
- * room for a leaf of far larger error when a count target is tight.
+ * its tip, not to a point inside it; a split log lets late, cheap splits be undone to make
+ * room for a leaf of far larger error when a count target is tight; and, with a count target,
+ * a cluster that still loses every triangle while it touches a single surviving cluster (the
+ * cap of a trunk or a finger) joins that cluster, whose point then represents both: the
+ * point of the joined set (its tip when it protrudes) or the cluster's own, whichever has the
+ * smaller cluster error over the set.
  *
  * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
  * the supporting plane of any triangle of its cluster's related set (every input triangle with
@@ -82,7 +86,8 @@ struct OctreeClusteringResult
   std::vector<double> ClusterWeights;
   /// Per output point: the bounded cluster error (a distance in input units), see above.
   std::vector<double> ClusterErrors;
-  /// Input vertex → output point, −1 for vertices whose cluster has no surviving triangle.
+  /// Input vertex → output point, −1 for vertices whose cluster has no surviving triangle and
+  /// joined none (see above).
   std::vector<std::int32_t> VertexToPoint;
   double MaximumClusterError = 0.0;
   std::int64_t UsableInputTriangles = 0;

@@ -206,16 +206,96 @@ void DisconnectedPartsInOneCellStayApart()
   }
 }
 
+/// A triangle mesh of Testing/Data.
+Mesh ReadData(const std::string& name)
+{
+  meshsimp::PolygonMesh file;
+  std::string error;
+  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/" + name, file, error));
+  Mesh mesh;
+  mesh.Points = file.Points;
+  mesh.Triangles.assign(file.FaceIds.begin(), file.FaceIds.end());
+  return mesh;
+}
+
 /// The cow of Testing/Data, 2 904 points and 5 804 triangles.
 Mesh Cow()
 {
-  meshsimp::PolygonMesh cow;
-  std::string error;
-  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/cow.off", cow, error));
-  Mesh mesh;
-  mesh.Points = cow.Points;
-  mesh.Triangles.assign(cow.FaceIds.begin(), cow.FaceIds.end());
-  return mesh;
+  return ReadData("cow.off");
+}
+
+/// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
+double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0)
+  {
+    return ap.norm();
+  }
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3)
+  {
+    return bp.norm();
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    return (p - (a + d1 / (d1 - d3) * ab)).norm();
+  }
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6)
+  {
+    return cp.norm();
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    return (p - (a + d2 / (d2 - d6) * ac)).norm();
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+  {
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  }
+  const double sum = va + vb + vc;
+  return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
+}
+
+void CapOfAThinPartJoinsItsNeighbour()
+{
+  // At 2 % of its triangles the elephant's trunk ends in a cluster that keeps no triangle and
+  // touches one other cluster: it joins that cluster, whose point moves to the trunk's end.
+  // Without the rule the trunk lost its end: 108 vertices without a point, the farthest 9.2 %
+  // of the bounding-box diagonal from the output.
+  const Mesh mesh = ReadData("elephant.off");
+  const OctreeClusteringResult result = Simplify(mesh, Target(111));
+  CHECK(std::none_of(result.VertexToPoint.begin(), result.VertexToPoint.end(),
+    [](std::int32_t p) { return p < 0; }));
+  auto point = [](const std::vector<double>& xyz, std::int64_t i) {
+    return Eigen::Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  };
+  Eigen::Vector3d lo = point(mesh.Points, 0), hi = lo;
+  double farthest = 0.0;
+  for (std::size_t v = 0; v < mesh.Points.size() / 3; ++v)
+  {
+    const Eigen::Vector3d p = point(mesh.Points, v);
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t t = 0; t < result.Triangles.size(); t += 3)
+    {
+      nearest = std::min(nearest, DistanceToTriangle(p, point(result.Points, result.Triangles[t]),
+        point(result.Points, result.Triangles[t + 1]), point(result.Points, result.Triangles[t + 2])));
+    }
+    farthest = std::max(farthest, nearest);
+  }
+  std::printf("elephant at 111 triangles: farthest vertex %.2f %% of the diagonal\n",
+    100 * farthest / (hi - lo).norm());
+  CHECK(farthest < 0.075 * (hi - lo).norm());
 }
 
 void TargetCountIsMet()
@@ -518,6 +598,7 @@ int main()
     { "DiskBorderIsKeptWithBoundaryPlanes", DiskBorderIsKeptWithBoundaryPlanes },
     { "DisconnectedPartsInOneCellStayApart", DisconnectedPartsInOneCellStayApart },
     { "TargetCountIsMet", TargetCountIsMet },
+    { "CapOfAThinPartJoinsItsNeighbour", CapOfAThinPartJoinsItsNeighbour },
     { "ErrorBoundIsRespected", ErrorBoundIsRespected },
     { "CellLimitsAreAlwaysApplied", CellLimitsAreAlwaysApplied },
     { "FlipRuleReducesFlippedTriangles", FlipRuleReducesFlippedTriangles },
