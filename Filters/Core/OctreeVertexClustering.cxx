@@ -90,11 +90,11 @@ public:
   bool Run(OctreeClusteringResult& result);
 
 private:
-  /// Per-thread scratch of EvaluateLeaf, indexed by position in the leaf: the union-find of
+  /// Per-thread scratch of EvaluateLeaf, indexed by position in the leaf: the flood fill of
   /// its components and the members of each cluster (CSR); and of ScanLeaf.
   struct Scratch
   {
-    std::vector<std::int32_t> Parent, Root;
+    std::vector<std::int32_t> Stack, Root;
     std::vector<std::int32_t> Offsets, Fill, Members;
     std::vector<std::uint8_t> Survives;    // per cluster of the leaf
     std::vector<std::int64_t> Neighbours; // cluster << 32 | neighbouring cluster
@@ -120,14 +120,6 @@ private:
   {
     const OctreeNode& cell = this->Nodes[this->ClusterNodes[cluster]];
     return this->InRange(v, cell.Begin, cell.End) && this->VertexCluster[v] == cluster;
-  }
-  static std::int32_t Find(std::vector<std::int32_t>& parent, std::int32_t i)
-  {
-    while (parent[i] != i)
-    {
-      i = parent[i] = parent[parent[i]];
-    }
-    return i;
   }
   std::int32_t EvaluateLeaf(std::int32_t node, std::int32_t firstCluster, Scratch& scratch,
     double& key, bool& canSplit);
@@ -544,33 +536,39 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   OctreeNode& cell = this->Nodes[node];
   const std::int32_t begin = cell.Begin, end = cell.End;
 
-  // Clusters are the connected components of the leaf's vertices (edges inside the leaf
-  // only); each triangle edge is visited once, from its first corner.
-  std::vector<std::int32_t>& parent = scratch.Parent;
+  // Clusters are the connected components of the leaf's vertices (edges inside the leaf only),
+  // found by a flood fill from each unlabelled vertex in leaf order, so a cluster's number
+  // follows its first vertex.
+  std::vector<std::int32_t>& stack = scratch.Stack;
   std::vector<std::int32_t>& root = scratch.Root; // cluster of each position, in the leaf
-  parent.resize(end - begin);
-  root.resize(end - begin);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (std::int32_t i = begin; i < end; ++i)
+  root.assign(end - begin, -1);
+  std::int32_t count = 0;
+  for (std::int32_t first = 0; first < end - begin; ++first)
   {
-    const std::int32_t v = this->Order[i];
-    for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
+    if (root[first] >= 0)
     {
-      if (this->InRange(c->Next, begin, end))
+      continue;
+    }
+    root[first] = count;
+    stack.assign(1, first);
+    while (!stack.empty())
+    {
+      const std::int32_t v = this->Order[begin + stack.back()];
+      stack.pop_back();
+      for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
       {
-        const std::int32_t a = Find(parent, i - begin), b = Find(parent, this->Position[c->Next] - begin);
-        if (a != b)
+        for (const std::int32_t w : { c->Next, c->Previous })
         {
-          parent[std::max(a, b)] = std::min(a, b);
+          const std::int32_t at = this->Position[w] - begin;
+          if (at >= 0 && at < end - begin && root[at] < 0)
+          {
+            root[at] = count;
+            stack.push_back(at);
+          }
         }
       }
     }
-  }
-  std::int32_t count = 0;
-  for (std::int32_t i = 0; i < end - begin; ++i)
-  {
-    const std::int32_t top = Find(parent, i);
-    root[i] = top == i ? count++ : root[top];
+    ++count;
   }
 
   cell.FirstCluster = firstCluster;
