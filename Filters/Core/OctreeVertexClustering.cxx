@@ -539,32 +539,34 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   // Clusters are the connected components of the leaf's vertices (edges inside the leaf only),
   // found by a flood fill from each unlabelled vertex in leaf order, so a cluster's number
   // follows its first vertex.
+  // The pushes are branch-free: whether a neighbour is inside and new is unpredictable.
+  const std::uint32_t size = static_cast<std::uint32_t>(end - begin);
   std::vector<std::int32_t>& stack = scratch.Stack;
   std::vector<std::int32_t>& root = scratch.Root; // cluster of each position, in the leaf
-  root.assign(end - begin, -1);
+  root.assign(size, -1);
+  stack.resize(size + 1);
   std::int32_t count = 0;
-  for (std::int32_t first = 0; first < end - begin; ++first)
+  for (std::uint32_t first = 0; first < size; ++first)
   {
     if (root[first] >= 0)
     {
       continue;
     }
     root[first] = count;
-    stack.assign(1, first);
-    while (!stack.empty())
+    stack[0] = static_cast<std::int32_t>(first);
+    for (std::uint32_t top = 1; top > 0;)
     {
-      const std::int32_t v = this->Order[begin + stack.back()];
-      stack.pop_back();
+      const std::int32_t v = this->Order[begin + stack[--top]];
       for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
       {
         for (const std::int32_t w : { c->Next, c->Previous })
         {
-          const std::int32_t at = this->Position[w] - begin;
-          if (at >= 0 && at < end - begin && root[at] < 0)
-          {
-            root[at] = count;
-            stack.push_back(at);
-          }
+          const std::uint32_t at = static_cast<std::uint32_t>(this->Position[w] - begin);
+          const std::uint32_t k = at < size ? at : 0;
+          const bool fresh = (at < size) & (root[k] < 0);
+          root[k] = fresh ? count : root[k];
+          stack[top] = static_cast<std::int32_t>(k);
+          top += fresh;
         }
       }
     }
@@ -626,6 +628,7 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
   const std::int32_t begin = cell.Begin, end = cell.End;
   const bool flips = forEntry && this->Options.PreventFlips;
   const std::uint32_t countSpan = static_cast<std::uint32_t>(countEnd - countBegin);
+  const std::uint32_t leafSpan = static_cast<std::uint32_t>(end - begin);
   LeafScan scan;
   std::vector<std::uint8_t>& survives = scratch.Survives;
   std::vector<std::int64_t>& neighbours = scratch.Neighbours;
@@ -641,16 +644,14 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
       const std::int32_t previous = this->Position[corner->Previous];
       const std::int32_t c1 = this->VertexCluster[corner->Next];
       const std::int32_t c2 = this->VertexCluster[corner->Previous];
-      const bool distinct = c0 != c1 && c1 != c2 && c0 != c2;
+      // Without branches (& rather than &&): these tests are unpredictable.
+      const bool distinct = (c0 != c1) & (c1 != c2) & (c0 != c2);
 
       // The count: each triangle once, from its first corner in the count range.
       const bool nextCounted = static_cast<std::uint32_t>(next - countBegin) < countSpan;
       const bool previousCounted = static_cast<std::uint32_t>(previous - countBegin) < countSpan;
-      if ((nextCounted || previousCounted) && !(nextCounted && next < i) &&
-        !(previousCounted && previous < i))
-      {
-        scan.Surviving += distinct ? 1 : 0;
-      }
+      scan.Surviving += (nextCounted | previousCounted) & !(nextCounted & (next < i)) &
+        !(previousCounted & (previous < i)) & distinct;
       if (!forEntry)
       {
         continue;
@@ -673,8 +674,9 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
       // §2.4: clustering must not turn a related triangle against its original normal; tested
       // on the triangles that survive with one corner in the leaf, with the corners outside at
       // their own clusters' current points.
-      if (flips && !scan.Flipped && (next < begin || next >= end) &&
-        (previous < begin || previous >= end) && c1 != c2 &&
+      const bool outside = (static_cast<std::uint32_t>(next - begin) >= leafSpan) &
+        (static_cast<std::uint32_t>(previous - begin) >= leafSpan) & (c1 != c2);
+      if (flips & outside & !scan.Flipped &&
         this->TriangleNormals[corner->Triangle] != Vec3::Zero())
       {
         const Vec3& x = this->ClusterPositions[c0];
@@ -1114,15 +1116,15 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
       const std::int32_t last = static_cast<std::int32_t>(std::min(n, (chunk + 1) * ChunkSize));
       for (std::int32_t v = static_cast<std::int32_t>(chunk * ChunkSize); v < last; ++v)
       {
+        const std::int32_t c0 = this->VertexCluster[v];
         for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
         {
-          if (corner->Next < v || corner->Previous < v)
-          {
-            continue;
-          }
-          std::array<std::int32_t, 3> c = { this->VertexCluster[v],
-            this->VertexCluster[corner->Next], this->VertexCluster[corner->Previous] };
-          if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+          // Tested without branches (& rather than &&): the tests are unpredictable, the rare
+          // survivors are not.
+          std::array<std::int32_t, 3> c = { c0, this->VertexCluster[corner->Next],
+            this->VertexCluster[corner->Previous] };
+          const bool lowest = (v < corner->Next) & (v < corner->Previous);
+          if (lowest & (c[0] != c[1]) & (c[1] != c[2]) & (c[0] != c[2]))
           {
             std::sort(c.begin(), c.end());
             chunks[chunk].push_back({ c, this->Local.InputTriangle[corner->Triangle],

@@ -135,15 +135,16 @@ inline bool MarkBoundaryCorners(
   // with the edge's far end as any corner.
   for (std::size_t i = 0; i < degree; ++i)
   {
-    std::size_t j = 0;
-    while (j < degree && first[j].Previous != first[i].Next)
+    // The first match, found without an early exit (its position is unpredictable).
+    std::size_t match = degree;
+    for (std::size_t j = degree; j-- > 0;)
     {
-      ++j;
+      match = first[j].Previous == first[i].Next ? j : match;
     }
-    if (j < degree)
+    if (match < degree)
     {
       flags[i] &= static_cast<std::uint8_t>(~OutgoingBoundaryEdge);
-      flags[j] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
+      flags[match] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
     }
   }
   if (std::all_of(flags, flags + degree, [](std::uint8_t f) { return f == 0; }))
