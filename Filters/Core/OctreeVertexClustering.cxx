@@ -1434,7 +1434,10 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   result.NonFinitePoints = this->Local.NonFinitePoints;
   if (this->Order.empty())
   {
-    return true;
+    // No usable triangle: an empty result, its maps still well formed.
+    result.ClusterOffsets.assign(1, 0);
+    result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
+    return this->Context.Report(1.0);
   }
   this->VertexCluster.assign(n, -1);
   this->Reordered.resize(this->Order.size());

@@ -484,6 +484,13 @@ void InvalidTrianglesAreSkipped()
   Mesh empty;
   result = Simplify(empty, Target(10));
   CHECK(result.Points.empty() && result.Triangles.empty());
+
+  // Only degenerate triangles: an empty result whose maps are still well formed.
+  Mesh degenerate = Grid(2);
+  degenerate.Triangles = { 0, 0, 1, 2, 2, 2 };
+  result = Simplify(degenerate, Target(1));
+  CHECK(result.Triangles.empty() && result.ClusterOffsets == std::vector<std::int32_t>{ 0 });
+  CHECK(result.VertexToPoint == std::vector<std::int32_t>(degenerate.Points.size() / 3, -1));
 }
 
 void CompactMeshIsSpatialAndMapsBack()
