@@ -1283,15 +1283,14 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
       };
       const auto inPoint = [&pointOf, p](std::int32_t v) { return pointOf[v] == p; };
       protruding[p] = place(members(p), size(p), folded[p], inPoint, position[p], ring[p]) ? 1 : 0;
+      const auto inCluster = [&](std::int32_t v) { return this->VertexCluster[v] == cluster; };
       own.clear();
-      std::copy_if(members(p), members(p) + size(p), std::back_inserter(own),
-        [&](std::int32_t v) { return this->VertexCluster[v] == cluster; });
+      std::copy_if(members(p), members(p) + size(p), std::back_inserter(own), inCluster);
       if (static_cast<std::int32_t>(own.size()) == size(p))
       {
-        continue;
+        continue; // nothing joined
       }
       Vec3 x, ownRing;
-      const auto inCluster = [&](std::int32_t v) { return this->VertexCluster[v] == cluster; };
       const bool ownTip = place(own.data(), static_cast<std::int32_t>(own.size()),
         this->Folded(own.data(), static_cast<std::int32_t>(own.size())), inCluster, x, ownRing);
       if (this->ClusterError(x, members(p), size(p), true, ownTip ? &ownRing : nullptr) <
