@@ -1180,16 +1180,23 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
   }
   constexpr std::int32_t Several = -2;
   std::vector<std::int32_t> candidate(clusters, -1);
-  for (bool joined = this->Options.TargetTriangles >= 0; joined;)
+  std::vector<std::int32_t> stranded; // the vertices of clusters without an owner yet
+  for (std::int64_t v = 0; v < n && this->Options.TargetTriangles >= 0; ++v)
   {
-    std::fill(candidate.begin(), candidate.end(), -1);
-    for (std::int64_t v = 0; v < n; ++v)
+    if (owner[this->VertexCluster[v]] < 0)
+    {
+      stranded.push_back(static_cast<std::int32_t>(v));
+    }
+  }
+  for (bool joined = true; joined && !stranded.empty();)
+  {
+    for (const std::int32_t v : stranded)
+    {
+      candidate[this->VertexCluster[v]] = -1;
+    }
+    for (const std::int32_t v : stranded)
     {
       const std::int32_t c = this->VertexCluster[v];
-      if (owner[c] >= 0)
-      {
-        continue;
-      }
       for (const Corner* k = this->Adjacency.Begin(v); k != this->Adjacency.End(v); ++k)
       {
         for (const std::int32_t w : { k->Next, k->Previous })
@@ -1203,14 +1210,18 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
       }
     }
     joined = false;
-    for (std::size_t c = 0; c < clusters; ++c)
+    for (const std::int32_t v : stranded)
     {
-      if (owner[c] < 0 && candidate[c] >= 0)
+      const std::int32_t c = this->VertexCluster[v];
+      if (candidate[c] >= 0)
       {
         owner[c] = candidate[c];
         joined = true;
       }
     }
+    stranded.erase(std::remove_if(stranded.begin(), stranded.end(),
+                     [&](std::int32_t v) { return owner[this->VertexCluster[v]] >= 0; }),
+      stranded.end());
   }
   std::vector<std::int32_t> pointOfCluster(clusters, -1);
   std::vector<std::int32_t> clusterOfPoint;
