@@ -372,7 +372,7 @@ bool CollapseMesh::LinkCondition(
 bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
 {
   const Eigen::Vector3d& x = plan.Position;
-  const bool guardAngles = this->MinimumAngleCosine < 1.0;
+  const bool guardAngles = plan.GuardAngles && this->MinimumAngleCosine < 1.0;
   double worstBefore = -1.0, worstAfter = -1.0; // cosines of the smallest angles
   for (int i = 0; i < plan.Count; ++i)
   {
@@ -514,7 +514,13 @@ int CollapseMesh::Merge(
   for (int i = 0; i < plan.Count; ++i)
   {
     const std::int32_t s = plan.Vertices[i];
+    // A triangle of two merged vertices dies when the first of them walks its span; the second
+    // must skip it (its span still lists it).
     this->ForEachTriangle(s, [&](std::int32_t t) {
+      if (!this->Alive[t])
+      {
+        return;
+      }
       std::int32_t* tri = this->Triangles.data() + 3 * t;
       int inside = 0;
       for (int j = 0; j < plan.Count; ++j)

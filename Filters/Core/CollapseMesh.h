@@ -7,7 +7,8 @@
  * Storage is flat: points, 3 vertex ids per triangle, an alive flag per triangle, and per vertex
  * a span {start, count} into one array of incident triangle ids. A collapse writes the merged
  * vertex's new span at the end of that array (old spans become garbage, compacted when it
- * doubles) and takes the removed triangles out of their other corners' spans.
+ * doubles) and takes the removed triangles out of their other corners' spans, so that spans list
+ * alive triangles only.
  *
  * A collapse merges a connected set of two vertices (an edge, or a half-edge when the position is
  * one end point) or three (a triangle, paper 004) into the first of them, the kept vertex, at a
@@ -71,6 +72,9 @@ struct CollapsePlan
   int Count = 0;
   Eigen::Vector3d Position = Eigen::Vector3d::Zero();
   double Weights[3] = { 1.0, 0.0, 0.0 };
+  /// Whether the angle guard (SetMinimumAngle) applies to this collapse; a policy may waive it
+  /// for collapses that do not change the surface.
+  bool GuardAngles = true;
 };
 
 class CollapseMesh
@@ -107,17 +111,14 @@ public:
   bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
   void Lock(std::int32_t v) { this->Locked[v] = 1; }
 
-  /// Calls f(t) for every alive triangle around v.
+  /// Calls f(t) for every alive triangle around v (spans hold alive triangles only).
   template <typename F>
   void ForEachTriangle(std::int32_t v, F&& f) const
   {
     const std::int32_t* ids = this->Refs.data() + this->Start[v];
     for (std::int32_t i = 0, n = this->Count[v]; i < n; ++i)
     {
-      if (this->Alive[ids[i]])
-      {
-        f(ids[i]);
-      }
+      f(ids[i]);
     }
   }
 
