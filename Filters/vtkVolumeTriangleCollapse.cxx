@@ -91,6 +91,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   options.UseNormalFactor = this->UseNormalFactor;
   options.UseShapeFactor = this->UseShapeFactor;
   options.UseVolumeWeights = this->UseVolumeWeights;
+  options.EdgeCollapses = this->EdgeCollapses;
   options.MinimumAngle = this->MinimumAngle;
 
   std::vector<std::uint8_t> locked;
@@ -150,6 +151,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseNormalFactor: " << this->UseNormalFactor << "\n";
   os << indent << "UseShapeFactor: " << this->UseShapeFactor << "\n";
   os << indent << "UseVolumeWeights: " << this->UseVolumeWeights << "\n";
+  os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";

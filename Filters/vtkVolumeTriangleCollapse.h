@@ -133,10 +133,26 @@ public:
 
   ///@{
   /**
-   * The angle guard, in degrees: no collapse may create an angle below it unless the collapsed
-   * neighbourhood already had one as small. 0 (default) turns it off. At 10 degrees it cuts the
-   * share of slivers to about vtkQuadricDecimation's on most meshes, at the price of larger
-   * distances.
+   * Let a triangle collapse its cheapest edge instead when that edge's error (the same volume
+   * terms over the triangles around its two ends) is under a quarter of the triangle's
+   * (default on; beyond the paper). A triangle collapse always changes a curved surface, while
+   * an edge along a cylinder's ruling line or a gently curved direction merges at almost no
+   * error: on the shared meshes this lowers the mean distance by 18–45 % (3× on the CAD
+   * fandisk), and most collapses become edge collapses. Off gives the paper's triangle
+   * collapses only, about 1.5× as fast; then also lower MinimumAngle (to 0), since triangle
+   * collapses alone cannot avoid thin triangles on terrain and the guard can stop them early.
+   */
+  vtkSetMacro(EdgeCollapses, bool);
+  vtkGetMacro(EdgeCollapses, bool);
+  vtkBooleanMacro(EdgeCollapses, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The angle guard, in degrees (default 10; 0 turns it off): no collapse may create an angle
+   * below it unless the collapsed neighbourhood already had one as small. A collapse that
+   * leaves the surface where it was (a plane, a straight crease) may still make thin triangles
+   * when no placement on a corner avoids them: CAD meshes need them along their creases.
    */
   vtkSetClampMacro(MinimumAngle, double, 0.0, 30.0);
   vtkGetMacro(MinimumAngle, double);
@@ -180,7 +196,8 @@ protected:
   bool UseNormalFactor = true;
   bool UseShapeFactor = false;
   bool UseVolumeWeights = true;
-  double MinimumAngle = 0.0;
+  bool EdgeCollapses = true;
+  double MinimumAngle = 10.0;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   double SquareVolumeError = 0.0;

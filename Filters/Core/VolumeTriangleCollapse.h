@@ -9,7 +9,8 @@
  *
  * - Per triangle i (eq. 3–4): Q_i = 1/9 · W_i · N_i · φ_i · S_i² · p pᵀ, with p its plane, S_i its
  *   area, the shape factor W_i = 2 (1 − cos min α) · S_i (§3.2), the normal constraint factor
- *   N_i = mean over its adjacent triangles j of (1 − |n_i · n_j|) / 2 (§3.2), and the constraint
+ *   N_i = mean over its adjacent triangles j of (1 − |n_i · n_j|) / 2 (§3.2) plus 0.01 (N is 0 on
+ *   a flat region, whose planes would then not hold a placed vertex on them), and the constraint
  *   weight φ_i of §3.1. The paper leaves φ loosely defined ("the original square volume
  *   variation"); here φ_i = 1 + E_i / S_i³, E_i being the mean squared-volume error already
  *   accumulated at the triangle's corners, so regions that have absorbed much volume change
@@ -40,8 +41,19 @@
  *   refreshed when a collapse next changes them.
  * - Constriction matrices are assembled from per-vertex sums of Q_i (a triangle across an edge
  *   is in two of the three sums, the triangle itself in all three).
- * - Optionally (MinimumAngle) the engine's angle guard rejects collapses that would make new
- *   slivers.
+ * - Beyond the paper (EdgeCollapses, default on): each triangle also prices its three edges,
+ *   an edge's quadric summing the Q_i around its two ends (t and the triangle across it, which
+ *   hold both, once) and its point minimising it as above. When the cheapest edge's error is
+ *   under a quarter of the triangle's, the triangle's plan is that edge collapse instead. A
+ *   triangle collapse always cuts into a curved surface, an edge along a cylinder's ruling line
+ *   or a gently curved direction hardly does: on the shared meshes the mean distance drops by
+ *   18–45 % (3× on the CAD fandisk). The heap key is the error per nominally removed triangle
+ *   (four for a triangle, two for an edge).
+ * - The engine's angle guard (MinimumAngle, default 10°) rejects collapses that would make new
+ *   slivers. A flat collapse — its error under 10⁻⁷ · Σ weights · (longest edge)², the point
+ *   within about 3·10⁻⁴ edge lengths of its planes — that fails only the guard, and for which no
+ *   corner placement passes, is still made: on a plane or a straight crease it loses nothing,
+ *   and CAD meshes need thin triangles along their creases.
  */
 #ifndef MeshSimplification_VolumeTriangleCollapse_h
 #define MeshSimplification_VolumeTriangleCollapse_h
@@ -73,7 +85,10 @@ struct VolumeCollapseOptions
   double BoundaryCornerAngle = 60.0;
   /// The engine's angle guard (degrees; 0 turns it off): no collapse makes a new angle below
   /// it unless the neighbourhood had one as small.
-  double MinimumAngle = 0.0;
+  double MinimumAngle = 10.0;
+  /// Let a triangle collapse its cheapest edge instead when that costs under a quarter of the
+  /// triangle's error (beyond the paper; off gives the paper's triangle collapses only).
+  bool EdgeCollapses = true;
   bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
   bool UseNormalFactor = true;
   bool UseVolumeWeights = true;

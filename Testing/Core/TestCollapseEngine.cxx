@@ -408,6 +408,53 @@ void VolumeCollapseKeepsPlaneAndCorners()
   }
   CHECK(corners == 4);
 }
+double LargestRadialDeviation(const meshsimp::VolumeCollapseResult& result)
+{
+  double largest = 0.0;
+  for (std::size_t i = 0; i < result.Points.size(); i += 3)
+  {
+    largest = std::max(largest, std::abs(std::hypot(result.Points[i], result.Points[i + 1]) - 0.5));
+  }
+  return largest;
+}
+
+void VolumeCollapseMergesTubeAlongItsRulings()
+{
+  // On a cylinder an edge along a ruling line collapses without error, a triangle never does:
+  // with edge collapses every point stays on the cylinder, with the paper's triangle
+  // collapses alone points move inside it.
+  const Mesh tube = Tube(32, 33); // 2048 triangles
+  meshsimp::VolumeCollapseOptions options;
+  options.TargetTriangles = 1024;
+  options.PreserveBoundary = true;
+  meshsimp::VolumeCollapseResult withEdges, trianglesOnly;
+  CHECK(meshsimp::VolumeTriangleCollapse(tube.View(), options, withEdges));
+  options.EdgeCollapses = false;
+  CHECK(meshsimp::VolumeTriangleCollapse(tube.View(), options, trianglesOnly));
+  CHECK(std::abs(static_cast<std::int64_t>(withEdges.Triangles.size() / 3) - 1024) <= 10);
+  CHECK(std::abs(static_cast<std::int64_t>(trianglesOnly.Triangles.size() / 3) - 1024) <= 10);
+  CHECK(LargestRadialDeviation(withEdges) < 1e-9);
+  CHECK(LargestRadialDeviation(trianglesOnly) > 1e-3);
+}
+
+void VolumeCollapseDefaultGuardReachesPlaneTarget()
+{
+  // The default angle guard (10°) does not stop a flat grid short of a 95 % target, and the
+  // grid stays flat.
+  const Mesh grid = Grid(32); // 2048 triangles
+  meshsimp::VolumeCollapseOptions options;
+  CHECK(options.MinimumAngle == 10.0);
+  options.TargetTriangles = 102;
+  meshsimp::VolumeCollapseResult result;
+  CHECK(meshsimp::VolumeTriangleCollapse(grid.View(), options, result));
+  CHECK(!result.StoppedEarly);
+  CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 102) <= 1);
+  for (std::size_t i = 2; i < result.Points.size(); i += 3)
+  {
+    CHECK(result.Points[i] == 0.0);
+  }
+}
+
 void VolumeCollapseReportsProgressAndAborts()
 {
   // Progress rises from the set-up to the end; a caller that says stop gets false at once.
@@ -481,6 +528,8 @@ int main()
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
+    { "VolumeCollapseMergesTubeAlongItsRulings", VolumeCollapseMergesTubeAlongItsRulings },
+    { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
     { "VolumeCollapseSurvivesRandomSoups", VolumeCollapseSurvivesRandomSoups },
   });

@@ -91,6 +91,30 @@ Mesh Cube(int n)
   return mesh;
 }
 
+/// The side of a cylinder of radius 1/2 around the z axis, z in [0, 1]: `around` points per ring,
+/// `rings` rings, open at both ends, outward normals.
+Mesh Tube(int around, int rings)
+{
+  Mesh mesh;
+  for (int j = 0; j < rings; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const double angle = 2.0 * 3.14159265358979323846 * i / around;
+      mesh.Points.insert(mesh.Points.end(), { 0.5 * std::cos(angle), 0.5 * std::sin(angle), double(j) / (rings - 1) });
+    }
+  }
+  for (int j = 0; j + 1 < rings; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const int a = j * around + i, b = j * around + (i + 1) % around, c = a + around, d = b + around;
+      mesh.Triangles.insert(mesh.Triangles.end(), { a, b, d, a, d, c });
+    }
+  }
+  return mesh;
+}
+
 /// Cube(n) pushed out onto the sphere of radius 1/2 around the cube's centre.
 Mesh Sphere(int n)
 {
