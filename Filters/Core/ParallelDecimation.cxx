@@ -178,6 +178,7 @@ private:
   std::vector<DecimationVertexType> Types;
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
+  std::vector<std::uint32_t> Listed; // round stamp of the vertices listed for re-evaluation
   std::uint32_t Round = 0;
   std::vector<std::int32_t> Live, Order, Sorted, Buckets;
   std::vector<std::uint8_t> Gone; // removed by a collapse
@@ -579,6 +580,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   this->Importance.assign(n, Never);
   this->Types.assign(n, DecimationVertexType::Complex);
   this->Owner.assign(n, 0);
+  this->Listed.assign(n, 0);
   this->Stuck.assign(n, 0);
   this->Gone.assign(n, 0);
   this->Live.resize(n);
@@ -604,7 +606,8 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
 
   // Steps 3–7: rounds of super-independent sets until the target.
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
-  std::vector<std::int32_t> chosen, affected;
+  std::vector<std::int32_t> chosen, affected, neighbours;
+  std::vector<std::int64_t> slices;
   std::vector<CollapsePlan> plans, applied;
   std::vector<std::uint8_t> planned;
   double fraction = std::min(1.0, std::max(1e-3, this->Options.RoundFraction));
@@ -625,41 +628,65 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     this->ForEachInParts(count, 2000, [&](std::int64_t i, Workspace& work) {
       planned[i] = this->Plan(chosen[i], work, plans[i]) ? 1 : 0;
     });
-    // The neighbours of each removed vertex are the vertices whose triangles change.
+    // The neighbours of each removed vertex are the vertices whose triangles change: listed per
+    // removal in its own slice (two per triangle around it), concurrently, while the survivor
+    // inherits what the removed vertex measured (survivors are distinct: the stars of a round's
+    // vertices share no vertex).
     applied.clear();
-    affected.clear();
+    slices.assign(chosen.size() + 1, 0);
     for (std::int64_t i = 0; i < count; ++i)
     {
-      const std::int32_t v = chosen[i];
       if (!planned[i])
       {
-        this->Stuck[v] = 1; // until a change nearby re-evaluates it
-        continue;
+        this->Stuck[chosen[i]] = 1; // until a change nearby re-evaluates it
       }
-      applied.push_back(plans[i]);
-      this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-        const std::int32_t* tri = this->Mesh.Triangle(t);
-        for (int k = 0; k < 3; ++k)
+      else
+      {
+        applied.push_back(plans[i]);
+      }
+      std::int64_t triangles = 0;
+      this->Mesh.ForEachTriangle(chosen[i], [&](std::int32_t) { ++triangles; });
+      slices[i + 1] = slices[i] + (planned[i] ? 2 * triangles : 0);
+    }
+    neighbours.resize(static_cast<std::size_t>(slices[count]));
+    this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t i = begin; i < end; ++i)
+      {
+        if (!planned[i])
         {
-          if (tri[k] != v)
-          {
-            affected.push_back(tri[k]);
-          }
+          continue;
         }
-      });
-      // The survivor inherits what the removed vertex measured.
-      const std::int32_t kept = plans[i].Vertices[0];
-      if (this->Options.Measure == ImportanceMeasure::Quadric)
-      {
-        this->Quadrics[kept] += this->Quadrics[v];
-        this->OwnError[kept] = this->Quadrics[kept].Evaluate(this->Mesh.Point(kept));
+        const std::int32_t v = chosen[i];
+        std::int32_t* out = neighbours.data() + slices[i];
+        this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+          const std::int32_t* tri = this->Mesh.Triangle(t);
+          const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+          *out++ = tri[(k + 1) % 3];
+          *out++ = tri[(k + 2) % 3];
+        });
+        const std::int32_t kept = plans[i].Vertices[0];
+        if (this->Options.Measure == ImportanceMeasure::Quadric)
+        {
+          this->Quadrics[kept] += this->Quadrics[v];
+          this->OwnError[kept] = this->Quadrics[kept].Evaluate(this->Mesh.Point(kept));
+        }
+        else if (this->Options.AccumulateError)
+        {
+          this->Accumulated[kept] += this->Importance[v];
+        }
+        this->Importance[v] = Never;
+        this->Gone[v] = 1;
       }
-      else if (this->Options.AccumulateError)
+    }, 40 * count);
+    // Each affected vertex once, in the order first listed (evaluations are independent).
+    affected.clear();
+    for (const std::int32_t w : neighbours)
+    {
+      if (this->Listed[w] != this->Round)
       {
-        this->Accumulated[kept] += this->Importance[v];
+        this->Listed[w] = this->Round;
+        affected.push_back(w);
       }
-      this->Importance[v] = Never;
-      this->Gone[v] = 1;
     }
     ++result.Rounds;
     if (applied.empty())
@@ -681,8 +708,6 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       continue;
     }
     this->Mesh.ApplyIndependent(applied, this->Context);
-    std::sort(affected.begin(), affected.end());
-    affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
     evaluate(affected.data(), static_cast<std::int64_t>(affected.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));
