@@ -137,7 +137,7 @@ public:
    * terms over the triangles around its two ends) is under a quarter of the triangle's
    * (default on; beyond the paper). A triangle collapse always changes a curved surface, while
    * an edge along a cylinder's ruling line or a gently curved direction merges at almost no
-   * error: on the shared meshes this lowers the mean distance by 18–45 % (3× on the CAD
+   * error: on the shared meshes this lowers the mean distance by 18–46 % (to a third on the CAD
    * fandisk), and most collapses become edge collapses. Off gives the paper's triangle
    * collapses only, about 1.5× as fast; then also lower MinimumAngle (to 0), since triangle
    * collapses alone cannot avoid thin triangles on terrain and the guard can stop them early.

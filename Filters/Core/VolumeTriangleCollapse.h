@@ -47,8 +47,8 @@
  *   under a quarter of the triangle's, the triangle's plan is that edge collapse instead. A
  *   triangle collapse always cuts into a curved surface, an edge along a cylinder's ruling line
  *   or a gently curved direction hardly does: on the shared meshes the mean distance drops by
- *   18–45 % (3× on the CAD fandisk). The heap key is the error per nominally removed triangle
- *   (four for a triangle, two for an edge).
+ *   18–46 % (to a third on the CAD fandisk). The heap key is the error per nominally removed
+ *   triangle (four for a triangle, two for an edge).
  * - The engine's angle guard (MinimumAngle, default 10°) rejects collapses that would make new
  *   slivers. A flat collapse — its error under 10⁻⁷ · Σ weights · (longest edge)², the point
  *   within about 3·10⁻⁴ edge lengths of its planes — that fails only the guard, and for which no
