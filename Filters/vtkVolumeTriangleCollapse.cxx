@@ -109,6 +109,11 @@ int vtkVolumeTriangleCollapse::RequestData(
   }
   const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.PointSource.size());
   const vtkIdType numberOfTriangles = static_cast<vtkIdType>(result.TriangleSource.size());
+  if (result.FinalMinimumAngle < this->MinimumAngle)
+  {
+    vtkWarningMacro(<< "The angle guard refused every collapse left before the target: lowered from "
+                    << this->MinimumAngle << " to " << result.FinalMinimumAngle << " degrees.");
+  }
   if (result.StoppedEarly)
   {
     vtkWarningMacro(<< "Stopped at " << numberOfTriangles << " triangles ("

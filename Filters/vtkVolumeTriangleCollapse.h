@@ -139,8 +139,8 @@ public:
    * an edge along a cylinder's ruling line or a gently curved direction merges at almost no
    * error: on the shared meshes this lowers the mean distance by 18–46 % (to a third on the CAD
    * fandisk), and most collapses become edge collapses. Off gives the paper's triangle
-   * collapses only, about 1.5× as fast; then also lower MinimumAngle (to 0), since triangle
-   * collapses alone cannot avoid thin triangles on terrain and the guard can stop them early.
+   * collapses only, about 1.5× as fast; on terrain the angle guard then often has to be
+   * lowered to reach the target (see MinimumAngle).
    */
   vtkSetMacro(EdgeCollapses, bool);
   vtkGetMacro(EdgeCollapses, bool);
@@ -153,6 +153,8 @@ public:
    * below it unless the collapsed neighbourhood already had one as small. A collapse that
    * leaves the surface where it was (a plane, a straight crease) may still make thin triangles
    * when no placement on a corner avoids them: CAD meshes need them along their creases.
+   * When the guard refuses every collapse left before the target, it is lowered in steps
+   * (halved; 0 below 2°) with a warning, rather than the filter stopping early.
    */
   vtkSetClampMacro(MinimumAngle, double, 0.0, 30.0);
   vtkGetMacro(MinimumAngle, double);

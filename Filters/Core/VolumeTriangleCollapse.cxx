@@ -82,6 +82,7 @@ private:
   void UpdateAround(std::int32_t kept);
   int CountRemoved(const CollapsePlan& plan) const;
   std::int64_t Prepare(const TriangleMeshView& input, VolumeCollapseResult& result);
+  void QueueAll();
   bool CollapseToTarget(std::int64_t target, VolumeCollapseResult& result);
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
 
@@ -101,6 +102,7 @@ private:
   std::vector<double> VertexArea;        // area of its adjacent triangles, A_v
   std::vector<std::uint8_t> Moved;       // a collapse gave the vertex a new position
   double TotalArea = 0.0;
+  double GuardAngle = 0.0; // the angle guard in force (lowered when it refuses every collapse)
   CollapseHeap Heap;
   std::vector<std::uint32_t> VertexMarks;
   std::uint32_t Stamp = 0;
@@ -548,7 +550,9 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
     p = (p - this->Origin) * this->Scale;
   }
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
-  this->Mesh.SetMinimumAngle(this->Options.MinimumAngle);
+  this->GuardAngle = std::max(0.0, this->Options.MinimumAngle);
+  result.FinalMinimumAngle = this->GuardAngle;
+  this->Mesh.SetMinimumAngle(this->GuardAngle);
   const std::int32_t n = this->Mesh.NumberOfPoints();
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   for (std::int32_t v = 0; v < n; ++v)
@@ -593,26 +597,31 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   {
     this->TotalArea += a;
   }
-  // Initial costs in parallel, queued in triangle order (the heap's tie rule makes that order
-  // count).
-  std::vector<double> initial(m);
+  this->QueueAll();
+  return target;
+}
+
+void VolumeCollapser::QueueAll()
+{
+  // Costs in parallel, queued in triangle order (the heap's tie rule makes that order count).
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
+  std::vector<double> priority(m);
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
-      const Candidate candidate = this->Evaluate(static_cast<std::int32_t>(t));
-      initial[t] = candidate.Valid ? candidate.Priority : -1.0;
+      const std::int32_t id = static_cast<std::int32_t>(t);
+      const Candidate candidate = this->Mesh.IsAlive(id) ? this->Evaluate(id) : Candidate();
+      priority[t] = candidate.Valid ? candidate.Priority : -1.0;
     }
   }, 32 * static_cast<std::int64_t>(m));
   this->Heap.Reset(m);
   for (std::int32_t t = 0; t < m; ++t)
   {
-    if (initial[t] >= 0.0)
+    if (priority[t] >= 0.0)
     {
-      this->Heap.Set(t, initial[t]);
+      this->Heap.Set(t, priority[t]);
     }
   }
-  std::vector<double>().swap(initial);
-  return target;
 }
 
 bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult& result)
@@ -625,8 +634,18 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
   {
     if (this->Heap.Empty())
     {
-      result.StoppedEarly = true;
-      break;
+      if (this->GuardAngle <= 0.0)
+      {
+        result.StoppedEarly = true;
+        break;
+      }
+      // Every collapse left is refused: lower the angle guard a step (halving; 0 below 2°),
+      // requeue every triangle and go on, rather than stop short of the target.
+      this->GuardAngle = this->GuardAngle >= 2.0 ? 0.5 * this->GuardAngle : 0.0;
+      this->Mesh.SetMinimumAngle(this->GuardAngle);
+      result.FinalMinimumAngle = this->GuardAngle;
+      this->QueueAll();
+      continue;
     }
     const double queuedCost = this->Heap.TopCost();
     const std::int32_t t = this->Heap.Pop();

@@ -53,7 +53,9 @@
  *   slivers. A flat collapse — its error under 10⁻⁷ · Σ weights · (longest edge)², the point
  *   within about 3·10⁻⁴ edge lengths of its planes — that fails only the guard, and for which no
  *   corner placement passes, is still made: on a plane or a straight crease it loses nothing,
- *   and CAD meshes need thin triangles along their creases.
+ *   and CAD meshes need thin triangles along their creases. When the guard refuses every
+ *   collapse left before the target, it is lowered a step (halved; 0 below 2°) and every
+ *   triangle requeued, so the filter stops early only when no collapse keeps the mesh valid.
  */
 #ifndef MeshSimplification_VolumeTriangleCollapse_h
 #define MeshSimplification_VolumeTriangleCollapse_h
@@ -111,6 +113,9 @@ struct VolumeCollapseResult
   std::int64_t TargetTriangles = 0;
   std::int64_t NonFinitePoints = 0;
   bool StoppedEarly = false;               // no legal collapse was left before the target
+  /// The angle guard at the end: below MinimumAngle when it refused every collapse left before
+  /// the target and was lowered (halved, 0 below 2°) to go on.
+  double FinalMinimumAngle = 0.0;
 };
 
 /// Runs the simplification. Returns false when aborted through the context's progress.

@@ -455,6 +455,27 @@ void VolumeCollapseDefaultGuardReachesPlaneTarget()
   }
 }
 
+void VolumeCollapseLowersGuardRatherThanStop()
+{
+  // Triangle collapses alone on a bumpy terrain under the strictest guard (30°): the guard
+  // refuses every collapse long before 95 %, is lowered step by step, and the target is met.
+  Mesh terrain = Grid(24); // 1152 triangles
+  std::mt19937 random(7);
+  for (std::size_t i = 2; i < terrain.Points.size(); i += 3)
+  {
+    terrain.Points[i] = 0.05 * std::uniform_real_distribution<double>(0.0, 1.0)(random);
+  }
+  meshsimp::VolumeCollapseOptions options;
+  options.EdgeCollapses = false;
+  options.MinimumAngle = 30.0;
+  options.TargetTriangles = 58;
+  meshsimp::VolumeCollapseResult result;
+  CHECK(meshsimp::VolumeTriangleCollapse(terrain.View(), options, result));
+  CHECK(!result.StoppedEarly);
+  CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 58) <= 1);
+  CHECK(result.FinalMinimumAngle < 30.0);
+}
+
 void VolumeCollapseReportsProgressAndAborts()
 {
   // Progress rises from the set-up to the end; a caller that says stop gets false at once.
@@ -530,6 +551,7 @@ int main()
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
     { "VolumeCollapseMergesTubeAlongItsRulings", VolumeCollapseMergesTubeAlongItsRulings },
     { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
+    { "VolumeCollapseLowersGuardRatherThanStop", VolumeCollapseLowersGuardRatherThanStop },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
     { "VolumeCollapseSurvivesRandomSoups", VolumeCollapseSurvivesRandomSoups },
   });
