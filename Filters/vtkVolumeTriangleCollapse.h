@@ -120,7 +120,7 @@ public:
   ///@{
   /**
    * The factors of each triangle's error term (§3.1–3.2): the normal constraint factor
-   * (default on; its square root, so that it grows with the bend angle), the shape factor 2 (1 − cos min α) · S (default off: it makes slivers cheap
+   * (default on), the shape factor 2 (1 − cos min α) · S (default off: it makes slivers cheap
    * to collapse, which on CAD meshes removes creases), and the constraint weight of the error
    * already accumulated (default on).
    */

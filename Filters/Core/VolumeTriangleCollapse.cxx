@@ -15,8 +15,8 @@ namespace
 {
 using Vec3 = Eigen::Vector3d;
 constexpr double Pi = 3.14159265358979323846;
-/// Added to the normal factor of §3.2, which is 0 on a flat region: with no weight there, a flat
-/// region's planes would not hold a vertex placed by eq. (5) on them.
+/// Added to the normal factor N of §3.2, which is 0 on a flat region: with no weight there, a
+/// flat region's planes would not hold a vertex placed by eq. (5) on them.
 constexpr double NormalFactorFloor = 0.01;
 /// An edge of a triangle collapses instead of the triangle when its error is below this share
 /// of the triangle's (measured: a half, the share per removed triangle, made more slivers).
@@ -161,9 +161,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
   }
   if (this->Options.UseNormalFactor)
   {
-    // §3.2: N = mean over the adjacent triangles of (1 − |n · n_j|) / 2 = mean sin²(θ_j / 2);
-    // its square root is used, so that the factor grows with the bend angle, not its square
-    // (with N itself gently curved regions are nearly as cheap as flat ones).
+    // §3.2: N = mean over the adjacent triangles of (1 − |n · n_j|) / 2.
     double sum = 0.0;
     int count = 0;
     this->ForEachAdjacent(t, [&](std::int32_t j) {
@@ -173,7 +171,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
         ++count;
       }
     });
-    weight *= std::sqrt(count > 0 ? std::max(0.0, sum / count) : 0.0) + NormalFactorFloor;
+    weight *= (count > 0 ? std::max(0.0, sum / count) : 0.0) + NormalFactorFloor;
   }
   if (this->Options.UseVolumeWeights)
   {

@@ -9,12 +9,8 @@
  *
  * - Per triangle i (eq. 3–4): Q_i = 1/9 · W_i · N_i · φ_i · S_i² · p pᵀ, with p its plane, S_i its
  *   area, the shape factor W_i = 2 (1 − cos min α) · S_i (§3.2), the normal constraint factor
- *   N_i from §3.2's mean over the adjacent triangles j of (1 − |n_i · n_j|) / 2 = sin²(θ_j / 2),
- *   taken as its square root (so that it grows with the bend angle, not its square: with the
- *   paper's N gently curved regions are nearly as cheap as flat ones, and on the CAD fandisk at
- *   70 % the Hausdorff distance was 1.9× vtkQuadricDecimation's against 1.3–1.9×, typically
- *   1.5×, with the root) plus 0.01 (N is 0 on a flat region, whose planes would then not hold a
- *   placed vertex on them), and the constraint
+ *   N_i = mean over its adjacent triangles j of (1 − |n_i · n_j|) / 2 (§3.2) plus 0.01 (N is 0 on
+ *   a flat region, whose planes would then not hold a placed vertex on them), and the constraint
  *   weight φ_i of §3.1. The paper leaves φ loosely defined ("the original square volume
  *   variation"); here φ_i = 1 + E_i / S_i³, E_i being the mean squared-volume error already
  *   accumulated at the triangle's corners, so regions that have absorbed much volume change
