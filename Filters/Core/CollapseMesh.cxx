@@ -198,9 +198,7 @@ std::int32_t CollapseMesh::Valence(std::int32_t v, CheckScratch& scratch) const
     this->Neighbours(v, scratch.Vertices, scratch);
     return static_cast<std::int32_t>(scratch.Vertices.size());
   }
-  std::int32_t triangles = 0;
-  this->ForEachTriangle(v, [&](std::int32_t) { ++triangles; });
-  return triangles + (this->OnBoundary(v) ? 1 : 0);
+  return this->Count[v] + (this->OnBoundary(v) ? 1 : 0);
 }
 
 void CollapseMesh::Surviving(std::vector<std::int32_t>& used, std::vector<std::int32_t>& triangles,

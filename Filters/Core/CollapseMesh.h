@@ -111,6 +111,9 @@ public:
   bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
   void Lock(std::int32_t v) { this->Locked[v] = 1; }
 
+  /// The number of alive triangles around v.
+  std::int32_t NumberOfTrianglesAround(std::int32_t v) const { return this->Count[v]; }
+
   /// Calls f(t) for every alive triangle around v (spans hold alive triangles only).
   template <typename F>
   void ForEachTriangle(std::int32_t v, F&& f) const

@@ -644,9 +644,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       {
         applied.push_back(plans[i]);
       }
-      std::int64_t triangles = 0;
-      this->Mesh.ForEachTriangle(chosen[i], [&](std::int32_t) { ++triangles; });
-      slices[i + 1] = slices[i] + (planned[i] ? 2 * triangles : 0);
+      slices[i + 1] = slices[i] + (planned[i] ? 2 * this->Mesh.NumberOfTrianglesAround(chosen[i]) : 0);
     }
     neighbours.resize(static_cast<std::size_t>(slices[count]));
     this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {

@@ -25,6 +25,13 @@ constexpr double EdgeErrorShare = 0.25;
 /// edge)²: its point lies within about 3·10⁻⁴ edge lengths of the planes (RMS).
 constexpr double FlatTolerance = 1e-7;
 
+/// The heap key of a plan: its error per triangle it nominally removes (a triangle collapse
+/// four, an edge collapse two).
+double PriorityOf(double cost, int count)
+{
+  return cost / (count == 3 ? 4.0 : 2.0);
+}
+
 class VolumeCollapser
 {
 public:
@@ -353,7 +360,7 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   }
   candidate.Q = q;
   candidate.Cost = q.Evaluate(plan.Position); // eq. (5)
-  candidate.Priority = 0.25 * candidate.Cost;
+  candidate.Priority = PriorityOf(candidate.Cost, 3);
   if (candidate.FreePlacement && this->Options.EdgeCollapses)
   {
     this->CheaperEdge(t, across, candidate);
@@ -430,7 +437,7 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candida
   plan.Position = bestX;
   candidate.Q = bestQ;
   candidate.Cost = bestCost;
-  candidate.Priority = 0.5 * bestCost;
+  candidate.Priority = PriorityOf(bestCost, 2);
 }
 
 bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate) const
@@ -457,7 +464,7 @@ bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate) const
       found = true;
     }
   }
-  candidate.Priority = candidate.Cost / (count == 3 ? 4.0 : 2.0);
+  candidate.Priority = PriorityOf(candidate.Cost, count);
   return found;
 }
 

@@ -418,7 +418,7 @@ double LargestRadialDeviation(const meshsimp::VolumeCollapseResult& result)
   return largest;
 }
 
-void VolumeCollapseMergesTubeAlongItsRulings()
+void VolumeCollapseKeepsTubeOnItsCylinder()
 {
   // On a cylinder an edge along a ruling line collapses without error, a triangle never does:
   // with edge collapses every point stays on the cylinder, with the paper's triangle
@@ -549,7 +549,7 @@ int main()
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
-    { "VolumeCollapseMergesTubeAlongItsRulings", VolumeCollapseMergesTubeAlongItsRulings },
+    { "VolumeCollapseKeepsTubeOnItsCylinder", VolumeCollapseKeepsTubeOnItsCylinder },
     { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
     { "VolumeCollapseLowersGuardRatherThanStop", VolumeCollapseLowersGuardRatherThanStop },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
