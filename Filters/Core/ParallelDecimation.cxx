@@ -82,14 +82,20 @@ struct VertexState
   std::int32_t Along[2] = { -1, -1 };
 };
 
+/// One triangle around a vertex v: its corners after and before v, and the cross product of
+/// their offsets from v (the normal times twice the area) with its length.
+struct StarTriangle
+{
+  Vec3 Cross;
+  double Length;
+  std::int32_t Id, Next, Previous;
+};
+
 /// Per-thread working memory.
 struct Workspace
 {
+  std::vector<StarTriangle> Star;
   std::vector<StarEdge> Edges;
-  std::vector<std::int32_t> Triangles;
-  std::vector<Vec3> Crosses;
-  std::vector<double> Lengths; // of the crosses: twice the areas
-  std::vector<std::int32_t> Previous;
   CollapseMesh::CheckScratch Scratch;
   struct Option
   {
@@ -132,7 +138,7 @@ private:
   void InitializeQuadrics();
   /// Half the change of area when v collapses into u (its star in the workspace), or -1 when a
   /// remaining triangle would turn by more than the deviation limit or degenerate (§5.3).
-  double AreaChange(std::int32_t v, std::int32_t u, const Workspace& work) const;
+  double AreaChange(std::int32_t u, const Workspace& work) const;
   bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const;
   /// Fills chosen with the round's set; true when the window covered every candidate.
   bool SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen);
@@ -187,31 +193,31 @@ private:
 
 void Decimator::CollectStar(std::int32_t v, Workspace& work) const
 {
-  // The triangles around v with their cross products and lengths, and the edges (v, w) with the
-  // triangles on either side: the edge to a triangle's next corner is the edge to another's
-  // previous corner (an open fan leaves one of each unmatched).
-  work.Triangles.clear();
-  work.Crosses.clear();
-  work.Lengths.clear();
-  work.Previous.clear();
-  work.Edges.clear();
+  // The triangles around v, and the edges (v, w) with the triangles on either side: the edge to
+  // a triangle's next corner is the edge to another's previous corner (an open fan leaves one of
+  // each unmatched).
+  const std::size_t count = static_cast<std::size_t>(this->Mesh.NumberOfTrianglesAround(v));
+  work.Star.resize(count);
+  work.Edges.resize(count);
   const Vec3& p = this->Mesh.Point(v);
+  std::size_t slot = 0;
   this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
     const std::int32_t* tri = this->Mesh.Triangle(t);
     const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-    const std::int32_t next = tri[(k + 1) % 3], previous = tri[(k + 2) % 3];
-    const std::int32_t slot = static_cast<std::int32_t>(work.Triangles.size());
-    work.Triangles.push_back(t);
-    work.Crosses.push_back((this->Mesh.Point(next) - p).cross(this->Mesh.Point(previous) - p));
-    work.Lengths.push_back(work.Crosses.back().norm());
-    work.Previous.push_back(previous);
-    work.Edges.push_back({ next, slot, -1 });
+    StarTriangle& star = work.Star[slot];
+    star.Id = t;
+    star.Next = tri[k == 2 ? 0 : k + 1];
+    star.Previous = tri[k == 0 ? 2 : k - 1];
+    star.Cross = (this->Mesh.Point(star.Next) - p).cross(this->Mesh.Point(star.Previous) - p);
+    star.Length = star.Cross.norm();
+    work.Edges[slot] = { star.Next, static_cast<std::int32_t>(slot), -1 };
+    ++slot;
   });
-  const std::size_t count = work.Edges.size();
   for (std::size_t j = 0; j < count; ++j)
   {
+    const std::int32_t previous = work.Star[j].Previous;
     std::size_t i = 0;
-    while (i < count && work.Edges[i].W != work.Previous[j])
+    while (i < count && work.Edges[i].W != previous)
     {
       ++i;
     }
@@ -221,7 +227,7 @@ void Decimator::CollectStar(std::int32_t v, Workspace& work) const
     }
     else
     {
-      work.Edges.push_back({ work.Previous[j], -1, static_cast<std::int32_t>(j) });
+      work.Edges.push_back({ previous, -1, static_cast<std::int32_t>(j) });
     }
   }
 }
@@ -277,7 +283,7 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
     return state;
   }
   this->CollectStar(v, work);
-  if (work.Triangles.empty())
+  if (work.Star.empty())
   {
     return state;
   }
@@ -293,10 +299,10 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
       ++open;
       continue;
     }
-    const Vec3& a = work.Crosses[e.After];
-    const Vec3& b = work.Crosses[e.Before];
-    const double lengths = work.Lengths[e.After] * work.Lengths[e.Before];
-    if (lengths > 0.0 && a.dot(b) < this->CosFeature * lengths)
+    const StarTriangle& a = work.Star[e.After];
+    const StarTriangle& b = work.Star[e.Before];
+    const double lengths = a.Length * b.Length;
+    if (lengths > 0.0 && a.Cross.dot(b.Cross) < this->CosFeature * lengths)
     {
       if (open == 0 && sharp < 2)
       {
@@ -331,43 +337,42 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
     state.Along[0] = state.Along[1] = -1;
     return state; // corner
   }
+  state.Type = DecimationVertexType::Simple;
+  if (this->Options.Measure == ImportanceMeasure::Quadric)
+  {
+    state.Importance = 0.0; // Evaluate measures it from the half-edges
+    return state;
+  }
   // Eq. (5.1)–(5.3): the plane of the area-weighted normal through the area-weighted centre.
   // The cross product is the normal times twice the area.
   Vec3 normal = Vec3::Zero(), centre = Vec3::Zero();
   double area = 0.0;
-  for (std::size_t i = 0; i < work.Triangles.size(); ++i)
+  for (const StarTriangle& star : work.Star)
   {
-    const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
-    const double a = work.Lengths[i];
-    normal += work.Crosses[i];
-    centre += a * (this->Mesh.Point(tri[0]) + this->Mesh.Point(tri[1]) + this->Mesh.Point(tri[2])) / 3.0;
+    const double a = star.Length;
+    normal += star.Cross;
+    centre += a * (p + this->Mesh.Point(star.Next) + this->Mesh.Point(star.Previous)) / 3.0;
     area += a;
   }
   const double length = normal.norm();
-  state.Type = DecimationVertexType::Simple;
   state.Importance = length > 0.0 && area > 0.0 ? std::abs(normal.dot(p - centre / area)) / length : 0.0;
   return state;
 }
 
-double Decimator::AreaChange(std::int32_t v, std::int32_t u, const Workspace& work) const
+double Decimator::AreaChange(std::int32_t u, const Workspace& work) const
 {
   const Vec3& target = this->Mesh.Point(u);
   double before = 0.0, after = 0.0;
-  for (std::size_t i = 0; i < work.Triangles.size(); ++i)
+  for (const StarTriangle& star : work.Star)
   {
-    const std::int32_t* tri = this->Mesh.Triangle(work.Triangles[i]);
-    const Vec3& old = work.Crosses[i];
-    const double oldLength = work.Lengths[i];
-    before += oldLength;
-    if (tri[0] == u || tri[1] == u || tri[2] == u)
+    before += star.Length;
+    if (star.Next == u || star.Previous == u)
     {
       continue; // removed by the collapse
     }
-    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-    const Vec3 moved =
-      (this->Mesh.Point(tri[(k + 1) % 3]) - target).cross(this->Mesh.Point(tri[(k + 2) % 3]) - target);
+    const Vec3 moved = (this->Mesh.Point(star.Next) - target).cross(this->Mesh.Point(star.Previous) - target);
     const double newLength = moved.norm();
-    if (!(newLength > 0.0) || moved.dot(old) < this->CosDeviation * newLength * oldLength)
+    if (!(newLength > 0.0) || moved.dot(star.Cross) < this->CosDeviation * newLength * star.Length)
     {
       return -1.0;
     }
@@ -401,7 +406,7 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
     }
     else
     {
-      const double change = this->AreaChange(v, u, work);
+      const double change = this->AreaChange(u, work);
       if (change >= 0.0)
       {
         work.Options.push_back({ change, length, u });
@@ -426,7 +431,7 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
   // The best that passes the engine's checks (and, for Quadric, the deviation limit).
   for (const Workspace::Option& option : work.Options)
   {
-    if (quadric && this->AreaChange(v, option.Target, work) < 0.0)
+    if (quadric && this->AreaChange(option.Target, work) < 0.0)
     {
       continue;
     }
@@ -519,13 +524,12 @@ void Decimator::InitializeQuadrics()
     this->CollectStar(v, work);
     Quadric& q = this->Quadrics[v];
     const Vec3& p = this->Mesh.Point(v);
-    for (const Vec3& cross : work.Crosses)
+    for (const StarTriangle& star : work.Star)
     {
-      const double length = cross.norm();
-      if (length > 0.0)
+      if (star.Length > 0.0)
       {
-        const Vec3 normal = cross / length;
-        q += Quadric::FromPlane(normal, -normal.dot(p), 0.5 * length);
+        const Vec3 normal = star.Cross / star.Length;
+        q += Quadric::FromPlane(normal, -normal.dot(p), 0.5 * star.Length);
       }
     }
     for (const StarEdge& e : work.Edges)
@@ -534,7 +538,7 @@ void Decimator::InitializeQuadrics()
       {
         continue;
       }
-      const Vec3& cross = work.Crosses[e.After >= 0 ? e.After : e.Before];
+      const Vec3& cross = work.Star[e.After >= 0 ? e.After : e.Before].Cross;
       const Vec3 edge = this->Mesh.Point(e.W) - p;
       const Vec3 side = edge.cross(cross);
       const double length = side.norm();
