@@ -85,7 +85,8 @@ SaveData(os.path.join(args.output, "terrain_volume_95.vtp"), proxy=terrain_volum
 side_by_side(terrain, terrain_volume, "elevation", "terrain-volume",
              os.path.join(args.output, "terrain_volume_95.png"), terrain_camera)
 
-# Parallel Decimation: vertices removed on all cores, never moved; the cow coloured by each
+# Parallel Decimation: vertices removed on all cores, survivors moved to their planes' best
+# point; the cow coloured by each
 # vertex's type (simple, boundary, crease, corner), the terrain by its elevation.
 cow_parallel = ParallelDecimation(Input=cow, TargetReduction=0.9)
 SaveData(os.path.join(args.output, "cow_parallel_90.vtp"), proxy=cow_parallel)

@@ -45,6 +45,7 @@ int vtkParallelDecimation::RequestData(
   options.Measure = this->ImportanceMeasure == QUADRIC ? meshsimp::ImportanceMeasure::Quadric
                                                        : meshsimp::ImportanceMeasure::AveragePlane;
   options.AccumulateError = this->AccumulateError;
+  options.MoveSurvivors = this->MoveSurvivors;
   options.Choice = this->HalfEdgeChoice == SHORTEST_EDGE ? meshsimp::HalfEdgeChoice::ShortestEdge
                                                          : meshsimp::HalfEdgeChoice::LeastAreaChange;
   options.MaximumNormalDeviation = this->MaximumNormalDeviation;
@@ -110,6 +111,7 @@ int vtkParallelDecimation::RequestData(
 
   this->Rounds = static_cast<vtkIdType>(result.Rounds);
   vtkMeshSimplificationHelpers::AddFieldValue(output, "Rounds", static_cast<double>(result.Rounds));
+  vtkMeshSimplificationHelpers::AddFieldValue(output, "MovedPoints", static_cast<double>(result.MovedPoints));
   return 1;
 }
 
@@ -124,6 +126,7 @@ void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";
   os << indent << "ImportanceMeasure: " << this->ImportanceMeasure << "\n";
   os << indent << "AccumulateError: " << this->AccumulateError << "\n";
+  os << indent << "MoveSurvivors: " << this->MoveSurvivors << "\n";
   os << indent << "HalfEdgeChoice: " << this->HalfEdgeChoice << "\n";
   os << indent << "MaximumNormalDeviation: " << this->MaximumNormalDeviation << "\n";
   os << indent << "BucketImportance: " << this->BucketImportance << "\n";

@@ -270,6 +270,7 @@ Setters ParallelSetters(vtkParallelDecimation* f)
     { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
     { "ImportanceMeasure", [f](double v) { f->SetImportanceMeasure(static_cast<int>(v)); } },
     { "AccumulateError", [f](double v) { f->SetAccumulateError(v != 0.0); } },
+    { "MoveSurvivors", [f](double v) { f->SetMoveSurvivors(v != 0.0); } },
     { "HalfEdgeChoice", [f](double v) { f->SetHalfEdgeChoice(static_cast<int>(v)); } },
     { "MaximumNormalDeviation", [f](double v) { f->SetMaximumNormalDeviation(v); } },
     { "BucketImportance", [f](double v) { f->SetBucketImportance(v); } },

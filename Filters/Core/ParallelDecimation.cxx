@@ -142,6 +142,9 @@ private:
   bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const;
   /// Fills chosen with the round's set; true when the window covered every candidate.
   bool SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen);
+  /// MoveSurvivors: each survivor to its quadric's point of least error, where that turns no
+  /// triangle too far. Returns the number moved.
+  std::int64_t MoveSurvivors();
   void Output(const TriangleMeshView& input, ParallelDecimationResult& result) const;
 
   /// Runs f(i, workspace) for i in [0, count), split into one part per thread, each part with
@@ -188,6 +191,7 @@ private:
   std::uint32_t Round = 0;
   std::vector<std::int32_t> Live, Order, Sorted, Buckets;
   std::vector<std::uint8_t> Gone; // removed by a collapse
+  std::vector<std::uint8_t> Moved; // moved by MoveSurvivors
   std::vector<Workspace> Workspaces;
 };
 
@@ -718,18 +722,110 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       return false;
     }
   }
+  if (this->Options.MoveSurvivors && this->Options.Measure == ImportanceMeasure::Quadric)
+  {
+    result.MovedPoints = this->MoveSurvivors();
+  }
   this->Output(input, result);
   return this->Context.Report(1.0);
 }
 
+std::int64_t Decimator::MoveSurvivors()
+{
+  // Every new point is found from the old points, so neither the order nor the thread count
+  // matters: the survivor's quadric minimiser (along the directions the quadric determines, as
+  // in vtkQuadricDecimation's placement), at most half the survivor's shortest edge away.
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
+  std::vector<Vec3> before(n);
+  std::vector<Vec3> after(this->Live.size());
+  this->Moved.assign(n, 0);
+  this->ForEachInParts(static_cast<std::int64_t>(this->Live.size()), 100, [&](std::int64_t i, Workspace&) {
+    const std::int32_t v = this->Live[i];
+    const Vec3& p = this->Mesh.Point(v);
+    before[v] = p;
+    const VertexClass c = this->Mesh.Class(v);
+    if (this->Gone[v] || this->Mesh.IsLocked(v) || c == VertexClass::NonManifold || c == VertexClass::Corner)
+    {
+      return;
+    }
+    double shortest = Never; // squared
+    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        shortest = tri[k] != v ? std::min(shortest, (this->Mesh.Point(tri[k]) - p).squaredNorm()) : shortest;
+      }
+    });
+    Vec3 x;
+    MinimizeQuadricNear(this->Quadrics[v], p, x);
+    const double reach = 0.5 * std::sqrt(shortest), distance = (x - p).norm();
+    if (distance > 0.0 && reach < Never)
+    {
+      after[i] = distance > reach ? Vec3(p + (x - p) * (reach / distance)) : x;
+      this->Moved[v] = 1;
+    }
+  });
+  for (std::size_t i = 0; i < this->Live.size(); ++i)
+  {
+    if (this->Moved[this->Live[i]])
+    {
+      this->Mesh.SetPoint(this->Live[i], after[i]);
+    }
+  }
+  // A triangle that would turn by more than 60° (or degenerate) sends its moved corners back;
+  // repeated until none does (a corner sent back can only undo turns).
+  std::vector<std::uint8_t> turned(m);
+  for (bool again = true; again;)
+  {
+    this->Context.For(m, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t t = first; t < last; ++t)
+      {
+        const std::int32_t* tri = this->Mesh.Triangle(static_cast<std::int32_t>(t));
+        turned[t] = 0;
+        if (!this->Mesh.IsAlive(static_cast<std::int32_t>(t)) ||
+          !(this->Moved[tri[0]] || this->Moved[tri[1]] || this->Moved[tri[2]]))
+        {
+          continue;
+        }
+        const Vec3 a = (before[tri[1]] - before[tri[0]]).cross(before[tri[2]] - before[tri[0]]);
+        const Vec3 b = (this->Mesh.Point(tri[1]) - this->Mesh.Point(tri[0]))
+                         .cross(this->Mesh.Point(tri[2]) - this->Mesh.Point(tri[0]));
+        turned[t] = a.dot(b) > 0.5 * a.norm() * b.norm() ? 0 : 1;
+      }
+    }, 20 * static_cast<std::int64_t>(m));
+    again = false;
+    for (std::int32_t t = 0; t < m; ++t)
+    {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      for (int k = 0; turned[t] && k < 3; ++k)
+      {
+        if (this->Moved[tri[k]])
+        {
+          this->Moved[tri[k]] = 0;
+          this->Mesh.SetPoint(tri[k], before[tri[k]]);
+          again = true;
+        }
+      }
+    }
+  }
+  std::int64_t moved = 0;
+  for (const std::int32_t v : this->Live)
+  {
+    moved += this->Moved[v];
+  }
+  return moved;
+}
+
 void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& result) const
 {
-  // The surviving triangles and their points: input points, with their importance and type.
+  // The surviving triangles and their points, with their importance and type.
   std::vector<std::int32_t> used, kept;
   this->Mesh.Surviving(used, result.Triangles, kept);
   for (const std::int32_t v : used)
   {
-    const Vec3 p = input.Point(this->InputVertex[v]);
+    // Points MoveSurvivors left in place keep their input coordinates bit for bit.
+    const Vec3 p = !this->Moved.empty() && this->Moved[v] ? this->Mesh.Point(v) : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
     result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] : -1.0);

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace
@@ -129,6 +130,59 @@ Mesh Sphere(int n)
     }
   }
   return mesh;
+}
+/// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
+double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0)
+  {
+    return ap.norm();
+  }
+  const Eigen::Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3)
+  {
+    return bp.norm();
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    return (p - (a + d1 / (d1 - d3) * ab)).norm();
+  }
+  const Eigen::Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6)
+  {
+    return cp.norm();
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    return (p - (a + d2 / (d2 - d6) * ac)).norm();
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+  {
+    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
+  }
+  const double sum = va + vb + vc;
+  return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
+}
+
+/// Distance from p to the nearest of the triangles (3 point ids each) over points (3 each).
+double DistanceToSurface(const Eigen::Vector3d& p, const std::vector<double>& points,
+  const std::vector<std::int32_t>& triangles)
+{
+  auto point = [&](std::int32_t i) { return Eigen::Vector3d(&points[3 * static_cast<std::size_t>(i)]); };
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    nearest = std::min(nearest, DistanceToTriangle(p, point(triangles[t]), point(triangles[t + 1]), point(triangles[t + 2])));
+  }
+  return nearest;
 }
 } // namespace
 

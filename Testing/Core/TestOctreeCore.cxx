@@ -224,47 +224,6 @@ Mesh Cow()
   return ReadData("cow.off");
 }
 
-/// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
-double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-  const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-{
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0)
-  {
-    return ap.norm();
-  }
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3)
-  {
-    return bp.norm();
-  }
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
-  {
-    return (p - (a + d1 / (d1 - d3) * ab)).norm();
-  }
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6)
-  {
-    return cp.norm();
-  }
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
-  {
-    return (p - (a + d2 / (d2 - d6) * ac)).norm();
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-  {
-    return (p - (b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b))).norm();
-  }
-  const double sum = va + vb + vc;
-  return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
-}
-
 void CapOfAThinPartJoinsItsNeighbour()
 {
   // At 2 % of its triangles the elephant's trunk ends in a cluster that keeps no triangle and
@@ -285,13 +244,7 @@ void CapOfAThinPartJoinsItsNeighbour()
     const Eigen::Vector3d p = point(mesh.Points, v);
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t t = 0; t < result.Triangles.size(); t += 3)
-    {
-      nearest = std::min(nearest, DistanceToTriangle(p, point(result.Points, result.Triangles[t]),
-        point(result.Points, result.Triangles[t + 1]), point(result.Points, result.Triangles[t + 2])));
-    }
-    farthest = std::max(farthest, nearest);
+    farthest = std::max(farthest, DistanceToSurface(p, result.Points, result.Triangles));
   }
   std::printf("elephant at 111 triangles: farthest vertex %.2f %% of the diagonal\n",
     100 * farthest / (hi - lo).norm());

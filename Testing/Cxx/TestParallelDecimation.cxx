@@ -42,6 +42,7 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
       filter->SetInputData(cow);
       filter->SetTargetReduction(reduction);
       filter->SetImportanceMeasure(measure);
+      filter->MoveSurvivorsOff();
       filter->Update();
       vtkPolyData* out = filter->GetOutput();
       const double target = std::round(inputTriangles * (1 - reduction));
@@ -80,6 +81,29 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
       vtkDataArray* achieved = out->GetFieldData()->GetArray("AchievedReduction");
       CHECK(achieved &&
         std::abs(achieved->GetTuple1(0) - (1 - out->GetNumberOfPolys() / inputTriangles)) < 1e-12);
+
+      // MoveSurvivors (QUADRIC) moves points, not data: the same triangles and point data, and
+      // "MovedPoints" counts the points not at their input place.
+      vtkNew<vtkParallelDecimation> moving;
+      moving->SetInputData(cow);
+      moving->SetTargetReduction(reduction);
+      moving->SetImportanceMeasure(measure);
+      moving->Update();
+      vtkPolyData* moved = moving->GetOutput();
+      CHECK(moved->GetNumberOfPoints() == out->GetNumberOfPoints());
+      CHECK(moved->GetNumberOfPolys() == out->GetNumberOfPolys());
+      vtkIdType away = 0;
+      for (vtkIdType i = 0; i < std::min(moved->GetNumberOfPoints(), out->GetNumberOfPoints()); ++i)
+      {
+        std::array<double, 3> p, q;
+        moved->GetPoint(i, p.data());
+        out->GetPoint(i, q.data());
+        away += p != q ? 1 : 0;
+        CHECK(moved->GetPointData()->GetArray("Height")->GetTuple1(i) == height->GetTuple1(i));
+      }
+      vtkDataArray* count = moved->GetFieldData()->GetArray("MovedPoints");
+      CHECK(count && count->GetTuple1(0) == away);
+      CHECK(measure == vtkParallelDecimation::QUADRIC ? away > out->GetNumberOfPoints() / 2 : away == 0);
     }
   }
   // The paper's shortest-edge choice also meets the count and keeps the cow closed.

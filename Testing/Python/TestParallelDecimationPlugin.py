@@ -27,13 +27,25 @@ check(abs(cells - 580) <= 0.02 * 580, "90 %% reduction gives 580 +- 2 %% triangl
 check("Importance" in decimated.PointData.keys() and "VertexType" in decimated.PointData.keys(),
       "the Importance and VertexType arrays are present")
 
-# Vertices are removed, never moved: every output point is an input point.
+# Survivors move to their quadrics' minimisers by default (MovedPoints in the field data); with
+# MoveSurvivors off every output point is an input point, and the triangles are the same.
+check(decimated.MoveSurvivors == 1, "MoveSurvivors is on by default")
 source, output = servermanager.Fetch(cow), servermanager.Fetch(decimated)
 inputs = set(source.GetPoint(i) for i in range(source.GetNumberOfPoints()))
-check(all(output.GetPoint(i) in inputs for i in range(output.GetNumberOfPoints())),
-      "every output point is an input point")
 rounds = output.GetFieldData().GetArray("Rounds")
 check(rounds is not None and rounds.GetValue(0) > 0, "the number of rounds in the field data")
+moved = output.GetFieldData().GetArray("MovedPoints")
+check(moved is not None and 0 < moved.GetValue(0) <= output.GetNumberOfPoints(),
+      "the number of moved points in the field data")
+check(sum(output.GetPoint(i) not in inputs for i in range(output.GetNumberOfPoints())) == moved.GetValue(0),
+      "exactly the moved points are new")
+decimated.MoveSurvivors = 0
+kept = servermanager.Fetch(decimated)
+check(all(kept.GetPoint(i) in inputs for i in range(kept.GetNumberOfPoints())),
+      "MoveSurvivors off: every output point is an input point")
+check(kept.GetNumberOfCells() == output.GetNumberOfCells() and kept.GetNumberOfPoints() == output.GetNumberOfPoints(),
+      "MoveSurvivors changes no triangle count")
+decimated.MoveSurvivors = 1
 
 # The closed cow stays a closed 2-manifold, with either measure.
 for measure in ("Quadric", "Average Plane"):
