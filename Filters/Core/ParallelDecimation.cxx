@@ -65,6 +65,8 @@ using Vec3 = Eigen::Vector3d;
 constexpr double Pi = 3.14159265358979323846;
 constexpr double Never = std::numeric_limits<double>::infinity();
 constexpr double RelaxationStep = 15.0; // degrees
+/// Candidates whose neighbourhoods SelectRound gathers at once.
+constexpr std::int64_t RingBlock = 16384;
 
 /// One edge (v, W) around a vertex v: the triangle where W follows v and the one where W precedes
 /// it (-1 when missing: a boundary edge).
@@ -190,6 +192,8 @@ private:
   std::vector<std::uint32_t> Listed; // round stamp of the vertices listed for re-evaluation
   std::uint32_t Round = 0;
   std::vector<std::int32_t> Live, Order, Sorted, Buckets;
+  std::vector<std::int64_t> RingStart; // SelectRound: each candidate's slice of Rings
+  std::vector<std::int32_t> Rings;
   std::vector<std::uint8_t> Gone; // removed by a collapse
   std::vector<std::uint8_t> Moved; // moved by MoveSurvivors
   std::vector<Workspace> Workspaces;
@@ -485,32 +489,56 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
 
   ++this->Round;
   chosen.clear();
-  std::int64_t expected = 0, seen = 0;
+  std::int64_t expected = 0;
   const std::uint32_t round = this->Round;
-  for (const std::int32_t v : sorted)
+  const std::int64_t end = std::min<std::int64_t>(window, static_cast<std::int64_t>(sorted.size()));
+  for (std::int64_t first = 0; first < end && expected < need; first += RingBlock)
   {
-    if (expected >= need || seen >= window)
+    // The corners of each candidate's triangles, gathered concurrently a block at a time, so
+    // the greedy pass below, serial, reads flat lists instead of walking the mesh.
+    const std::int64_t count = std::min(RingBlock, end - first);
+    this->RingStart.resize(static_cast<std::size_t>(count) + 1);
+    this->RingStart[0] = 0;
+    for (std::int64_t i = 0; i < count; ++i)
     {
-      break;
+      this->RingStart[i + 1] = this->RingStart[i] + 3 * this->Mesh.NumberOfTrianglesAround(sorted[first + i]);
     }
-    ++seen;
+    this->Rings.resize(static_cast<std::size_t>(this->RingStart[count]));
+    this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
+      for (std::int64_t i = begin; i < last; ++i)
+      {
+        std::int32_t* out = this->Rings.data() + this->RingStart[i];
+        this->Mesh.ForEachTriangle(sorted[first + i], [&](std::int32_t t) {
+          const std::int32_t* tri = this->Mesh.Triangle(t);
+          *out++ = tri[0];
+          *out++ = tri[1];
+          *out++ = tri[2];
+        });
+      }
+    }, 20 * count);
     // Free when no vertex of its triangles is near a vertex taken before; then its triangles'
     // vertices are marked as near it.
-    bool free = this->Owner[v] != round;
-    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-      const std::int32_t* tri = this->Mesh.Triangle(t);
-      free = free && this->Owner[tri[0]] != round && this->Owner[tri[1]] != round && this->Owner[tri[2]] != round;
-    });
-    if (!free)
+    for (std::int64_t i = 0; i < count && expected < need; ++i)
     {
-      continue;
+      const std::int32_t v = sorted[first + i];
+      const std::int32_t* ring = this->Rings.data() + this->RingStart[i];
+      const std::int32_t* ringEnd = this->Rings.data() + this->RingStart[i + 1];
+      bool free = this->Owner[v] != round;
+      for (const std::int32_t* w = ring; free && w != ringEnd; ++w)
+      {
+        free = this->Owner[*w] != round;
+      }
+      if (!free)
+      {
+        continue;
+      }
+      chosen.push_back(v);
+      for (const std::int32_t* w = ring; w != ringEnd; ++w)
+      {
+        this->Owner[*w] = round;
+      }
+      expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
     }
-    chosen.push_back(v);
-    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-      const std::int32_t* tri = this->Mesh.Triangle(t);
-      this->Owner[tri[0]] = this->Owner[tri[1]] = this->Owner[tri[2]] = round;
-    });
-    expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
   }
   return window >= candidates;
 }
