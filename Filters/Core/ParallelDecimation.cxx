@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace meshsimp
 {
@@ -26,18 +27,24 @@ double BucketPosition(double x, double a, double alpha)
 
 void BucketOrder(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
   double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& buckets,
-  std::size_t limit)
+  std::size_t limit, const ExecutionContext& context)
 {
-  // One bucket per vertex on average; a counting sort by bucket, stable in the given order.
+  // One bucket per vertex on average; a counting sort by bucket, stable in the given order. The
+  // buckets are found concurrently, counted and filled serially.
   const std::size_t count = vertices.size();
   const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
   buckets.assign(static_cast<std::size_t>(bucketCount) + 1, 0);
   order.resize(2 * count);
   std::int32_t* bucketOf = order.data() + count; // the second half holds each vertex's bucket
+  context.For(static_cast<std::int64_t>(count), [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t i = first; i < last; ++i)
+    {
+      const double x = largest > 0.0 ? importance[vertices[i]] / largest : 0.0;
+      bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
+    }
+  }, 10 * static_cast<std::int64_t>(count));
   for (std::size_t i = 0; i < count; ++i)
   {
-    const double x = largest > 0.0 ? importance[vertices[i]] / largest : 0.0;
-    bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
     ++buckets[bucketOf[i] + 1];
   }
   std::int32_t last = bucketCount - 1; // the last bucket needed for the first `limit` vertices
@@ -188,10 +195,10 @@ private:
   std::vector<double> OwnError;     // Q_v(p_v)
   std::vector<DecimationVertexType> Types;
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
-  std::vector<std::uint32_t> Owner; // round stamp of the vertices near a taken one
+  std::vector<std::uint8_t> Owner; // round stamp of the vertices near a taken one
   std::vector<std::uint32_t> Listed; // round stamp of the vertices listed for re-evaluation
   std::uint32_t Round = 0;
-  std::vector<std::int32_t> Live, Order, Sorted, Buckets;
+  std::vector<std::int32_t> Live, NextLive, Order, Sorted, Buckets;
   std::vector<std::int64_t> RingStart; // SelectRound: each candidate's slice of Rings
   std::vector<std::int32_t> Rings;
   std::vector<std::uint8_t> Gone; // removed by a collapse
@@ -462,57 +469,97 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
 {
   // §5.6: bucket the removable vertices by eq. (5.6) of their importance, in O(N) by counting;
   // then §5.5: take them greedily in that order while their neighbourhoods stay disjoint.
-  // The vertices still in the mesh, compacted as they go; of them the removable ones.
-  this->Order.clear();
-  double largest = 0.0;
-  std::size_t live = 0;
-  for (const std::int32_t v : this->Live)
-  {
-    if (this->Gone[v])
+  // The vertices still in the mesh, compacted, and of them the removable ones: counted per part,
+  // then written in order, concurrently.
+  const std::int64_t size = static_cast<std::int64_t>(this->Live.size());
+  const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(this->Context.Threads, size / 4096));
+  std::vector<std::int64_t> liveAt(parts + 1, 0), candidateAt(parts + 1, 0);
+  std::vector<double> largestOf(parts, 0.0);
+  auto removable = [&](std::int32_t v) { return this->Importance[v] < Never && !this->Stuck[v]; };
+  this->Context.For(parts, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t part = first; part < last; ++part)
     {
-      continue;
+      std::int64_t lives = 0, candidates = 0;
+      double largest = 0.0;
+      for (std::int64_t i = size * part / parts, end = size * (part + 1) / parts; i < end; ++i)
+      {
+        const std::int32_t v = this->Live[i];
+        lives += this->Gone[v] ? 0 : 1;
+        if (!this->Gone[v] && removable(v))
+        {
+          ++candidates;
+          largest = std::max(largest, this->Importance[v]);
+        }
+      }
+      liveAt[part + 1] = lives;
+      candidateAt[part + 1] = candidates;
+      largestOf[part] = largest;
     }
-    this->Live[live++] = v;
-    if (this->Importance[v] < Never && !this->Stuck[v])
+  }, 4 * size);
+  std::partial_sum(liveAt.begin(), liveAt.end(), liveAt.begin());
+  std::partial_sum(candidateAt.begin(), candidateAt.end(), candidateAt.begin());
+  this->NextLive.resize(static_cast<std::size_t>(liveAt[parts]));
+  this->Order.resize(static_cast<std::size_t>(candidateAt[parts]));
+  this->Context.For(parts, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t part = first; part < last; ++part)
     {
-      this->Order.push_back(v);
-      largest = std::max(largest, this->Importance[v]);
+      std::int32_t* live = this->NextLive.data() + liveAt[part];
+      std::int32_t* candidate = this->Order.data() + candidateAt[part];
+      for (std::int64_t i = size * part / parts, end = size * (part + 1) / parts; i < end; ++i)
+      {
+        const std::int32_t v = this->Live[i];
+        if (!this->Gone[v])
+        {
+          *live++ = v;
+          if (removable(v))
+          {
+            *candidate++ = v;
+          }
+        }
+      }
     }
-  }
-  this->Live.resize(live);
+  }, 4 * size);
+  this->Live.swap(this->NextLive);
+  const double largest = *std::max_element(largestOf.begin(), largestOf.end());
   const std::int64_t candidates = static_cast<std::int64_t>(this->Order.size());
   const std::int64_t window =
     std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(fraction * static_cast<double>(candidates))));
   std::vector<std::int32_t>& sorted = this->Sorted;
   BucketOrder(this->Importance.data(), this->Order, largest, this->Options.BucketImportance,
-    this->Options.BucketShare, sorted, this->Buckets, static_cast<std::size_t>(window));
+    this->Options.BucketShare, sorted, this->Buckets, static_cast<std::size_t>(window), this->Context);
 
   ++this->Round;
   chosen.clear();
   std::int64_t expected = 0;
-  const std::uint32_t round = this->Round;
+  // Owner holds byte stamps (1–255), so that it stays in cache; cleared when they wrap.
+  const std::uint8_t round = static_cast<std::uint8_t>((this->Round - 1) % 255 + 1);
+  if (round == 1)
+  {
+    std::fill(this->Owner.begin(), this->Owner.end(), std::uint8_t(0));
+  }
   const std::int64_t end = std::min<std::int64_t>(window, static_cast<std::int64_t>(sorted.size()));
   for (std::int64_t first = 0; first < end && expected < need; first += RingBlock)
   {
-    // The corners of each candidate's triangles, gathered concurrently a block at a time, so
-    // the greedy pass below, serial, reads flat lists instead of walking the mesh.
+    // The other two corners of each candidate's triangles, gathered concurrently a block at a
+    // time, so the greedy pass below, serial, reads flat lists instead of walking the mesh.
     const std::int64_t count = std::min(RingBlock, end - first);
     this->RingStart.resize(static_cast<std::size_t>(count) + 1);
     this->RingStart[0] = 0;
     for (std::int64_t i = 0; i < count; ++i)
     {
-      this->RingStart[i + 1] = this->RingStart[i] + 3 * this->Mesh.NumberOfTrianglesAround(sorted[first + i]);
+      this->RingStart[i + 1] = this->RingStart[i] + 2 * this->Mesh.NumberOfTrianglesAround(sorted[first + i]);
     }
     this->Rings.resize(static_cast<std::size_t>(this->RingStart[count]));
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)
       {
         std::int32_t* out = this->Rings.data() + this->RingStart[i];
-        this->Mesh.ForEachTriangle(sorted[first + i], [&](std::int32_t t) {
+        const std::int32_t v = sorted[first + i];
+        this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
           const std::int32_t* tri = this->Mesh.Triangle(t);
-          *out++ = tri[0];
-          *out++ = tri[1];
-          *out++ = tri[2];
+          const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+          *out++ = tri[k == 2 ? 0 : k + 1];
+          *out++ = tri[k == 0 ? 2 : k - 1];
         });
       }
     }, 20 * count);
@@ -533,6 +580,7 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
         continue;
       }
       chosen.push_back(v);
+      this->Owner[v] = round;
       for (const std::int32_t* w = ring; w != ringEnd; ++w)
       {
         this->Owner[*w] = round;
