@@ -88,7 +88,7 @@ bool Contains(const std::int32_t* tri, std::int32_t v)
 
 } // namespace
 
-void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees)
+void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const ExecutionContext& context)
 {
   this->Points = std::move(mesh.Points);
   this->Triangles = std::move(mesh.Triangles);
@@ -103,31 +103,33 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees)
   const VertexTriangleAdjacency& adjacency = mesh.Adjacency;
   this->Refs.resize(adjacency.Corners.size());
   const double cosCorner = std::cos(cornerAngleDegrees * 3.14159265358979323846 / 180.0);
-  for (std::int32_t v = 0; v < n; ++v)
-  {
-    this->Start[v] = adjacency.Offsets[v];
-    this->Count[v] = adjacency.Offsets[v + 1] - adjacency.Offsets[v];
-    for (std::int32_t i = adjacency.Offsets[v]; i < adjacency.Offsets[v + 1]; ++i)
+  context.For(n, [&](std::int64_t first, std::int64_t last) {
+    for (std::int32_t v = static_cast<std::int32_t>(first); v < last; ++v)
     {
-      this->Refs[i] = adjacency.Corners[i].Triangle;
-    }
-    std::int32_t opening = -1, closing = -1;
-    VertexClass c = Classify(adjacency.Begin(v), adjacency.End(v), opening, closing);
-    if (c == VertexClass::Boundary)
-    {
-      // The boundary runs into v along the closing corner's far edge and leaves along the
-      // opening corner's: (Previous of opening) -> v -> (Next of closing), by orientation.
-      const Eigen::Vector3d in = this->Points[v] - this->Points[adjacency.Begin(v)[opening].Previous];
-      const Eigen::Vector3d out = this->Points[adjacency.Begin(v)[closing].Next] - this->Points[v];
-      const double lengths = in.norm() * out.norm();
-      if (lengths > 0.0 && in.dot(out) < cosCorner * lengths)
+      this->Start[v] = adjacency.Offsets[v];
+      this->Count[v] = adjacency.Offsets[v + 1] - adjacency.Offsets[v];
+      for (std::int32_t i = adjacency.Offsets[v]; i < adjacency.Offsets[v + 1]; ++i)
       {
-        c = VertexClass::Corner;
+        this->Refs[i] = adjacency.Corners[i].Triangle;
       }
+      std::int32_t opening = -1, closing = -1;
+      VertexClass c = Classify(adjacency.Begin(v), adjacency.End(v), opening, closing);
+      if (c == VertexClass::Boundary)
+      {
+        // The boundary runs into v along the closing corner's far edge and leaves along the
+        // opening corner's: (Previous of opening) -> v -> (Next of closing), by orientation.
+        const Eigen::Vector3d in = this->Points[v] - this->Points[adjacency.Begin(v)[opening].Previous];
+        const Eigen::Vector3d out = this->Points[adjacency.Begin(v)[closing].Next] - this->Points[v];
+        const double lengths = in.norm() * out.norm();
+        if (lengths > 0.0 && in.dot(out) < cosCorner * lengths)
+        {
+          c = VertexClass::Corner;
+        }
+      }
+      this->Classes[v] = c;
+      this->Locked[v] = c == VertexClass::NonManifold ? 1 : 0;
     }
-    this->Classes[v] = c;
-    this->Locked[v] = c == VertexClass::NonManifold ? 1 : 0;
-  }
+  }, 50 * static_cast<std::int64_t>(n));
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
   this->Scratch.Marks.assign(n, 0);
   this->Scratch.Stamp = 0;

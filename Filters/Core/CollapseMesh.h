@@ -91,9 +91,10 @@ public:
 
   /**
    * Takes a compact mesh's points, triangles and adjacency (moved out of it). A boundary vertex
-   * whose two boundary edges turn by more than cornerAngleDegrees is a Corner.
+   * whose two boundary edges turn by more than cornerAngleDegrees is a Corner. The vertices are
+   * classified on the context's threads.
    */
-  void Build(CompactMesh&& mesh, double cornerAngleDegrees = 60.0);
+  void Build(CompactMesh&& mesh, double cornerAngleDegrees = 60.0, const ExecutionContext& context = {});
 
   std::int32_t NumberOfPoints() const { return static_cast<std::int32_t>(this->Points.size()); }
   std::int32_t NumberOfTriangles() const { return static_cast<std::int32_t>(this->Alive.size()); }

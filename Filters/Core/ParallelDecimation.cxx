@@ -645,7 +645,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     : static_cast<std::int64_t>(std::llround(
         static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
   result.TargetTriangles = target;
-  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
+  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
   const std::int32_t n = this->Mesh.NumberOfPoints();
   for (std::int32_t v = 0; v < n; ++v)
   {

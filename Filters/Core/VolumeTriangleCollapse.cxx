@@ -557,7 +557,7 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   {
     p = (p - this->Origin) * this->Scale;
   }
-  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle);
+  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
   this->GuardAngle = std::max(0.0, this->Options.MinimumAngle);
   result.FinalMinimumAngle = this->GuardAngle;
   this->Mesh.SetMinimumAngle(this->GuardAngle);
