@@ -127,6 +127,17 @@ void BucketOrderKeepsOrderWithinBucketWidth()
   CHECK(sorted == vertices);
   CHECK(bucket(order.front()) == 0);
   CHECK(importance[order.back()] == largest);
+
+  // The buckets found on three threads give the same order, whole or cut at a limit.
+  std::vector<std::int32_t> threaded, limited, serialLimited;
+  meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, threaded, buckets,
+    static_cast<std::size_t>(-1), meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
+  CHECK(threaded == order);
+  meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, serialLimited, buckets, 100);
+  meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, limited, buckets, 100,
+    meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
+  CHECK(limited == serialLimited && limited.size() >= 100 && limited.size() < order.size());
+  CHECK(std::equal(limited.begin(), limited.end(), order.begin()));
 }
 
 void RoundsAreSuperIndependent()
