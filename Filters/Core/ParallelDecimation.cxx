@@ -676,6 +676,10 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   auto evaluate = [&](const std::int32_t* vertices, std::int64_t count) {
     this->ForEachInParts(count, 500, [&](std::int64_t i, Workspace& work) {
       const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
+      if (v < 0)
+      {
+        return; // a repeat in the list
+      }
       const VertexState state = this->Evaluate(v, work);
       this->Types[v] = state.Type;
       this->Importance[v] = state.Importance;
@@ -690,7 +694,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
 
   // Steps 3–7: rounds of super-independent sets until the target.
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
-  std::vector<std::int32_t> chosen, affected, neighbours;
+  std::vector<std::int32_t> chosen, neighbours;
   std::vector<std::int64_t> slices;
   std::vector<CollapsePlan> plans, applied;
   std::vector<std::uint8_t> planned;
@@ -713,9 +717,10 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       planned[i] = this->Plan(chosen[i], work, plans[i]) ? 1 : 0;
     });
     // The neighbours of each removed vertex are the vertices whose triangles change: listed per
-    // removal in its own slice (two per triangle around it), concurrently, while the survivor
-    // inherits what the removed vertex measured (survivors are distinct: the stars of a round's
-    // vertices share no vertex).
+    // removal in its own slice (two per triangle around it, each vertex once, the repeats -1),
+    // concurrently, while the survivor inherits what the removed vertex measured. The stars of a
+    // round's vertices share no vertex, so survivors are distinct and no vertex is listed in two
+    // slices.
     applied.clear();
     slices.assign(chosen.size() + 1, 0);
     for (std::int64_t i = 0; i < count; ++i)
@@ -740,11 +745,15 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         }
         const std::int32_t v = chosen[i];
         std::int32_t* out = neighbours.data() + slices[i];
+        auto list = [&](std::int32_t w) {
+          *out++ = this->Listed[w] != this->Round ? w : -1;
+          this->Listed[w] = this->Round;
+        };
         this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
           const std::int32_t* tri = this->Mesh.Triangle(t);
           const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-          *out++ = tri[(k + 1) % 3];
-          *out++ = tri[(k + 2) % 3];
+          list(tri[(k + 1) % 3]);
+          list(tri[(k + 2) % 3]);
         });
         const std::int32_t kept = plans[i].Vertices[0];
         if (this->Options.Measure == ImportanceMeasure::Quadric)
@@ -760,16 +769,6 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         this->Gone[v] = 1;
       }
     }, 40 * count);
-    // Each affected vertex once, in the order first listed (evaluations are independent).
-    affected.clear();
-    for (const std::int32_t w : neighbours)
-    {
-      if (this->Listed[w] != this->Round)
-      {
-        this->Listed[w] = this->Round;
-        affected.push_back(w);
-      }
-    }
     ++result.Rounds;
     if (applied.empty())
     {
@@ -790,7 +789,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       continue;
     }
     this->Mesh.ApplyIndependent(applied, this->Context);
-    evaluate(affected.data(), static_cast<std::int64_t>(affected.size()));
+    evaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));
     if (!this->Context.Report(0.05 + 0.9 * std::min(1.0, done)))
