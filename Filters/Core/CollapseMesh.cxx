@@ -13,24 +13,59 @@ namespace meshsimp
 namespace
 {
 /// The class of v from its corners {triangle, next, previous}: one closed fan, one open fan, or
-/// anything else.
+/// anything else. A corner's successor is the corner whose previous vertex is its next one.
 VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanFirst,
   std::int32_t& fanLast)
 {
   const std::int32_t degree = static_cast<std::int32_t>(last - first);
+  // Small fans are scanned; large ones (a fan of thousands of triangles around one vertex would
+  // make the scans quadratic) are searched in the corners sorted by next and by previous vertex.
+  const bool large = degree > 32;
+  std::vector<std::pair<std::int32_t, std::int32_t>> byNext, byPrevious; // (vertex, corner)
+  if (large)
+  {
+    for (std::int32_t i = 0; i < degree; ++i)
+    {
+      byNext.emplace_back(first[i].Next, i);
+      byPrevious.emplace_back(first[i].Previous, i);
+    }
+    std::sort(byNext.begin(), byNext.end());
+    std::sort(byPrevious.begin(), byPrevious.end());
+  }
+  // Corners (at most two counted) whose `key` vertex is w, the first of them in `found`.
+  auto corners = [&](const std::vector<std::pair<std::int32_t, std::int32_t>>& sorted,
+                   std::int32_t Corner::*key, std::int32_t w, std::int32_t& found) {
+    int count = 0;
+    found = -1;
+    if (large)
+    {
+      for (auto it = std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(w, std::int32_t(0)));
+           it != sorted.end() && it->first == w && count < 2; ++it, ++count)
+      {
+        found = found < 0 ? it->second : found;
+      }
+      return count;
+    }
+    for (std::int32_t j = 0; j < degree && count < 2; ++j)
+    {
+      if (first[j].*key == w)
+      {
+        found = found < 0 ? j : found;
+        ++count;
+      }
+    }
+    return count;
+  };
   std::int32_t opening = -1, closing = -1; // corner with no predecessor / no successor
   for (std::int32_t i = 0; i < degree; ++i)
   {
-    int successors = 0, predecessors = 0;
-    for (std::int32_t j = 0; j < degree; ++j)
+    std::int32_t found = -1;
+    if (corners(byNext, &Corner::Next, first[i].Next, found) > 1)
     {
-      if (first[j].Next == first[i].Next && j != i)
-      {
-        return VertexClass::NonManifold; // an edge used twice in one orientation
-      }
-      successors += first[j].Previous == first[i].Next ? 1 : 0;
-      predecessors += first[j].Next == first[i].Previous ? 1 : 0;
+      return VertexClass::NonManifold; // an edge used twice in one orientation
     }
+    const int successors = corners(byPrevious, &Corner::Previous, first[i].Next, found);
+    const int predecessors = corners(byNext, &Corner::Next, first[i].Previous, found);
     if (successors > 1 || predecessors > 1)
     {
       return VertexClass::NonManifold;
@@ -61,10 +96,7 @@ VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanF
   for (;;)
   {
     std::int32_t following = -1;
-    for (std::int32_t j = 0; j < degree && following < 0; ++j)
-    {
-      following = first[j].Previous == first[current].Next ? j : -1;
-    }
+    corners(byPrevious, &Corner::Previous, first[current].Next, following);
     if (following < 0 || following == (opening >= 0 ? opening : 0) || visited > degree)
     {
       break;

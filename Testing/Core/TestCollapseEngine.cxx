@@ -169,6 +169,31 @@ void VertexClasses()
   CHECK(fin.Mesh.Class(fin.Id[4]) == VertexClass::NonManifold);
   CHECK(fin.Mesh.IsLocked(fin.Id[4]));
   CHECK(fin.Mesh.Class(fin.Id[0]) == VertexClass::NonManifold);
+
+  // A vertex of 500 triangles (its fan sorted rather than scanned): the centre of a disk is
+  // interior, of half the disk a boundary vertex (of the disk less one triangle a corner: its
+  // border turns back); the capped disk's two centres are interior, and a second fan through the
+  // centre makes it non-manifold.
+  Mesh disk = Fan(500);
+  Engine whole(disk);
+  CHECK(whole.Mesh.Class(whole.Id[0]) == VertexClass::Interior);
+  CHECK(whole.Mesh.Class(whole.Id[1]) == VertexClass::Boundary);
+  disk.Triangles.resize(disk.Triangles.size() - 3);
+  Engine cut(disk);
+  CHECK(cut.Mesh.Class(cut.Id[0]) == VertexClass::Corner);
+  disk.Triangles.resize(3 * 250);
+  Engine half(disk);
+  CHECK(half.Mesh.Class(half.Id[0]) == VertexClass::Boundary);
+  Engine capped(Fan(500, true));
+  CHECK(capped.Mesh.Class(capped.Id[0]) == VertexClass::Interior);
+  CHECK(capped.Mesh.Class(capped.Id[501]) == VertexClass::Interior);
+  CHECK(capped.Mesh.Class(capped.Id[1]) == VertexClass::Interior);
+  Mesh bowtie = Fan(500);
+  const int apex = static_cast<int>(bowtie.Points.size() / 3);
+  bowtie.Points.insert(bowtie.Points.end(), { 0.0, 0.0, 1.0, 0.1, 0.0, 1.0 });
+  bowtie.Triangles.insert(bowtie.Triangles.end(), { 0, apex, apex + 1 });
+  Engine pinched(bowtie);
+  CHECK(pinched.Mesh.Class(pinched.Id[0]) == VertexClass::NonManifold);
 }
 
 void LinkConditionRejectsHiddenCycle()

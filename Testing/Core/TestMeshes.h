@@ -116,6 +116,32 @@ Mesh Tube(int around, int rings)
   return mesh;
 }
 
+/// A disk of n triangles around one centre vertex (id 0; the rim 1..n, wavy in z); with closed,
+/// the rim is capped by a second fan around a vertex below (id n + 1): both centres of valence n.
+Mesh Fan(int n, bool closed = false)
+{
+  Mesh mesh;
+  mesh.Points = { 0.0, 0.0, 0.0 };
+  for (int i = 0; i < n; ++i)
+  {
+    const double angle = 2.0 * 3.14159265358979323846 * i / n;
+    mesh.Points.insert(mesh.Points.end(), { std::cos(angle), std::sin(angle), 0.01 * std::sin(7 * angle) });
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    mesh.Triangles.insert(mesh.Triangles.end(), { 0, 1 + i, 1 + (i + 1) % n });
+  }
+  if (closed)
+  {
+    mesh.Points.insert(mesh.Points.end(), { 0.0, 0.0, -0.5 });
+    for (int i = 0; i < n; ++i)
+    {
+      mesh.Triangles.insert(mesh.Triangles.end(), { n + 1, 1 + (i + 1) % n, 1 + i });
+    }
+  }
+  return mesh;
+}
+
 /// Cube(n) pushed out onto the sphere of radius 1/2 around the cube's centre.
 Mesh Sphere(int n)
 {

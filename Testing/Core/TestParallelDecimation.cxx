@@ -272,6 +272,19 @@ void MovedSurvivorsFitTheSurface()
   }
 }
 
+void HighValenceVertex()
+{
+  // A closed double fan: two vertices of 10 000 triangles each. Every rim vertex neighbours both,
+  // so a round takes one vertex; the stars of the two centres are matched by sorting, not by a
+  // quadratic scan (which made this input run for minutes).
+  const Mesh fan = Fan(10000, true);
+  ParallelDecimationResult result;
+  CHECK(meshsimp::ParallelDecimation(fan.View(), Reduction(0.5), result));
+  CHECK(WithinTwoPercent(result));
+  CHECK(Closed(result));
+  CHECK(!result.StoppedEarly);
+}
+
 void CubeKeepsCornersAndEdges()
 {
   // Corners (three sharp edges) stay; edge vertices go only along their edge, so the cube's
@@ -392,6 +405,7 @@ int main()
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "TargetsAndInputPoints", TargetsAndInputPoints },
     { "MovedSurvivorsFitTheSurface", MovedSurvivorsFitTheSurface },
+    { "HighValenceVertex", HighValenceVertex },
     { "CubeKeepsCornersAndEdges", CubeKeepsCornersAndEdges },
     { "BoundariesAndLocks", BoundariesAndLocks },
     { "ProgressAndAbort", ProgressAndAbort },
