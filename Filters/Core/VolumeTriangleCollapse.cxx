@@ -50,7 +50,6 @@ private:
     Quadric Q; // the constriction matrix Q̄
     double Cost = 0.0;     // eq. (5) at the plan's position
     double Priority = 0.0; // the heap key: Cost per triangle the plan nominally removes
-    bool Flat = false;     // the collapse leaves the surface where it was (see FlatTolerance)
     bool Valid = false;
     bool FreePlacement = false; // placed by eq. (5)/(8), not by a boundary, lock or feature rule
   };
@@ -85,6 +84,8 @@ private:
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
   bool OntoCheapestCorner(Candidate& candidate) const;
+  /// Whether the collapse leaves the surface where it was (see FlatTolerance).
+  bool IsFlat(const Candidate& candidate) const;
   void Requeue(std::int32_t t);
   void UpdateAround(std::int32_t kept);
   int CountRemoved(const CollapsePlan& plan) const;
@@ -365,6 +366,15 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   {
     this->CheaperEdge(t, across, candidate);
   }
+  // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.
+  const Quadric& chosen = candidate.Q;
+  candidate.Valid = std::isfinite(candidate.Cost) && std::isfinite(chosen.A00 + chosen.A11 + chosen.A22 + chosen.C);
+  return candidate;
+}
+
+bool VolumeCollapser::IsFlat(const Candidate& candidate) const
+{
+  const CollapsePlan& plan = candidate.Plan;
   double longest2 = 0.0;
   for (int i = 0; i < plan.Count; ++i)
   {
@@ -374,11 +384,8 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
         longest2, (this->Mesh.Point(plan.Vertices[i]) - this->Mesh.Point(plan.Vertices[j])).squaredNorm());
     }
   }
-  const Quadric& chosen = candidate.Q;
-  candidate.Flat = candidate.Cost <= FlatTolerance * (chosen.A00 + chosen.A11 + chosen.A22) * longest2;
-  // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.
-  candidate.Valid = std::isfinite(candidate.Cost) && std::isfinite(chosen.A00 + chosen.A11 + chosen.A22 + chosen.C);
-  return candidate;
+  const Quadric& q = candidate.Q;
+  return candidate.Cost <= FlatTolerance * (q.A00 + q.A11 + q.A22) * longest2;
 }
 
 void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const
@@ -681,7 +688,7 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
       {
         candidate = original;
         candidate.Plan.GuardAngles = false;
-        if (!candidate.Flat || !this->Mesh.IsLegal(candidate.Plan))
+        if (!this->IsFlat(candidate) || !this->Mesh.IsLegal(candidate.Plan))
         {
           continue; // until a collapse nearby requeues it
         }
