@@ -126,6 +126,18 @@ public:
     }
   }
 
+  /// Calls f(t, next, previous) for every alive triangle t around v with its corners after and
+  /// before v (in the triangle's orientation).
+  template <typename F>
+  void ForEachCorner(std::int32_t v, F&& f) const
+  {
+    this->ForEachTriangle(v, [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      f(t, tri[k == 2 ? 0 : k + 1], tri[k == 0 ? 2 : k - 1]);
+    });
+  }
+
   /// The unit normal (zero when degenerate) and area of triangle t at the current points.
   Eigen::Vector3d Normal(std::int32_t t) const;
   double Area(std::int32_t t) const;

@@ -217,13 +217,11 @@ void Decimator::CollectStar(std::int32_t v, Workspace& work) const
   work.Edges.resize(count);
   const Vec3& p = this->Mesh.Point(v);
   std::size_t slot = 0;
-  this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-    const std::int32_t* tri = this->Mesh.Triangle(t);
-    const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+  this->Mesh.ForEachCorner(v, [&](std::int32_t t, std::int32_t next, std::int32_t previous) {
     StarTriangle& star = work.Star[slot];
     star.Id = t;
-    star.Next = tri[k == 2 ? 0 : k + 1];
-    star.Previous = tri[k == 0 ? 2 : k - 1];
+    star.Next = next;
+    star.Previous = previous;
     star.Cross = (this->Mesh.Point(star.Next) - p).cross(this->Mesh.Point(star.Previous) - p);
     star.Length = star.Cross.norm();
     work.Edges[slot] = { star.Next, static_cast<std::int32_t>(slot), -1 };
@@ -576,12 +574,9 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
       for (std::int64_t i = begin; i < last; ++i)
       {
         std::int32_t* out = this->Rings.data() + this->RingStart[i];
-        const std::int32_t v = sorted[first + i];
-        this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-          const std::int32_t* tri = this->Mesh.Triangle(t);
-          const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-          *out++ = tri[k == 2 ? 0 : k + 1];
-          *out++ = tri[k == 0 ? 2 : k - 1];
+        this->Mesh.ForEachCorner(sorted[first + i], [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+          *out++ = next;
+          *out++ = previous;
         });
       }
     }, 20 * count);
@@ -771,11 +766,9 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
           *out++ = this->Listed[w] != this->Round ? w : -1;
           this->Listed[w] = this->Round;
         };
-        this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-          const std::int32_t* tri = this->Mesh.Triangle(t);
-          const int k = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
-          list(tri[(k + 1) % 3]);
-          list(tri[(k + 2) % 3]);
+        this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+          list(next);
+          list(previous);
         });
         const std::int32_t kept = plans[i].Vertices[0];
         if (this->Options.Measure == ImportanceMeasure::Quadric)
@@ -847,12 +840,9 @@ std::int64_t Decimator::MoveSurvivors()
       return;
     }
     double shortest = Never; // squared
-    this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-      const std::int32_t* tri = this->Mesh.Triangle(t);
-      for (int k = 0; k < 3; ++k)
-      {
-        shortest = tri[k] != v ? std::min(shortest, (this->Mesh.Point(tri[k]) - p).squaredNorm()) : shortest;
-      }
+    this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+      shortest = std::min({ shortest, (this->Mesh.Point(next) - p).squaredNorm(),
+        (this->Mesh.Point(previous) - p).squaredNorm() });
     });
     Vec3 x;
     MinimizeQuadricNear(this->Quadrics[v], p, x);
