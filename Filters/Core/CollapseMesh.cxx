@@ -14,58 +14,26 @@ namespace
 {
 /// The class of v from its corners {triangle, next, previous}: one closed fan, one open fan, or
 /// anything else. A corner's successor is the corner whose previous vertex is its next one.
+/// byNext and byPrevious are working memory.
 VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanFirst,
-  std::int32_t& fanLast)
+  std::int32_t& fanLast, FanLookup& byNext, FanLookup& byPrevious)
 {
   const std::int32_t degree = static_cast<std::int32_t>(last - first);
-  // Small fans are scanned; large ones (a fan of thousands of triangles around one vertex would
-  // make the scans quadratic) are searched in the corners sorted by next and by previous vertex.
-  const bool large = degree > 32;
-  std::vector<std::pair<std::int32_t, std::int32_t>> byNext, byPrevious; // (vertex, corner)
-  if (large)
-  {
-    for (std::int32_t i = 0; i < degree; ++i)
-    {
-      byNext.emplace_back(first[i].Next, i);
-      byPrevious.emplace_back(first[i].Previous, i);
-    }
-    std::sort(byNext.begin(), byNext.end());
-    std::sort(byPrevious.begin(), byPrevious.end());
-  }
-  // Corners (at most two counted) whose `key` vertex is w, the first of them in `found`.
-  auto corners = [&](const std::vector<std::pair<std::int32_t, std::int32_t>>& sorted,
-                   std::int32_t Corner::*key, std::int32_t w, std::int32_t& found) {
-    int count = 0;
-    found = -1;
-    if (large)
-    {
-      for (auto it = std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(w, std::int32_t(0)));
-           it != sorted.end() && it->first == w && count < 2; ++it, ++count)
-      {
-        found = found < 0 ? it->second : found;
-      }
-      return count;
-    }
-    for (std::int32_t j = 0; j < degree && count < 2; ++j)
-    {
-      if (first[j].*key == w)
-      {
-        found = found < 0 ? j : found;
-        ++count;
-      }
-    }
-    return count;
-  };
+  const auto nextAt = [first](std::int32_t i) { return first[i].Next; };
+  const auto previousAt = [first](std::int32_t i) { return first[i].Previous; };
+  byNext.Reset(degree, nextAt);
+  byPrevious.Reset(degree, previousAt);
   std::int32_t opening = -1, closing = -1; // corner with no predecessor / no successor
   for (std::int32_t i = 0; i < degree; ++i)
   {
-    std::int32_t found = -1;
-    if (corners(byNext, &Corner::Next, first[i].Next, found) > 1)
+    int same = 0, successors = 0, predecessors = 0;
+    byNext.Find(first[i].Next, nextAt, &same);
+    if (same > 1)
     {
       return VertexClass::NonManifold; // an edge used twice in one orientation
     }
-    const int successors = corners(byPrevious, &Corner::Previous, first[i].Next, found);
-    const int predecessors = corners(byNext, &Corner::Next, first[i].Previous, found);
+    byPrevious.Find(first[i].Next, previousAt, &successors);
+    byNext.Find(first[i].Previous, nextAt, &predecessors);
     if (successors > 1 || predecessors > 1)
     {
       return VertexClass::NonManifold;
@@ -95,8 +63,7 @@ VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanF
   std::int32_t current = opening >= 0 ? opening : 0, visited = 1;
   for (;;)
   {
-    std::int32_t following = -1;
-    corners(byPrevious, &Corner::Previous, first[current].Next, following);
+    const std::int32_t following = byPrevious.Find(first[current].Next, previousAt);
     if (following < 0 || following == (opening >= 0 ? opening : 0) || visited > degree)
     {
       break;
@@ -136,6 +103,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->Refs.resize(adjacency.Corners.size());
   const double cosCorner = std::cos(cornerAngleDegrees * 3.14159265358979323846 / 180.0);
   context.For(n, [&](std::int64_t first, std::int64_t last) {
+    FanLookup byNext, byPrevious;
     for (std::int32_t v = static_cast<std::int32_t>(first); v < last; ++v)
     {
       this->Start[v] = adjacency.Offsets[v];
@@ -145,7 +113,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
         this->Refs[i] = adjacency.Corners[i].Triangle;
       }
       std::int32_t opening = -1, closing = -1;
-      VertexClass c = Classify(adjacency.Begin(v), adjacency.End(v), opening, closing);
+      VertexClass c = Classify(adjacency.Begin(v), adjacency.End(v), opening, closing, byNext, byPrevious);
       if (c == VertexClass::Boundary)
       {
         // The boundary runs into v along the closing corner's far edge and leaves along the

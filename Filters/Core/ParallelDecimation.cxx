@@ -105,7 +105,7 @@ struct Workspace
 {
   std::vector<StarTriangle> Star;
   std::vector<StarEdge> Edges;
-  std::vector<std::pair<std::int32_t, std::int32_t>> Keys; // (W, slot) of a large star's edges
+  FanLookup Nexts; // the edges' far vertices, by vertex
   CollapseMesh::CheckScratch Scratch;
   struct Option
   {
@@ -227,38 +227,16 @@ void Decimator::CollectStar(std::int32_t v, Workspace& work) const
     work.Edges[slot] = { star.Next, static_cast<std::int32_t>(slot), -1 };
     ++slot;
   });
-  // Each triangle's previous corner is matched to the edge of that far vertex (the first such
-  // edge): by a scan in a small star, by binary search in a large one (a fan of thousands of
-  // triangles around one vertex would make the scan quadratic).
-  const bool large = count > 32;
-  if (large)
-  {
-    work.Keys.resize(count);
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      work.Keys[i] = { work.Edges[i].W, static_cast<std::int32_t>(i) };
-    }
-    std::sort(work.Keys.begin(), work.Keys.end());
-  }
+  // Each triangle's previous corner is matched to the (first) edge of that far vertex.
+  const auto nextAt = [&work](std::int32_t i) { return work.Edges[i].W; };
+  work.Nexts.Reset(static_cast<std::int32_t>(count), nextAt);
   for (std::size_t j = 0; j < count; ++j)
   {
     const std::int32_t previous = work.Star[j].Previous;
-    std::size_t i = 0;
-    if (large)
+    const std::int32_t found = work.Nexts.Find(previous, nextAt);
+    if (found >= 0)
     {
-      const auto found = std::lower_bound(work.Keys.begin(), work.Keys.end(), std::make_pair(previous, std::int32_t(0)));
-      i = found != work.Keys.end() && found->first == previous ? static_cast<std::size_t>(found->second) : count;
-    }
-    else
-    {
-      while (i < count && work.Edges[i].W != previous)
-      {
-        ++i;
-      }
-    }
-    if (i < count)
-    {
-      work.Edges[i].Before = static_cast<std::int32_t>(j);
+      work.Edges[found].Before = static_cast<std::int32_t>(j);
     }
     else
     {

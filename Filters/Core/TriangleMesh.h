@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace meshsimp
@@ -57,6 +58,71 @@ struct TriangleMeshView
 struct Corner
 {
   std::int32_t Triangle, Next, Previous;
+};
+
+/**
+ * Positions by vertex id in the list of ids around one vertex (a fan's next or previous
+ * corners, read through idAt(position)): a scan while the list is short, a binary search in its
+ * (id, position) pairs sorted once when it is long, so that a fan of thousands of triangles
+ * around one vertex costs n log n rather than n². Reuse one lookup per thread: it keeps its
+ * memory.
+ */
+class FanLookup
+{
+public:
+  /// Indexes idAt(0), ..., idAt(count − 1).
+  template <typename IdAt>
+  void Reset(std::int32_t count, const IdAt& idAt)
+  {
+    this->Size = count;
+    this->Sorted.clear();
+    if (count > ScanLimit)
+    {
+      for (std::int32_t i = 0; i < count; ++i)
+      {
+        this->Sorted.emplace_back(idAt(i), i);
+      }
+      std::sort(this->Sorted.begin(), this->Sorted.end());
+    }
+  }
+
+  /// The first position holding w (−1 when none), with the same idAt as Reset; count, when
+  /// given, receives how many hold it, counted up to two.
+  template <typename IdAt>
+  std::int32_t Find(std::int32_t w, const IdAt& idAt, int* count = nullptr) const
+  {
+    std::int32_t first = -1;
+    int found = 0;
+    if (this->Size > ScanLimit)
+    {
+      for (auto it = std::lower_bound(this->Sorted.begin(), this->Sorted.end(), std::make_pair(w, std::int32_t(0)));
+           it != this->Sorted.end() && it->first == w && found < 2; ++it, ++found)
+      {
+        first = first < 0 ? it->second : first;
+      }
+    }
+    else
+    {
+      for (std::int32_t i = 0; i < this->Size && found < 2 && (count || found == 0); ++i)
+      {
+        if (idAt(i) == w)
+        {
+          first = first < 0 ? i : first;
+          ++found;
+        }
+      }
+    }
+    if (count)
+    {
+      *count = found;
+    }
+    return first;
+  }
+
+private:
+  static constexpr std::int32_t ScanLimit = 32;
+  std::int32_t Size = 0;
+  std::vector<std::pair<std::int32_t, std::int32_t>> Sorted;
 };
 
 /// Vertex → incident triangles with their other corners, as CSR arrays, so that walks around a
