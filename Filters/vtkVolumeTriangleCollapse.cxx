@@ -92,6 +92,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   options.UseShapeFactor = this->UseShapeFactor;
   options.UseVolumeWeights = this->UseVolumeWeights;
   options.EdgeCollapses = this->EdgeCollapses;
+  options.SurfaceErrorWeight = this->SurfaceErrorWeight;
   options.MinimumAngle = this->MinimumAngle;
 
   std::vector<std::uint8_t> locked;
@@ -157,6 +158,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseShapeFactor: " << this->UseShapeFactor << "\n";
   os << indent << "UseVolumeWeights: " << this->UseVolumeWeights << "\n";
   os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
+  os << indent << "SurfaceErrorWeight: " << this->SurfaceErrorWeight << "\n";
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";

@@ -257,6 +257,7 @@ Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
     { "UseShapeFactor", [f](double v) { f->SetUseShapeFactor(v != 0.0); } },
     { "UseVolumeWeights", [f](double v) { f->SetUseVolumeWeights(v != 0.0); } },
     { "EdgeCollapses", [f](double v) { f->SetEdgeCollapses(v != 0.0); } },
+    { "SurfaceErrorWeight", [f](double v) { f->SetSurfaceErrorWeight(v); } },
     { "MinimumAngle", [f](double v) { f->SetMinimumAngle(v); } },
     { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };

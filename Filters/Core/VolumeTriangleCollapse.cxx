@@ -78,6 +78,9 @@ private:
   }
 
   void UpdateGeometry(std::int32_t t);
+  /// SurfaceErrorWeight's term of the heap key: the new point's weighted squared distance to
+  /// the input planes merged into the plan's vertices.
+  double SurfaceError(const CollapsePlan& plan) const;
   void ConstrictionMatrix(std::int32_t t, Quadric& q, Quadric* across = nullptr) const;
   void CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const;
   void UpdateVertex(std::int32_t v);
@@ -104,6 +107,8 @@ private:
   std::vector<double> Areas;
   std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
   std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
+  std::vector<Quadric> InputPlanes;      // the input planes merged into each vertex, by area
+  double SurfaceScale = 0.0;             // SurfaceErrorWeight · (mean input triangle area)²
   std::vector<double> Angles;            // the corner angles of each triangle
   std::vector<double> VertexError;       // squared-volume error accumulated at each vertex
   std::vector<double> Deficit;           // angle deficit of each vertex (eq. 6)
@@ -130,6 +135,20 @@ void VolumeCollapser::UpdateGeometry(std::int32_t t)
   angles[0] = std::atan2(length, (*p[1] - *p[0]).dot(*p[2] - *p[0]));
   angles[1] = std::atan2(length, (*p[2] - *p[1]).dot(*p[0] - *p[1]));
   angles[2] = std::max(0.0, Pi - angles[0] - angles[1]);
+}
+
+double VolumeCollapser::SurfaceError(const CollapsePlan& plan) const
+{
+  if (this->InputPlanes.empty())
+  {
+    return 0.0;
+  }
+  Quadric q = this->InputPlanes[plan.Vertices[0]];
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    q += this->InputPlanes[plan.Vertices[i]];
+  }
+  return this->SurfaceScale * q.Evaluate(plan.Position);
 }
 
 void VolumeCollapser::UpdateVertex(std::int32_t v)
@@ -366,6 +385,7 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   {
     this->CheaperEdge(t, across, candidate);
   }
+  candidate.Priority += this->SurfaceError(candidate.Plan);
   // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.
   const Quadric& chosen = candidate.Q;
   candidate.Valid = std::isfinite(candidate.Cost) && std::isfinite(chosen.A00 + chosen.A11 + chosen.A22 + chosen.C);
@@ -471,7 +491,7 @@ bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate) const
       found = true;
     }
   }
-  candidate.Priority = PriorityOf(candidate.Cost, count);
+  candidate.Priority = PriorityOf(candidate.Cost, count) + this->SurfaceError(candidate.Plan);
   return found;
 }
 
@@ -612,6 +632,27 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   {
     this->TotalArea += a;
   }
+  if (this->Options.SurfaceErrorWeight > 0.0)
+  {
+    // Garland–Heckbert quadrics: each vertex starts with the planes of its input triangles,
+    // weighted by area. The mean area squared gives the term the volume error's units (length⁸).
+    const double meanArea = this->TotalArea / static_cast<double>(std::max<std::int32_t>(1, m));
+    this->SurfaceScale = this->Options.SurfaceErrorWeight * meanArea * meanArea;
+    this->InputPlanes.assign(n, Quadric());
+    for (std::int32_t t = 0; t < m; ++t)
+    {
+      if (this->Areas[t] > 0.0)
+      {
+        const Vec3& normal = this->Normals[t];
+        const std::int32_t* tri = this->Mesh.Triangle(t);
+        const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), this->Areas[t]);
+        for (int k = 0; k < 3; ++k)
+        {
+          this->InputPlanes[tri[k]] += plane;
+        }
+      }
+    }
+  }
   this->QueueAll();
   return target;
 }
@@ -728,6 +769,10 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
       error += this->VertexError[plan.Vertices[i]];
     }
     this->Moved[kept] |= plan.Position != this->Mesh.Point(kept) ? 1 : 0;
+    for (int i = 1; i < plan.Count && !this->InputPlanes.empty(); ++i)
+    {
+      this->InputPlanes[kept] += this->InputPlanes[plan.Vertices[i]];
+    }
     this->Mesh.Apply(plan, this->Options.KeepUndo);
     this->VertexError[kept] = error;
     result.SquareVolumeError += candidate.Cost;

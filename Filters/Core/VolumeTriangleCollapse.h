@@ -49,6 +49,13 @@
  *   or a gently curved direction hardly does: on the shared meshes the mean distance drops by
  *   18–46 % (to a third on the CAD fandisk). The heap key is the error per nominally removed
  *   triangle (four for a triangle, two for an edge).
+ * - Beyond the paper (SurfaceErrorWeight, default 3000; 0 gives the paper's order): the heap
+ *   key adds the new point's squared distances to the planes of the input triangles merged
+ *   into the collapsing vertices (Garland–Heckbert quadrics, area-weighted, summed through the
+ *   collapses), times the weight and the squared mean input triangle area (so the term has the
+ *   volume error's units, length⁸). Placement is unchanged. By volume alone a few collapses on
+ *   gently curved surfaces, where the normal factor makes volume cheap, moved the surface far:
+ *   the CAD fandisk's Hausdorff distance at 70 % was 1.9× vtkQuadricDecimation's.
  * - The engine's angle guard (MinimumAngle, default 10°) rejects collapses that would make new
  *   slivers. A flat collapse — its error under 10⁻⁷ · Σ weights · (longest edge)², the point
  *   within about 3·10⁻⁴ edge lengths of its planes — that fails only the guard, and for which no
@@ -91,6 +98,10 @@ struct VolumeCollapseOptions
   /// Let a triangle collapse its cheapest edge instead when that costs under a quarter of the
   /// triangle's error (beyond the paper; off gives the paper's triangle collapses only).
   bool EdgeCollapses = true;
+  /// Weight of the surface term of the heap key (beyond the paper; 0 gives the paper's order):
+  /// the new point's area-weighted squared distance to the input planes merged into the
+  /// collapsing vertices, times the squared mean input triangle area.
+  double SurfaceErrorWeight = 3000.0;
   bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
   bool UseNormalFactor = true;
   bool UseVolumeWeights = true;

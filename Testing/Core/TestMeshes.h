@@ -3,6 +3,8 @@
 #ifndef MeshSimplification_TestMeshes_h
 #define MeshSimplification_TestMeshes_h
 
+#include "OFFFile.h"
+#include "TestHelpers.h"
 #include "TriangleMesh.h"
 
 #include <Eigen/Geometry>
@@ -197,6 +199,20 @@ double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const double sum = va + vb + vc;
   return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
 }
+
+#ifdef MESHSIMPLIFICATION_TEST_DATA
+/// A triangle mesh of Testing/Data.
+Mesh ReadData(const std::string& name)
+{
+  meshsimp::PolygonMesh file;
+  std::string error;
+  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/" + name, file, error));
+  Mesh mesh;
+  mesh.Points = file.Points;
+  mesh.Triangles.assign(file.FaceIds.begin(), file.FaceIds.end());
+  return mesh;
+}
+#endif
 
 /// Distance from p to the nearest of the triangles (3 point ids each) over points (3 each).
 double DistanceToSurface(const Eigen::Vector3d& p, const std::vector<double>& points,

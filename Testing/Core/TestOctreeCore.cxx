@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the VTK-free core: quadrics, the octree clustering and its invariants.
-#include "OFFFile.h"
 #include "OctreeVertexClustering.h"
 #include "Quadric.h"
 #include "TestHelpers.h"
@@ -204,18 +203,6 @@ void DisconnectedPartsInOneCellStayApart()
   {
     CHECK(std::abs(result.Points[i]) < 1e-12 || std::abs(result.Points[i] - 0.01) < 1e-12);
   }
-}
-
-/// A triangle mesh of Testing/Data.
-Mesh ReadData(const std::string& name)
-{
-  meshsimp::PolygonMesh file;
-  std::string error;
-  CHECK(meshsimp::ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/" + name, file, error));
-  Mesh mesh;
-  mesh.Points = file.Points;
-  mesh.Triangles.assign(file.FaceIds.begin(), file.FaceIds.end());
-  return mesh;
 }
 
 /// The cow of Testing/Data, 2 904 points and 5 804 triangles.
