@@ -89,6 +89,7 @@ struct VertexState
   DecimationVertexType Type = DecimationVertexType::Complex;
   double Importance = Never;
   std::int32_t Along[2] = { -1, -1 };
+  std::int32_t Best = -1; // Quadric: the neighbour of least half-edge error
 };
 
 /// One triangle around a vertex v: its corners after and before v, and the cross product of
@@ -198,6 +199,9 @@ private:
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint8_t> Owner; // round stamp of the vertices near a taken one
   std::vector<std::uint32_t> Listed; // round stamp of the vertices listed for re-evaluation
+  std::vector<std::int32_t> Into;    // the survivor of the removal that listed the vertex
+  std::vector<std::int32_t> BestTarget; // Quadric: the neighbour of least half-edge error
+  std::vector<std::uint8_t> Updated; // importance updated without a full evaluation since the last
   std::uint32_t Round = 0;
   std::vector<std::int32_t> Live, NextLive, Order, Sorted, Buckets;
   std::vector<std::int64_t> RingStart; // SelectRound: each candidate's slice of Rings
@@ -262,16 +266,25 @@ VertexState Decimator::Evaluate(std::int32_t v, Workspace& work) const
   {
     // The least error of a half-edge the vertex may collapse along, as a distance.
     double best = Never;
+    auto consider = [&](std::int32_t u) {
+      const double error = this->HalfEdgeError(v, u);
+      if (error < best || (error == best && u < state.Best))
+      {
+        best = error;
+        state.Best = u;
+      }
+    };
     if (state.Type == DecimationVertexType::Simple)
     {
       for (const StarEdge& e : work.Edges)
       {
-        best = std::min(best, this->HalfEdgeError(v, e.W));
+        consider(e.W);
       }
     }
     else
     {
-      best = std::min(this->HalfEdgeError(v, state.Along[0]), this->HalfEdgeError(v, state.Along[1]));
+      consider(state.Along[0]);
+      consider(state.Along[1]);
     }
     state.Importance = std::sqrt(best);
   }
@@ -660,6 +673,9 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   this->Types.assign(n, DecimationVertexType::Complex);
   this->Owner.assign(n, 0);
   this->Listed.assign(n, 0);
+  this->Into.assign(n, -1);
+  this->BestTarget.assign(n, -1);
+  this->Updated.assign(n, 0);
   this->Stuck.assign(n, 0);
   this->Gone.assign(n, 0);
   this->Live.resize(n);
@@ -678,7 +694,44 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       const VertexState state = this->Evaluate(v, work);
       this->Types[v] = state.Type;
       this->Importance[v] = state.Importance;
+      this->BestTarget[v] = state.Best;
       this->Stuck[v] = 0;
+      this->Updated[v] = 0;
+    });
+  };
+  // After a round, Quadric: a simple vertex whose least-error neighbour is still there and
+  // absorbed nothing keeps that error as its least among its old neighbours (their errors can
+  // only grow: Q_w and the points stay, a neighbour's own error grows when it absorbs); its one
+  // new neighbour, the survivor, is the only new option. Other vertices are evaluated in full.
+  auto reevaluate = [&](const std::int32_t* vertices, std::int64_t count) {
+    this->ForEachInParts(count, 300, [&](std::int64_t i, Workspace& work) {
+      const std::int32_t w = vertices[i];
+      if (w < 0)
+      {
+        return;
+      }
+      const std::int32_t into = this->Into[w], best = this->BestTarget[w];
+      const bool absorbed = best >= 0 && this->Listed[best] == this->Round && this->Into[best] == best;
+      if (this->Options.Measure == ImportanceMeasure::Quadric && into != w && best >= 0 &&
+        this->Types[w] == DecimationVertexType::Simple && this->Importance[w] < Never && !this->Gone[best] &&
+        !absorbed)
+      {
+        const double error = std::sqrt(this->HalfEdgeError(w, into));
+        if (error < this->Importance[w])
+        {
+          this->Importance[w] = error;
+          this->BestTarget[w] = into;
+        }
+        this->Stuck[w] = 0;
+        this->Updated[w] = 1;
+        return;
+      }
+      const VertexState state = this->Evaluate(w, work);
+      this->Types[w] = state.Type;
+      this->Importance[w] = state.Importance;
+      this->BestTarget[w] = state.Best;
+      this->Stuck[w] = 0;
+      this->Updated[w] = 0;
     });
   };
   evaluate(nullptr, n);
@@ -739,16 +792,17 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
           continue;
         }
         const std::int32_t v = chosen[i];
+        const std::int32_t kept = plans[i].Vertices[0];
         std::int32_t* out = neighbours.data() + slices[i];
         auto list = [&](std::int32_t w) {
           *out++ = this->Listed[w] != this->Round ? w : -1;
           this->Listed[w] = this->Round;
+          this->Into[w] = kept;
         };
         this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
           list(next);
           list(previous);
         });
-        const std::int32_t kept = plans[i].Vertices[0];
         if (this->Options.Measure == ImportanceMeasure::Quadric)
         {
           this->Quadrics[kept] += this->Quadrics[v];
@@ -782,7 +836,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       continue;
     }
     this->Mesh.ApplyIndependent(applied, this->Context);
-    evaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
+    reevaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));
     if (!this->Context.Report(0.05 + 0.9 * std::min(1.0, done)))
@@ -790,6 +844,16 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       return false;
     }
   }
+  // The survivors' importance and type in full where they were only updated.
+  neighbours.clear();
+  for (const std::int32_t v : this->Live)
+  {
+    if (!this->Gone[v] && this->Updated[v])
+    {
+      neighbours.push_back(v);
+    }
+  }
+  evaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
   if (this->Options.MoveSurvivors && this->Options.Measure == ImportanceMeasure::Quadric)
   {
     result.MovedPoints = this->MoveSurvivors();

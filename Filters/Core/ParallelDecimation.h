@@ -24,7 +24,11 @@
  *   MaximumNormalDeviation (§5.3), or the shortest legal one (§5.5 step 6). Boundary and
  *   interior-edge vertices collapse only along their boundary or sharp edges. The engine's checks
  *   apply (link condition, plane-side fold-over test, no degenerate triangle). The touched
- *   vertices are re-evaluated, and rounds repeat until the target.
+ *   vertices are re-evaluated, and rounds repeat until the target. Under the Quadric measure a
+ *   simple vertex whose least-error neighbour is still there and absorbed nothing in the round
+ *   is only updated: its old least error still bounds its old neighbours' (their errors can only
+ *   grow), so the survivor, its one new neighbour, is the only option to price. Survivors so
+ *   updated are evaluated in full at the end, for the output's importance and type.
  * - Each round considers only the least important RoundFraction of the candidates, so that the
  *   order stays close to a global one; the result does not depend on the number of threads.
  * - When no vertex is removable before the target (every one is a corner, or none of its
