@@ -201,7 +201,7 @@ private:
   std::vector<std::uint32_t> Listed; // round stamp of the vertices listed for re-evaluation
   std::vector<std::int32_t> Into;    // the survivor of the removal that listed the vertex
   std::vector<std::int32_t> BestTarget; // Quadric: the neighbour of least half-edge error
-  std::vector<std::uint8_t> Updated; // importance updated without a full evaluation since the last
+  std::vector<std::uint8_t> Updated; // importance updated without a full evaluation since its last
   std::uint32_t Round = 0;
   std::vector<std::int32_t> Live, NextLive, Order, Sorted, Buckets;
   std::vector<std::int64_t> RingStart; // SelectRound: each candidate's slice of Rings
@@ -684,19 +684,21 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     this->Live[v] = v;
   }
   this->Accumulated.assign(n, 0.0);
+  auto measure = [&](std::int32_t v, Workspace& work) {
+    const VertexState state = this->Evaluate(v, work);
+    this->Types[v] = state.Type;
+    this->Importance[v] = state.Importance;
+    this->BestTarget[v] = state.Best;
+    this->Stuck[v] = 0;
+    this->Updated[v] = 0;
+  };
   auto evaluate = [&](const std::int32_t* vertices, std::int64_t count) {
     this->ForEachInParts(count, 500, [&](std::int64_t i, Workspace& work) {
       const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
-      if (v < 0)
+      if (v >= 0) // -1: a repeat in the list
       {
-        return; // a repeat in the list
+        measure(v, work);
       }
-      const VertexState state = this->Evaluate(v, work);
-      this->Types[v] = state.Type;
-      this->Importance[v] = state.Importance;
-      this->BestTarget[v] = state.Best;
-      this->Stuck[v] = 0;
-      this->Updated[v] = 0;
     });
   };
   // After a round, Quadric: a simple vertex whose least-error neighbour is still there and
@@ -726,12 +728,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         this->Updated[w] = 1;
         return;
       }
-      const VertexState state = this->Evaluate(w, work);
-      this->Types[w] = state.Type;
-      this->Importance[w] = state.Importance;
-      this->BestTarget[w] = state.Best;
-      this->Stuck[w] = 0;
-      this->Updated[w] = 0;
+      measure(w, work);
     });
   };
   evaluate(nullptr, n);
