@@ -373,7 +373,7 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
 {
   const Eigen::Vector3d& x = plan.Position;
   const bool guardAngles = plan.GuardAngles && this->MinimumAngleCosine < 1.0;
-  double worstBefore = -1.0, worstAfter = -1.0; // cosines of the smallest angles
+  double worstAfter = -1.0; // cosine of the smallest new angle
   for (int i = 0; i < plan.Count; ++i)
   {
     const std::int32_t s = plan.Vertices[i];
@@ -393,10 +393,6 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       const Eigen::Vector3d& p = this->Points[tri[(k + 1) % 3]];
       const Eigen::Vector3d& q = this->Points[tri[(k + 2) % 3]];
       const Eigen::Vector3d& old = this->Points[s];
-      if (guardAngles)
-      {
-        worstBefore = std::max(worstBefore, SmallestAngleCosine(old, p, q));
-      }
       if (inside > 1)
       {
         return; // removed by the collapse
@@ -426,8 +422,21 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       return false;
     }
   }
-  // The angle guard: no new angle below the minimum unless the neighbourhood had one as small.
-  return !guardAngles || worstAfter <= this->MinimumAngleCosine || worstAfter <= worstBefore;
+  // The angle guard: no new angle below the minimum unless the neighbourhood had one as small
+  // (measured only when a new angle is below the minimum).
+  if (!guardAngles || worstAfter <= this->MinimumAngleCosine)
+  {
+    return true;
+  }
+  double worstBefore = -1.0;
+  for (int i = 0; i < plan.Count; ++i)
+  {
+    this->ForEachTriangle(plan.Vertices[i], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      worstBefore = std::max(worstBefore, SmallestAngleCosine(this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]));
+    });
+  }
+  return worstAfter <= worstBefore;
 }
 
 void CollapseMesh::SetMinimumAngle(double degrees)
