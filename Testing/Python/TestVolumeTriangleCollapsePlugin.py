@@ -41,6 +41,13 @@ other = servermanager.Fetch(trianglesOnly)
 points = lambda mesh: set(mesh.GetPoint(i) for i in range(mesh.GetNumberOfPoints()))
 check(points(other) != points(output), "EdgeCollapses changes the result")
 
+# The surface term is on by default; 0 gives the paper's order, another mesh of the same count.
+check(simplified.SurfaceErrorWeight == 3000, "SurfaceErrorWeight default")
+volumeOnly = VolumeTriangleCollapse(Input=cow, SurfaceErrorWeight=0)
+volumeOnly.UpdatePipeline()
+check(volumeOnly.GetDataInformation().GetNumberOfCells() == cells, "the same count without the surface term")
+check(points(servermanager.Fetch(volumeOnly)) != points(output), "SurfaceErrorWeight changes the result")
+
 # The closed cow stays a closed 2-manifold.
 edges = FeatureEdges(Input=simplified, BoundaryEdges=1, NonManifoldEdges=1, FeatureEdges=0,
                      ManifoldEdges=0)
