@@ -23,7 +23,8 @@
  *   PreserveBoundary keeps the whole boundary in place;
  * - beyond the paper, a triangle collapses its cheapest edge instead when that costs much less
  *   (EdgeCollapses, default on): mean distances drop by 18–46 % on the shared meshes, to a
- *   third on the CAD fandisk;
+ *   third on the CAD fandisk; a triangle with two boundary corners may collapse its boundary
+ *   edge alone, which lets a triangulated polygon (a fan) be simplified at all;
  * - beyond the paper, the order also weighs how far a collapse moves the surface from the input
  *   triangles merged into it (SurfaceErrorWeight), which keeps the Hausdorff distance down;
  * - every collapse keeps the mesh manifold (link condition), never folds a triangle over and

@@ -32,6 +32,15 @@ double PriorityOf(double cost, int count)
   return cost / (count == 3 ? 4.0 : 2.0);
 }
 
+/// §3.5: the ω in [0, 1] for which ω p_i + (1 − ω) p_j minimises q.
+double SegmentMinimum(const Quadric& q, const Vec3& pi, const Vec3& pj)
+{
+  const Vec3 d = pi - pj;
+  const double a = d.dot(q.A() * d);
+  const double b = d.dot(q.A() * pj + q.B());
+  return a > 0.0 ? std::min(1.0, std::max(0.0, -b / a)) : 0.5;
+}
+
 class VolumeCollapser
 {
 public:
@@ -83,6 +92,8 @@ private:
   double SurfaceError(const CollapsePlan& plan) const;
   void ConstrictionMatrix(std::int32_t t, Quadric& q, Quadric* across = nullptr) const;
   void CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const;
+  /// The edge of t from corner k to the next.
+  void CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* across, Candidate& candidate) const;
   void UpdateVertex(std::int32_t v);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
@@ -290,13 +301,10 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
     const int i = (interior + 1) % 3, j = (interior + 2) % 3;
     const Vec3& pi = this->Mesh.Point(v[i]);
     const Vec3& pj = this->Mesh.Point(v[j]);
-    const Vec3 d = pi - pj;
-    const double a = d.dot(q.A() * d);
-    const double b = d.dot(q.A() * pj + q.B());
-    const double omega = a > 0.0 ? std::min(1.0, std::max(0.0, -b / a)) : 0.5;
+    const double omega = SegmentMinimum(q, pi, pj);
     const int kept = omega >= 0.5 ? i : j;
     ontoCorner(kept);
-    plan.Position = pj + omega * d;
+    plan.Position = pj + omega * (pi - pj);
     plan.Weights[0] = kept == i ? omega : 1.0 - omega;
     // The plan lists (kept, next, next-next); the other boundary vertex takes the rest.
     const int other = kept == i ? j : i;
@@ -385,6 +393,11 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   {
     this->CheaperEdge(t, across, candidate);
   }
+  else if (boundaryCount == 2 && lockedCount == 0 && this->Options.EdgeCollapses)
+  {
+    const int interior = !this->Mesh.OnBoundary(v[0]) ? 0 : !this->Mesh.OnBoundary(v[1]) ? 1 : 2;
+    this->CheaperBoundaryEdge(t, (interior + 1) % 3, across, candidate);
+  }
   candidate.Priority += this->SurfaceError(candidate.Plan);
   // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.
   const Quadric& chosen = candidate.Q;
@@ -465,6 +478,49 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candida
   candidate.Q = bestQ;
   candidate.Cost = bestCost;
   candidate.Priority = PriorityOf(bestCost, 2);
+}
+
+void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* across, Candidate& candidate) const
+{
+  // An edge-boundary triangle (§3.5) collapses its boundary edge alone instead, at the point of
+  // least error on it, when that costs under EdgeErrorShare of the triangle's error. Without it
+  // a fan around one interior vertex (a triangulated polygon) cannot be simplified: every
+  // triangle is edge-boundary and merging the centre into the rim leaves a rim vertex with two
+  // neighbours.
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
+  bool boundaryEdge = true; // no other triangle holds a and b
+  this->Mesh.ForEachTriangle(a, [&](std::int32_t j) {
+    const std::int32_t* o = this->Mesh.Triangle(j);
+    boundaryEdge = boundaryEdge && (j == t || (o[0] != b && o[1] != b && o[2] != b));
+  });
+  if (!boundaryEdge)
+  {
+    return;
+  }
+  Quadric q = this->VertexQuadrics[a];
+  q += this->VertexQuadrics[b];
+  q -= this->TriangleQuadrics[t];
+  q -= across[k];
+  const double omega = SegmentMinimum(q, this->Mesh.Point(a), this->Mesh.Point(b));
+  const Vec3 x = this->Mesh.Point(b) + omega * (this->Mesh.Point(a) - this->Mesh.Point(b));
+  const double cost = q.Evaluate(x);
+  if (!(cost < EdgeErrorShare * candidate.Cost))
+  {
+    return;
+  }
+  CollapsePlan& plan = candidate.Plan;
+  plan.Count = 2;
+  plan.Vertices[0] = omega >= 0.5 ? a : b;
+  plan.Vertices[1] = omega >= 0.5 ? b : a;
+  plan.Vertices[2] = -1;
+  plan.Weights[0] = omega >= 0.5 ? omega : 1.0 - omega;
+  plan.Weights[1] = 1.0 - plan.Weights[0];
+  plan.Weights[2] = 0.0;
+  plan.Position = x;
+  candidate.Q = q;
+  candidate.Cost = cost;
+  candidate.Priority = PriorityOf(cost, 2);
 }
 
 bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate) const

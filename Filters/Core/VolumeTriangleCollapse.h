@@ -48,7 +48,10 @@
  *   triangle collapse always cuts into a curved surface, an edge along a cylinder's ruling line
  *   or a gently curved direction hardly does: on the shared meshes the mean distance drops by
  *   18–46 % (to a third on the CAD fandisk). The heap key is the error per nominally removed
- *   triangle (four for a triangle, two for an edge).
+ *   triangle (four for a triangle, two for an edge). An edge-boundary triangle likewise prices
+ *   its boundary edge alone, at its point of least error on the segment: without that a disk
+ *   fanned around one vertex (a triangulated polygon) cannot be simplified at all, since every
+ *   triangle is edge-boundary and §3.5's collapse leaves a rim vertex with two neighbours.
  * - Beyond the paper (SurfaceErrorWeight, default 3000; 0 gives the paper's order): the heap
  *   key adds the new point's squared distances to the planes of the input triangles merged
  *   into the collapsing vertices (Garland–Heckbert quadrics, area-weighted, summed through the

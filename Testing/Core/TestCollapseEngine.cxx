@@ -559,6 +559,28 @@ void VolumeCollapseReportsProgressAndAborts()
   CHECK(!meshsimp::VolumeTriangleCollapse(sphere.View(), options, result, context));
   CHECK(!reported.empty() && reported.back() >= 0.5 && reported.back() < 1.0);
 }
+void VolumeCollapseSimplifiesFan()
+{
+  // A disk fanned around one vertex (a triangulated polygon): every triangle has two boundary
+  // corners, and §3.5's collapse onto its boundary edge would leave a rim vertex with two
+  // neighbours, so no such collapse is legal. Collapsing the boundary edge alone reaches the
+  // target; the paper's triangle collapses alone stop early.
+  const Mesh fan = Fan(2000);
+  meshsimp::VolumeCollapseOptions options;
+  options.TargetTriangles = 1000;
+  meshsimp::VolumeCollapseResult result;
+  CHECK(meshsimp::VolumeTriangleCollapse(fan.View(), options, result));
+  CHECK(!result.StoppedEarly);
+  CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 1000) <= 10);
+  for (std::size_t i = 0; i < result.Points.size(); i += 3)
+  {
+    CHECK(std::hypot(result.Points[i], result.Points[i + 1]) <= 1.0 + 1e-9); // inside the rim
+  }
+  options.EdgeCollapses = false;
+  CHECK(meshsimp::VolumeTriangleCollapse(fan.View(), options, result));
+  CHECK(result.StoppedEarly);
+}
+
 void VolumeCollapseSurvivesRandomSoups()
 {
   // Triangle soups with repeated and coincident points, duplicate, degenerate and non-manifold
@@ -613,6 +635,7 @@ int main()
     { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
     { "VolumeCollapseLowersGuardRatherThanStop", VolumeCollapseLowersGuardRatherThanStop },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
+    { "VolumeCollapseSimplifiesFan", VolumeCollapseSimplifiesFan },
     { "VolumeCollapseSurvivesRandomSoups", VolumeCollapseSurvivesRandomSoups },
   });
 }
