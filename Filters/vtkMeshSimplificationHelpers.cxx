@@ -2,6 +2,9 @@
 #include "vtkMeshSimplificationHelpers.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkMultiProcessController.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFieldData.h"
@@ -22,6 +25,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <atomic>
@@ -261,12 +265,104 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std:
                                       << ": it is not a point-data array of the input.");
     return false;
   }
-  locked.resize(input->GetNumberOfPoints());
+  locked.resize(input->GetNumberOfPoints(), 0); // keeps the locks already set
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
-    locked[i] = array->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    locked[i] = locked[i] || array->GetComponent(i, 0) != 0.0 ? 1 : 0;
   }
   return true;
+}
+
+vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
+  vtkIdType numberOfPoints, std::vector<std::uint8_t>& locked)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2 || filter->GetNumberOfInputConnections(0) < 1)
+  {
+    return 0;
+  }
+  vtkAlgorithmOutput* connection = filter->GetInputConnection(0, 0);
+  if (vtkCompositeDataSet::SafeDownCast(
+        connection->GetProducer()->GetOutputDataObject(connection->GetIndex())))
+  {
+    return 0;
+  }
+  // This piece's border points: the ends of the edges of one triangle.
+  std::vector<std::int32_t> border;
+  if (triangles)
+  {
+    const meshsimp::TriangleMeshView& view = triangles->View;
+    std::vector<std::array<std::int32_t, 2>> edges;
+    edges.reserve(3 * static_cast<std::size_t>(view.NumberOfTriangles));
+    for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const auto a = static_cast<std::int32_t>(view.Id(3 * t + k));
+        const auto b = static_cast<std::int32_t>(view.Id(3 * t + (k + 1) % 3));
+        edges.push_back({ std::min(a, b), std::max(a, b) });
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    for (std::size_t i = 0; i < edges.size();)
+    {
+      std::size_t j = i + 1;
+      while (j < edges.size() && edges[j] == edges[i])
+      {
+        ++j;
+      }
+      if (j - i == 1)
+      {
+        border.insert(border.end(), { edges[i][0], edges[i][1] });
+      }
+      i = j;
+    }
+    std::sort(border.begin(), border.end());
+    border.erase(std::unique(border.begin(), border.end()), border.end());
+  }
+  std::vector<double> coordinates;
+  coordinates.reserve(3 * border.size());
+  for (const std::int32_t p : border)
+  {
+    const Eigen::Vector3d x = triangles->View.Point(p);
+    coordinates.insert(coordinates.end(), { x.x(), x.y(), x.z() });
+  }
+  // Every piece's border points to every process.
+  const int processes = controller->GetNumberOfProcesses();
+  const int self = controller->GetLocalProcessId();
+  vtkIdType length = static_cast<vtkIdType>(coordinates.size());
+  std::vector<vtkIdType> lengths(processes), offsets(processes + 1, 0);
+  controller->AllGather(&length, lengths.data(), 1);
+  for (int i = 0; i < processes; ++i)
+  {
+    offsets[i + 1] = offsets[i] + lengths[i];
+  }
+  std::vector<double> all(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
+  controller->AllGatherV(coordinates.data(), all.data(), length, lengths.data(), offsets.data());
+  std::vector<std::array<double, 3>> others;
+  for (int i = 0; i < processes; ++i)
+  {
+    for (vtkIdType j = offsets[i]; i != self && j < offsets[i + 1]; j += 3)
+    {
+      others.push_back({ all[j], all[j + 1], all[j + 2] });
+    }
+  }
+  std::sort(others.begin(), others.end());
+  vtkIdType shared = 0;
+  for (std::size_t i = 0; i < border.size(); ++i)
+  {
+    const std::array<double, 3> x = { coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2] };
+    if (std::binary_search(others.begin(), others.end(), x))
+    {
+      if (locked.empty())
+      {
+        locked.assign(static_cast<std::size_t>(numberOfPoints), 0);
+      }
+      locked[border[i]] = 1;
+      ++shared;
+    }
+  }
+  return shared;
 }
 
 namespace

@@ -62,10 +62,23 @@ void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleI
   const std::vector<double>& points, const std::vector<std::int32_t>& outputTriangles,
   const std::vector<std::int32_t>& sourceTriangles, int outputPointsPrecision);
 
-/// User-chosen locks: one flag per input point, nonzero where input array 0 (if one is selected)
-/// is nonzero. False when none is selected (no name, or ParaView's "None"), and with a warning
+/// User-chosen locks: one flag per input point, set where input array 0 (if one is selected)
+/// is nonzero (flags already set stay set). False when none is selected (no name, or ParaView's "None"), and with a warning
 /// when the selected array is not a point array of the input.
 bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std::uint8_t>& locked);
+
+/**
+ * Under MPI (a global controller of several processes) the points this piece shares with other
+ * pieces: its border points (on an edge of one triangle) whose coordinates are on another
+ * piece's border too. Locked, they keep the pieces' common border as it is, so the simplified
+ * pieces still fit together without cracks. Collective: every process calls it once per
+ * execution, with its triangles or none (after an input error). Composite inputs are simplified
+ * block by block, possibly a different number of blocks per process, so they are not exchanged
+ * (their piece borders are not locked). Sets locked[p] for the shared points (locked is sized to
+ * numberOfPoints when empty) and returns their number.
+ */
+vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
+  vtkIdType numberOfPoints, std::vector<std::uint8_t>& locked);
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);

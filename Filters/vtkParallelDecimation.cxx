@@ -29,7 +29,12 @@ int vtkParallelDecimation::RequestData(
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
-  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
+  const bool prepared = vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult);
+  // Under MPI every process takes part in this exchange, also after an input error.
+  std::vector<std::uint8_t> locked;
+  vtkMeshSimplificationHelpers::LockPieceBorders(
+    this, prepared ? &triangles : nullptr, input ? input->GetNumberOfPoints() : 0, locked);
+  if (!prepared)
   {
     return requestResult;
   }
@@ -52,8 +57,8 @@ int vtkParallelDecimation::RequestData(
   options.BucketImportance = this->BucketImportance;
   options.BucketShare = this->BucketShare;
   options.RoundFraction = this->RoundFraction;
-  std::vector<std::uint8_t> locked;
-  if (vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, locked))
+  vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, locked);
+  if (!locked.empty())
   {
     options.LockedPoints = locked.data();
   }

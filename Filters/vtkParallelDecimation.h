@@ -39,9 +39,13 @@
  * with a warning, only when nothing is removable at 180°.
  *
  * Points can be locked (never removed) by a point-data array whose nonzero values mark them,
- * selected as input array 0. Polygons are triangulated and strips decomposed first; vertex and
- * line cells are dropped (a warning says how many); triangles with repeated point ids or
- * non-finite points are ignored.
+ * selected as input array 0.
+ * Under MPI the points this piece shares with other pieces (border points whose coordinates are
+ * on another piece's border, exchanged through the global controller) are locked too, so the
+ * simplified pieces still fit together; not for composite inputs, whose blocks are simplified
+ * one by one. Polygons are triangulated and strips decomposed first; vertex and line cells are
+ * dropped (a warning says how many); triangles with repeated point ids or non-finite points are
+ * ignored.
  *
  * Point data is copied from each surviving point; normals are recomputed. Cell data is copied
  * from the input cell of each surviving triangle. The point array "Importance" holds each output

@@ -34,6 +34,10 @@
  * Points can be locked (kept in place, never removed) by a point-data array whose nonzero
  * values mark them: select it as input array 0, e.g.
  * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked").
+ * Under MPI the points this piece shares with other pieces (border points whose coordinates are
+ * on another piece's border, exchanged through the global controller) are locked too, so the
+ * simplified pieces still fit together; not for composite inputs, whose blocks are simplified
+ * one by one.
  *
  * The triangle count is met within 1 % (TargetReduction or TargetTriangleCount); the filter
  * stops early, with a warning, only when no legal collapse is left.
