@@ -91,6 +91,9 @@ private:
   /// the input planes merged into the plan's vertices.
   double SurfaceError(const CollapsePlan& plan) const;
   void ConstrictionMatrix(std::int32_t t, Quadric& q, Quadric* across = nullptr) const;
+  /// Makes the candidate the collapse of edge (kept, other) to position with quadric q.
+  static void SetEdgePlan(std::int32_t kept, std::int32_t other, double keptWeight,
+    const Vec3& position, const Quadric& q, double cost, Candidate& candidate);
   void CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const;
   /// The edge of t from corner k to the next.
   void CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* across, Candidate& candidate) const;
@@ -421,6 +424,23 @@ bool VolumeCollapser::IsFlat(const Candidate& candidate) const
   return candidate.Cost <= FlatTolerance * (q.A00 + q.A11 + q.A22) * longest2;
 }
 
+void VolumeCollapser::SetEdgePlan(std::int32_t kept, std::int32_t other, double keptWeight,
+  const Vec3& position, const Quadric& q, double cost, Candidate& candidate)
+{
+  CollapsePlan& plan = candidate.Plan;
+  plan.Count = 2;
+  plan.Vertices[0] = kept;
+  plan.Vertices[1] = other;
+  plan.Vertices[2] = -1;
+  plan.Weights[0] = keptWeight;
+  plan.Weights[1] = 1.0 - keptWeight;
+  plan.Weights[2] = 0.0;
+  plan.Position = position;
+  candidate.Q = q;
+  candidate.Cost = cost;
+  candidate.Priority = PriorityOf(cost, 2);
+}
+
 void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const
 {
   // The edge of t of least error collapses instead when that error is below EdgeErrorShare of
@@ -466,18 +486,14 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candida
   const double length2 = d.squaredNorm();
   const double s =
     length2 > 0.0 ? std::min(1.0, std::max(0.0, (bestX - this->Mesh.Point(a)).dot(d) / length2)) : 0.5;
-  CollapsePlan& plan = candidate.Plan;
-  plan.Count = 2;
-  plan.Vertices[0] = s <= 0.5 ? a : b;
-  plan.Vertices[1] = s <= 0.5 ? b : a;
-  plan.Vertices[2] = -1;
-  plan.Weights[0] = s <= 0.5 ? 1.0 - s : s;
-  plan.Weights[1] = 1.0 - plan.Weights[0];
-  plan.Weights[2] = 0.0;
-  plan.Position = bestX;
-  candidate.Q = bestQ;
-  candidate.Cost = bestCost;
-  candidate.Priority = PriorityOf(bestCost, 2);
+  if (s <= 0.5)
+  {
+    SetEdgePlan(a, b, 1.0 - s, bestX, bestQ, bestCost, candidate);
+  }
+  else
+  {
+    SetEdgePlan(b, a, s, bestX, bestQ, bestCost, candidate);
+  }
 }
 
 void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* across, Candidate& candidate) const
@@ -509,18 +525,14 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* 
   {
     return;
   }
-  CollapsePlan& plan = candidate.Plan;
-  plan.Count = 2;
-  plan.Vertices[0] = omega >= 0.5 ? a : b;
-  plan.Vertices[1] = omega >= 0.5 ? b : a;
-  plan.Vertices[2] = -1;
-  plan.Weights[0] = omega >= 0.5 ? omega : 1.0 - omega;
-  plan.Weights[1] = 1.0 - plan.Weights[0];
-  plan.Weights[2] = 0.0;
-  plan.Position = x;
-  candidate.Q = q;
-  candidate.Cost = cost;
-  candidate.Priority = PriorityOf(cost, 2);
+  if (omega >= 0.5)
+  {
+    SetEdgePlan(a, b, omega, x, q, cost, candidate);
+  }
+  else
+  {
+    SetEdgePlan(b, a, 1.0 - omega, x, q, cost, candidate);
+  }
 }
 
 bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate) const
