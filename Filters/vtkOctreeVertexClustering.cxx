@@ -28,7 +28,12 @@ int vtkOctreeVertexClustering::RequestData(
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
-  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
+  const bool prepared = vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult);
+  // Under MPI every process takes part in this exchange, also after an input error.
+  std::vector<std::uint8_t> locked;
+  vtkMeshSimplificationHelpers::LockPieceBorders(
+    this, prepared ? &triangles : nullptr, input ? input->GetNumberOfPoints() : 0, locked);
+  if (!prepared)
   {
     return requestResult;
   }
@@ -56,6 +61,7 @@ int vtkOctreeVertexClustering::RequestData(
   options.BoundaryPlanes = this->BoundaryPlanes;
   options.BoundaryWeight = this->BoundaryWeight;
   options.PreventFlips = this->PreventFlips;
+  options.LockedPoints = locked.empty() ? nullptr : locked.data();
 
   meshsimp::OctreeClusteringResult result;
   const bool finished = meshsimp::OctreeVertexClustering(triangles.View, options, result,

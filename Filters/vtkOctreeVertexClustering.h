@@ -35,6 +35,11 @@
  * with NaN or infinite coordinates) are ignored. Degenerate and duplicate output triangles are
  * removed and unused points dropped.
  *
+ * Under MPI the points this piece shares with other pieces (border points whose coordinates are
+ * on another piece's border, exchanged through the global controller) are clusters of their own
+ * at their input coordinates, so the simplified pieces still meet along their common border;
+ * not for composite inputs, whose blocks are simplified one by one.
+ *
  * Every point-data array is carried to the output as the area-weighted average over each
  * cluster (normals are recomputed from the output triangles); cell data is copied from the
  * input cell of each surviving triangle. Two point arrays are added: "ClusterSize" (the number

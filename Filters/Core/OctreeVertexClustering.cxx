@@ -201,6 +201,7 @@ private:
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
   std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot, empty without boundary planes
   std::vector<std::uint8_t> BoundaryVertices; // per vertex: one of its slots has a flag
+  std::vector<std::uint8_t> Locked; // per vertex: a cluster of its own (LockedPoints)
 
   // Octree: every node owns a contiguous range of Order (the compact mesh's vertices, in its
   // spatial order within a leaf); Position is the inverse permutation.
@@ -245,6 +246,11 @@ void Clusterer::PrepareGeometry()
   const double diagonal = (this->Local.Upper - this->Local.Lower).norm();
   this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   this->P = std::move(this->Local.Points);
+  this->Locked.assign(n, 0);
+  for (std::int64_t v = 0; v < n && this->Options.LockedPoints; ++v)
+  {
+    this->Locked[v] = this->Options.LockedPoints[this->Local.InputVertex[v]] ? 1 : 0;
+  }
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
@@ -538,7 +544,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
 
   // Clusters are the connected components of the leaf's vertices (edges inside the leaf only),
   // found by a flood fill from each unlabelled vertex in leaf order, so a cluster's number
-  // follows its first vertex.
+  // follows its first vertex. A locked vertex is a component of its own.
   // The pushes are branch-free: whether a neighbour is inside and new is unpredictable.
   const std::uint32_t size = static_cast<std::uint32_t>(end - begin);
   std::vector<std::int32_t>& stack = scratch.Stack;
@@ -554,7 +560,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
     }
     root[first] = count;
     stack[0] = static_cast<std::int32_t>(first);
-    for (std::uint32_t top = 1; top > 0;)
+    for (std::uint32_t top = this->Locked[this->Order[begin + first]] ? 0 : 1; top > 0;)
     {
       const std::int32_t v = this->Order[begin + stack[--top]];
       for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
@@ -563,7 +569,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
         {
           const std::uint32_t at = static_cast<std::uint32_t>(this->Position[w] - begin);
           const std::uint32_t k = at < size ? at : 0;
-          const bool fresh = (at < size) & (root[k] < 0);
+          const bool fresh = (at < size) & (root[k] < 0) & (this->Locked[w] == 0);
           root[k] = fresh ? count : root[k];
           stack[top] = static_cast<std::int32_t>(k);
           top += fresh;
@@ -1197,12 +1203,13 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
     for (const std::int32_t v : stranded)
     {
       const std::int32_t c = this->VertexCluster[v];
-      for (const Corner* k = this->Adjacency.Begin(v); k != this->Adjacency.End(v); ++k)
+      // A locked vertex neither joins another cluster nor is joined.
+      for (const Corner* k = this->Adjacency.Begin(v); k != this->Adjacency.End(v) && !this->Locked[v]; ++k)
       {
         for (const std::int32_t w : { k->Next, k->Previous })
         {
           const std::int32_t o = owner[this->VertexCluster[w]];
-          if (o >= 0 && candidate[c] != o)
+          if (o >= 0 && !this->Locked[w] && candidate[c] != o) // nothing joins a locked vertex
           {
             candidate[c] = candidate[c] == -1 ? o : Several;
           }
@@ -1375,7 +1382,9 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
   this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t p = b; p < e; ++p)
     {
-      const Vec3 x = position[p] / this->Scale + this->Origin;
+      const std::int32_t first = members(p)[0];
+      const Vec3 x = this->Locked[first] ? this->Input.Point(this->Local.InputVertex[first])
+                                         : Vec3(position[p] / this->Scale + this->Origin);
       for (int k = 0; k < 3; ++k)
       {
         result.Points[3 * p + k] = x[k];

@@ -73,6 +73,10 @@ struct OctreeClusteringOptions
   double BoundaryWeight = 10.0;
   /// Split leaves whose clustering would flip a related triangle (§2.4).
   bool PreventFlips = true;
+  /// Optional, one flag per input point: nonzero points are clusters of their own, kept at
+  /// their input coordinates bit for bit, and no cluster joins them (e.g. the points a piece
+  /// shares with other pieces under MPI, so that the simplified pieces still fit together).
+  const std::uint8_t* LockedPoints = nullptr;
 };
 
 struct OctreeClusteringResult
