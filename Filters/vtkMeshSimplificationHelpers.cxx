@@ -287,7 +287,8 @@ vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
   {
     return 0;
   }
-  // This piece's border points: the ends of the edges of one triangle.
+  // This piece's border points: the ends of the edges of one triangle (of the triangles the
+  // algorithms use: ids in range, three distinct).
   std::vector<std::int32_t> border;
   if (triangles)
   {
@@ -296,10 +297,12 @@ vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
     edges.reserve(3 * static_cast<std::size_t>(view.NumberOfTriangles));
     for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
     {
-      for (int k = 0; k < 3; ++k)
+      const std::int64_t ids[3] = { view.Id(3 * t), view.Id(3 * t + 1), view.Id(3 * t + 2) };
+      const bool valid = std::all_of(ids, ids + 3, [&](std::int64_t i) { return i >= 0 && i < view.NumberOfPoints; }) &&
+        ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0];
+      for (int k = 0; k < 3 && valid; ++k)
       {
-        const auto a = static_cast<std::int32_t>(view.Id(3 * t + k));
-        const auto b = static_cast<std::int32_t>(view.Id(3 * t + (k + 1) % 3));
+        const auto a = static_cast<std::int32_t>(ids[k]), b = static_cast<std::int32_t>(ids[(k + 1) % 3]);
         edges.push_back({ std::min(a, b), std::max(a, b) });
       }
     }
@@ -320,6 +323,9 @@ vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
     std::sort(border.begin(), border.end());
     border.erase(std::unique(border.begin(), border.end()), border.end());
   }
+  border.erase(std::remove_if(border.begin(), border.end(),
+                 [&](std::int32_t p) { return !triangles->View.Point(p).allFinite(); }),
+    border.end()); // NaN would break the ordering below
   std::vector<double> coordinates;
   coordinates.reserve(3 * border.size());
   for (const std::int32_t p : border)
