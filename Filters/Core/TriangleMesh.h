@@ -70,6 +70,9 @@ struct Corner
 class FanLookup
 {
 public:
+  /// Lists up to this long are scanned.
+  static constexpr std::int32_t ScanLimit = 32;
+
   /// Indexes idAt(0), ..., idAt(count − 1).
   template <typename IdAt>
   void Reset(std::int32_t count, const IdAt& idAt)
@@ -120,7 +123,6 @@ public:
   }
 
 private:
-  static constexpr std::int32_t ScanLimit = 32;
   std::int32_t Size = 0;
   std::vector<std::pair<std::int32_t, std::int32_t>> Sorted;
 };
@@ -187,7 +189,8 @@ enum BoundaryCorner : std::uint8_t
  * Writes the BoundaryCorner flags of every corner slot around v to flags[0 .. degree(v)) and
  * returns whether any is set. An edge shared by three or more triangles, or by two of opposite
  * orientations, is not a boundary. Works one vertex at a time, so callers fuse it into their
- * own vertex loops and vertices can be processed concurrently.
+ * own vertex loops and vertices can be processed concurrently. A fan of more than a few dozen
+ * triangles is matched through FanLookup (n log n instead of n²).
  */
 inline bool MarkBoundaryCorners(
   const VertexTriangleAdjacency& adjacency, std::int64_t v, std::uint8_t* flags)
@@ -196,6 +199,15 @@ inline bool MarkBoundaryCorners(
   const Corner* last = adjacency.End(v);
   const std::size_t degree = static_cast<std::size_t>(last - first);
   std::fill(flags, flags + degree, static_cast<std::uint8_t>(OutgoingBoundaryEdge | IncomingBoundaryEdge));
+  const auto nextAt = [first](std::int32_t i) { return first[i].Next; };
+  const auto previousAt = [first](std::int32_t i) { return first[i].Previous; };
+  FanLookup byNext, byPrevious;
+  const bool large = degree > static_cast<std::size_t>(FanLookup::ScanLimit);
+  if (large)
+  {
+    byNext.Reset(static_cast<std::int32_t>(degree), nextAt);
+    byPrevious.Reset(static_cast<std::int32_t>(degree), previousAt);
+  }
   // A consistently oriented neighbour o shares c's edge (v, Next) as its (Previous, v): both
   // flags are cleared at once. What is left takes the general test: another triangle around v
   // with the edge's far end as any corner.
@@ -203,7 +215,12 @@ inline bool MarkBoundaryCorners(
   {
     // The first match, found without an early exit (its position is unpredictable).
     std::size_t match = degree;
-    for (std::size_t j = degree; j-- > 0;)
+    if (large)
+    {
+      const std::int32_t found = byPrevious.Find(first[i].Next, previousAt);
+      match = found >= 0 ? static_cast<std::size_t>(found) : degree;
+    }
+    for (std::size_t j = large ? 0 : degree; j-- > 0;)
     {
       match = first[j].Previous == first[i].Next ? j : match;
     }
@@ -220,7 +237,25 @@ inline bool MarkBoundaryCorners(
   bool any = false;
   for (std::size_t i = 0; i < degree; ++i)
   {
-    for (std::size_t j = 0; j < degree && flags[i]; ++j)
+    if (large && flags[i])
+    {
+      // The far end as a previous corner anywhere, or as another triangle's next corner (two
+      // holders, i being one); likewise for the edge into v.
+      int holders = 0;
+      if ((flags[i] & OutgoingBoundaryEdge) &&
+        (byPrevious.Find(first[i].Next, previousAt) >= 0 ||
+          (byNext.Find(first[i].Next, nextAt, &holders), holders > 1)))
+      {
+        flags[i] &= static_cast<std::uint8_t>(~OutgoingBoundaryEdge);
+      }
+      if ((flags[i] & IncomingBoundaryEdge) &&
+        (byNext.Find(first[i].Previous, nextAt) >= 0 ||
+          (byPrevious.Find(first[i].Previous, previousAt, &holders), holders > 1)))
+      {
+        flags[i] &= static_cast<std::uint8_t>(~IncomingBoundaryEdge);
+      }
+    }
+    for (std::size_t j = 0; j < degree && flags[i] && !large; ++j)
     {
       const Corner& o = first[j];
       if ((flags[i] & OutgoingBoundaryEdge) &&
