@@ -287,51 +287,23 @@ vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
   {
     return 0;
   }
-  // This piece's border points: the ends of the edges of one triangle (of the triangles the
-  // algorithms use: ids in range, three distinct).
+  // This piece's border points (input ids), from its usable triangles: the vertices with a
+  // boundary edge.
   std::vector<std::int32_t> border;
+  std::vector<double> coordinates;
   if (triangles)
   {
-    const meshsimp::TriangleMeshView& view = triangles->View;
-    std::vector<std::array<std::int32_t, 2>> edges;
-    edges.reserve(3 * static_cast<std::size_t>(view.NumberOfTriangles));
-    for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
+    const meshsimp::CompactMesh mesh = meshsimp::MakeCompactMesh(triangles->View);
+    std::vector<std::uint8_t> flags;
+    for (std::size_t v = 0; v < mesh.Points.size(); ++v)
     {
-      const std::int64_t ids[3] = { view.Id(3 * t), view.Id(3 * t + 1), view.Id(3 * t + 2) };
-      const bool valid = std::all_of(ids, ids + 3, [&](std::int64_t i) { return i >= 0 && i < view.NumberOfPoints; }) &&
-        ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0];
-      for (int k = 0; k < 3 && valid; ++k)
+      flags.resize(static_cast<std::size_t>(mesh.Adjacency.Offsets[v + 1] - mesh.Adjacency.Offsets[v]));
+      if (meshsimp::MarkBoundaryCorners(mesh.Adjacency, static_cast<std::int64_t>(v), flags.data()))
       {
-        const auto a = static_cast<std::int32_t>(ids[k]), b = static_cast<std::int32_t>(ids[(k + 1) % 3]);
-        edges.push_back({ std::min(a, b), std::max(a, b) });
+        border.push_back(mesh.InputVertex[v]);
+        coordinates.insert(coordinates.end(), { mesh.Points[v].x(), mesh.Points[v].y(), mesh.Points[v].z() });
       }
     }
-    std::sort(edges.begin(), edges.end());
-    for (std::size_t i = 0; i < edges.size();)
-    {
-      std::size_t j = i + 1;
-      while (j < edges.size() && edges[j] == edges[i])
-      {
-        ++j;
-      }
-      if (j - i == 1)
-      {
-        border.insert(border.end(), { edges[i][0], edges[i][1] });
-      }
-      i = j;
-    }
-    std::sort(border.begin(), border.end());
-    border.erase(std::unique(border.begin(), border.end()), border.end());
-  }
-  border.erase(std::remove_if(border.begin(), border.end(),
-                 [&](std::int32_t p) { return !triangles->View.Point(p).allFinite(); }),
-    border.end()); // NaN would break the ordering below
-  std::vector<double> coordinates;
-  coordinates.reserve(3 * border.size());
-  for (const std::int32_t p : border)
-  {
-    const Eigen::Vector3d x = triangles->View.Point(p);
-    coordinates.insert(coordinates.end(), { x.x(), x.y(), x.z() });
   }
   // Every piece's border points to every process.
   const int processes = controller->GetNumberOfProcesses();
