@@ -90,13 +90,20 @@ private:
   /// SurfaceErrorWeight's term of the heap key: the new point's weighted squared distance to
   /// the input planes merged into the plan's vertices.
   double SurfaceError(const CollapsePlan& plan) const;
-  void ConstrictionMatrix(std::int32_t t, Quadric& q, Quadric* across = nullptr) const;
+  /// The triangles across t's edges (edge k from corner k to the next): their summed quadrics
+  /// and how many there are.
+  struct EdgeNeighbours
+  {
+    Quadric Quadrics[3];
+    int Count[3] = { 0, 0, 0 };
+  };
+  void ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbours* across = nullptr) const;
   /// Makes the candidate the collapse of edge (kept, other) to position with quadric q.
   static void SetEdgePlan(std::int32_t kept, std::int32_t other, double keptWeight,
     const Vec3& position, const Quadric& q, double cost, Candidate& candidate);
-  void CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const;
+  void CheaperEdge(std::int32_t t, const EdgeNeighbours& across, Candidate& candidate) const;
   /// The edge of t from corner k to the next.
-  void CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* across, Candidate& candidate) const;
+  void CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const;
   void UpdateVertex(std::int32_t v);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
@@ -224,7 +231,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
   this->TriangleQuadrics[t] = Quadric::FromPlane(n, -n.dot(this->Mesh.Point(tri[0])), weight);
 }
 
-void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, Quadric* across) const
+void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbours* across) const
 {
   // Σ Q_j over the triangles sharing a vertex with t (Definition 2), from the vertex sums:
   // a triangle across an edge of t is in two of them, t itself in three.
@@ -244,7 +251,8 @@ void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, Quadric* ac
         q -= this->TriangleQuadrics[j];
         if (across)
         {
-          across[k] += this->TriangleQuadrics[j];
+          across->Quadrics[k] += this->TriangleQuadrics[j];
+          ++across->Count[k];
         }
       }
     });
@@ -272,8 +280,8 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
     return candidate;
   }
   Quadric q;
-  Quadric across[3]; // the quadrics of the triangles across t's edges
-  this->ConstrictionMatrix(t, q, this->Options.EdgeCollapses ? across : nullptr);
+  EdgeNeighbours across;
+  this->ConstrictionMatrix(t, q, this->Options.EdgeCollapses ? &across : nullptr);
 
   // The kept corner goes first in the plan; weights follow the plan's vertex order.
   auto ontoCorner = [&](int k) {
@@ -287,6 +295,7 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   };
   CollapsePlan& plan = candidate.Plan;
   plan.Count = 3;
+  int boundaryEdge = -1; // an edge-boundary triangle's edge between its boundary corners
   if (lockedCount == 1)
   {
     ontoCorner(locked);
@@ -302,6 +311,7 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
     // §3.5: an edge-boundary triangle collapses to ω v_i + (1 − ω) v_j minimising eq. (1).
     const int interior = !this->Mesh.OnBoundary(v[0]) ? 0 : !this->Mesh.OnBoundary(v[1]) ? 1 : 2;
     const int i = (interior + 1) % 3, j = (interior + 2) % 3;
+    boundaryEdge = i;
     const Vec3& pi = this->Mesh.Point(v[i]);
     const Vec3& pj = this->Mesh.Point(v[j]);
     const double omega = SegmentMinimum(q, pi, pj);
@@ -396,10 +406,9 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   {
     this->CheaperEdge(t, across, candidate);
   }
-  else if (boundaryCount == 2 && lockedCount == 0 && this->Options.EdgeCollapses)
+  else if (boundaryEdge >= 0 && this->Options.EdgeCollapses)
   {
-    const int interior = !this->Mesh.OnBoundary(v[0]) ? 0 : !this->Mesh.OnBoundary(v[1]) ? 1 : 2;
-    this->CheaperBoundaryEdge(t, (interior + 1) % 3, across, candidate);
+    this->CheaperBoundaryEdge(t, boundaryEdge, across, candidate);
   }
   candidate.Priority += this->SurfaceError(candidate.Plan);
   // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.
@@ -441,7 +450,7 @@ void VolumeCollapser::SetEdgePlan(std::int32_t kept, std::int32_t other, double 
   candidate.Priority = PriorityOf(cost, 2);
 }
 
-void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candidate& candidate) const
+void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, Candidate& candidate) const
 {
   // The edge of t of least error collapses instead when that error is below EdgeErrorShare of
   // the triangle's: on a cylinder an edge along a ruling line merges without error, a triangle
@@ -457,7 +466,7 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candida
     Quadric q = this->VertexQuadrics[tri[k]];
     q += this->VertexQuadrics[tri[(k + 1) % 3]];
     q -= this->TriangleQuadrics[t];
-    q -= across[k];
+    q -= across.Quadrics[k];
     const Vec3& pa = this->Mesh.Point(tri[k]);
     const Vec3& pb = this->Mesh.Point(tri[(k + 1) % 3]);
     const Vec3 middle = 0.5 * (pa + pb);
@@ -496,28 +505,22 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const Quadric* across, Candida
   }
 }
 
-void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const Quadric* across, Candidate& candidate) const
+void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const
 {
   // An edge-boundary triangle (§3.5) collapses its boundary edge alone instead, at the point of
   // least error on it, when that costs under EdgeErrorShare of the triangle's error. Without it
   // a fan around one interior vertex (a triangulated polygon) cannot be simplified: every
   // triangle is edge-boundary and merging the centre into the rim leaves a rim vertex with two
   // neighbours.
+  if (across.Count[k] != 0)
+  {
+    return; // not a boundary edge: two boundary vertices joined across the interior
+  }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
-  bool boundaryEdge = true; // no other triangle holds a and b
-  this->Mesh.ForEachTriangle(a, [&](std::int32_t j) {
-    const std::int32_t* o = this->Mesh.Triangle(j);
-    boundaryEdge = boundaryEdge && (j == t || (o[0] != b && o[1] != b && o[2] != b));
-  });
-  if (!boundaryEdge)
-  {
-    return;
-  }
   Quadric q = this->VertexQuadrics[a];
   q += this->VertexQuadrics[b];
   q -= this->TriangleQuadrics[t];
-  q -= across[k];
   const double omega = SegmentMinimum(q, this->Mesh.Point(a), this->Mesh.Point(b));
   const Vec3 x = this->Mesh.Point(b) + omega * (this->Mesh.Point(a) - this->Mesh.Point(b));
   const double cost = q.Evaluate(x);
