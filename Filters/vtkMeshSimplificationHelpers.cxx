@@ -164,11 +164,88 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   return true;
 }
 
-bool PrepareTriangles(
-  vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles, int& requestResult)
+namespace
+{
+/// PrepareTriangles' exchange of piece borders under MPI (see there); triangles is null after an
+/// input error. Returns the number of points locked here.
+vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
+  vtkIdType numberOfPoints, std::vector<std::uint8_t>& locked)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2 || filter->GetNumberOfInputConnections(0) < 1)
+  {
+    return 0;
+  }
+  vtkAlgorithmOutput* connection = filter->GetInputConnection(0, 0);
+  if (vtkCompositeDataSet::SafeDownCast(
+        connection->GetProducer()->GetOutputDataObject(connection->GetIndex())))
+  {
+    return 0;
+  }
+  // This piece's border points (input ids), from its usable triangles: the vertices with a
+  // boundary edge.
+  std::vector<std::int32_t> border;
+  std::vector<double> coordinates;
+  if (triangles)
+  {
+    const meshsimp::CompactMesh mesh = meshsimp::MakeCompactMesh(triangles->View);
+    std::vector<std::uint8_t> flags;
+    for (std::size_t v = 0; v < mesh.Points.size(); ++v)
+    {
+      flags.resize(static_cast<std::size_t>(mesh.Adjacency.Offsets[v + 1] - mesh.Adjacency.Offsets[v]));
+      if (meshsimp::MarkBoundaryCorners(mesh.Adjacency, static_cast<std::int64_t>(v), flags.data()))
+      {
+        border.push_back(mesh.InputVertex[v]);
+        coordinates.insert(coordinates.end(), { mesh.Points[v].x(), mesh.Points[v].y(), mesh.Points[v].z() });
+      }
+    }
+  }
+  // Every piece's border points to every process.
+  const int processes = controller->GetNumberOfProcesses();
+  const int self = controller->GetLocalProcessId();
+  vtkIdType length = static_cast<vtkIdType>(coordinates.size());
+  std::vector<vtkIdType> lengths(processes), offsets(processes + 1, 0);
+  controller->AllGather(&length, lengths.data(), 1);
+  for (int i = 0; i < processes; ++i)
+  {
+    offsets[i + 1] = offsets[i] + lengths[i];
+  }
+  std::vector<double> all(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
+  controller->AllGatherV(coordinates.data(), all.data(), length, lengths.data(), offsets.data());
+  std::vector<std::array<double, 3>> others;
+  for (int i = 0; i < processes; ++i)
+  {
+    for (vtkIdType j = offsets[i]; i != self && j < offsets[i + 1]; j += 3)
+    {
+      others.push_back({ all[j], all[j + 1], all[j + 2] });
+    }
+  }
+  std::sort(others.begin(), others.end());
+  vtkIdType shared = 0;
+  for (std::size_t i = 0; i < border.size(); ++i)
+  {
+    const std::array<double, 3> x = { coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2] };
+    if (std::binary_search(others.begin(), others.end(), x))
+    {
+      if (locked.empty())
+      {
+        locked.assign(static_cast<std::size_t>(numberOfPoints), 0);
+      }
+      locked[border[i]] = 1;
+      ++shared;
+    }
+  }
+  return shared;
+}
+}
+
+bool PrepareTriangles(vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles,
+  int& requestResult, std::vector<std::uint8_t>& pieceLocks)
 {
   std::string problem;
-  if (!ExtractTriangles(input, triangles, problem))
+  const bool extracted = ExtractTriangles(input, triangles, problem);
+  LockPieceBorders(filter, extracted ? &triangles : nullptr, input->GetNumberOfPoints(), pieceLocks);
+  if (!extracted)
   {
     vtkErrorWithObjectMacro(filter, << "Cannot simplify: " << problem << ".");
     requestResult = 0;
@@ -271,76 +348,6 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std:
     locked[i] = locked[i] || array->GetComponent(i, 0) != 0.0 ? 1 : 0;
   }
   return true;
-}
-
-vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
-  vtkIdType numberOfPoints, std::vector<std::uint8_t>& locked)
-{
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (!controller || controller->GetNumberOfProcesses() < 2 || filter->GetNumberOfInputConnections(0) < 1)
-  {
-    return 0;
-  }
-  vtkAlgorithmOutput* connection = filter->GetInputConnection(0, 0);
-  if (vtkCompositeDataSet::SafeDownCast(
-        connection->GetProducer()->GetOutputDataObject(connection->GetIndex())))
-  {
-    return 0;
-  }
-  // This piece's border points (input ids), from its usable triangles: the vertices with a
-  // boundary edge.
-  std::vector<std::int32_t> border;
-  std::vector<double> coordinates;
-  if (triangles)
-  {
-    const meshsimp::CompactMesh mesh = meshsimp::MakeCompactMesh(triangles->View);
-    std::vector<std::uint8_t> flags;
-    for (std::size_t v = 0; v < mesh.Points.size(); ++v)
-    {
-      flags.resize(static_cast<std::size_t>(mesh.Adjacency.Offsets[v + 1] - mesh.Adjacency.Offsets[v]));
-      if (meshsimp::MarkBoundaryCorners(mesh.Adjacency, static_cast<std::int64_t>(v), flags.data()))
-      {
-        border.push_back(mesh.InputVertex[v]);
-        coordinates.insert(coordinates.end(), { mesh.Points[v].x(), mesh.Points[v].y(), mesh.Points[v].z() });
-      }
-    }
-  }
-  // Every piece's border points to every process.
-  const int processes = controller->GetNumberOfProcesses();
-  const int self = controller->GetLocalProcessId();
-  vtkIdType length = static_cast<vtkIdType>(coordinates.size());
-  std::vector<vtkIdType> lengths(processes), offsets(processes + 1, 0);
-  controller->AllGather(&length, lengths.data(), 1);
-  for (int i = 0; i < processes; ++i)
-  {
-    offsets[i + 1] = offsets[i] + lengths[i];
-  }
-  std::vector<double> all(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
-  controller->AllGatherV(coordinates.data(), all.data(), length, lengths.data(), offsets.data());
-  std::vector<std::array<double, 3>> others;
-  for (int i = 0; i < processes; ++i)
-  {
-    for (vtkIdType j = offsets[i]; i != self && j < offsets[i + 1]; j += 3)
-    {
-      others.push_back({ all[j], all[j + 1], all[j + 2] });
-    }
-  }
-  std::sort(others.begin(), others.end());
-  vtkIdType shared = 0;
-  for (std::size_t i = 0; i < border.size(); ++i)
-  {
-    const std::array<double, 3> x = { coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2] };
-    if (std::binary_search(others.begin(), others.end(), x))
-    {
-      if (locked.empty())
-      {
-        locked.assign(static_cast<std::size_t>(numberOfPoints), 0);
-      }
-      locked[border[i]] = 1;
-      ++shared;
-    }
-  }
-  return shared;
 }
 
 namespace

@@ -46,11 +46,21 @@ struct TriangleInput
 /// False with a message in error when the input cannot be processed at all (too large).
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string& error);
 
-/// ExtractTriangles as every filter starts: an error for an input it cannot process, a warning
-/// for the vertex and line cells it drops. False when there is nothing to simplify; then
-/// requestResult is what RequestData returns (0 after an error, 1 for an empty input).
-bool PrepareTriangles(
-  vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles, int& requestResult);
+/**
+ * ExtractTriangles as every filter starts: an error for an input it cannot process, a warning
+ * for the vertex and line cells it drops. False when there is nothing to simplify; then
+ * requestResult is what RequestData returns (0 after an error, 1 for an empty input).
+ *
+ * Under MPI (a global controller of several processes) also the points this piece shares with
+ * other pieces: its border points whose coordinates are on another piece's border too, flagged
+ * in pieceLocks (sized to the input's points when any is found). Locked, they keep the pieces'
+ * common border as it is, so the simplified pieces still fit together without cracks. This is
+ * collective: every process calls it once per execution, whatever its input. Composite inputs
+ * are simplified block by block, possibly a different number of blocks per process, so they are
+ * not exchanged (their piece borders are not locked).
+ */
+bool PrepareTriangles(vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles,
+  int& requestResult, std::vector<std::uint8_t>& pieceLocks);
 
 /// Warns about ignored non-finite points and about an abort; returns finished.
 bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints);
@@ -63,22 +73,10 @@ void SetOutputTriangles(vtkPolyData* input, vtkPolyData* output, const TriangleI
   const std::vector<std::int32_t>& sourceTriangles, int outputPointsPrecision);
 
 /// User-chosen locks: one flag per input point, set where input array 0 (if one is selected)
-/// is nonzero (flags already set stay set). False when none is selected (no name, or ParaView's "None"), and with a warning
-/// when the selected array is not a point array of the input.
+/// is nonzero (flags already set stay set). False when none is selected (no name, or
+/// ParaView's "None"), and with a warning when the selected array is not a point array of the
+/// input.
 bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std::uint8_t>& locked);
-
-/**
- * Under MPI (a global controller of several processes) the points this piece shares with other
- * pieces: its border points (on an edge of one triangle) whose coordinates are on another
- * piece's border too. Locked, they keep the pieces' common border as it is, so the simplified
- * pieces still fit together without cracks. Collective: every process calls it once per
- * execution, with its triangles or none (after an input error). Composite inputs are simplified
- * block by block, possibly a different number of blocks per process, so they are not exchanged
- * (their piece borders are not locked). Sets locked[p] for the shared points (locked is sized to
- * numberOfPoints when empty) and returns their number.
- */
-vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
-  vtkIdType numberOfPoints, std::vector<std::uint8_t>& locked);
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);

@@ -28,12 +28,8 @@ int vtkOctreeVertexClustering::RequestData(
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
-  const bool prepared = vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult);
-  // Under MPI every process takes part in this exchange, also after an input error.
-  std::vector<std::uint8_t> locked;
-  vtkMeshSimplificationHelpers::LockPieceBorders(
-    this, prepared ? &triangles : nullptr, input ? input->GetNumberOfPoints() : 0, locked);
-  if (!prepared)
+  std::vector<std::uint8_t> locked; // piece borders under MPI
+  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult, locked))
   {
     return requestResult;
   }
