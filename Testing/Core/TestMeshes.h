@@ -159,6 +159,7 @@ Mesh Sphere(int n)
   }
   return mesh;
 }
+
 /// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
 double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c)
