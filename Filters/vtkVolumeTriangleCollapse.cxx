@@ -72,6 +72,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->SquareVolumeError = 0.0;
+  this->AchievedMaximumError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
@@ -83,9 +84,13 @@ int vtkVolumeTriangleCollapse::RequestData(
 
   meshsimp::VolumeCollapseOptions options;
   const std::int64_t inputTriangles = triangles.View.NumberOfTriangles;
-  options.TargetTriangles = this->TargetMode == TARGET_TRIANGLE_COUNT
+  const bool bounded = this->TargetMode == TARGET_MAXIMUM_ERROR;
+  options.TargetTriangles = bounded ? 0
+    : this->TargetMode == TARGET_TRIANGLE_COUNT
     ? static_cast<std::int64_t>(this->TargetTriangleCount)
     : static_cast<std::int64_t>(std::llround(inputTriangles * (1.0 - this->TargetReduction)));
+  options.MaximumError = bounded ? this->MaximumError : -1.0;
+  options.RelativeError = this->RelativeError;
   options.FeatureCurvature = this->FeatureCurvature;
   options.PreserveBoundary = this->PreserveBoundary;
   options.BoundaryCornerAngle = this->BoundaryCornerAngle;
@@ -116,7 +121,7 @@ int vtkVolumeTriangleCollapse::RequestData(
     vtkWarningMacro(<< "The angle guard refused every collapse left before the target: lowered from "
                     << this->MinimumAngle << " to " << result.FinalMinimumAngle << " degrees.");
   }
-  if (result.StoppedEarly)
+  if (result.StoppedEarly && !bounded) // with a bound, stopping is how it ends
   {
     vtkWarningMacro(<< "Stopped at " << numberOfTriangles << " triangles ("
                     << result.TargetTriangles
@@ -143,6 +148,11 @@ int vtkVolumeTriangleCollapse::RequestData(
 
   this->SquareVolumeError = result.SquareVolumeError;
   vtkMeshSimplificationHelpers::AddFieldValue(output, "SquareVolumeError", result.SquareVolumeError);
+  if (bounded)
+  {
+    this->AchievedMaximumError = result.AchievedMaximumError;
+    vtkMeshSimplificationHelpers::AddFieldValue(output, "MaximumPlaneDistance", result.AchievedMaximumError);
+  }
   return 1;
 }
 
@@ -152,6 +162,8 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetMode: " << this->TargetMode << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "TargetTriangleCount: " << this->TargetTriangleCount << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "RelativeError: " << this->RelativeError << "\n";
   os << indent << "FeatureCurvature: " << this->FeatureCurvature << "\n";
   os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
   os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";

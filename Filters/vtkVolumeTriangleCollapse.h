@@ -40,7 +40,12 @@
  * one by one.
  *
  * The triangle count is met within 1 % (TargetReduction or TargetTriangleCount); the filter
- * stops early, with a warning, only when no legal collapse is left.
+ * stops early, with a warning, only when no legal collapse is left. In MaximumError mode it
+ * collapses, in the same order, as far as it can while every output point stays within the
+ * bound of the planes of the input triangles it stands for (their supporting planes and, along
+ * open borders, the planes through the border edges perpendicular to them: Ronfard and
+ * Rossignac's measure, the one the octree filter bounds); "MaximumPlaneDistance" in the field
+ * data and AchievedMaximumError give the largest distance reached.
  *
  * Polygons are triangulated and strips decomposed first; vertex and line cells are dropped (a
  * warning says how many); triangles with repeated point ids or non-finite points are ignored.
@@ -71,17 +76,20 @@ public:
   enum TargetModes
   {
     TARGET_REDUCTION = 0,
-    TARGET_TRIANGLE_COUNT = 1
+    TARGET_TRIANGLE_COUNT = 1,
+    TARGET_MAXIMUM_ERROR = 2
   };
 
   ///@{
   /**
-   * What decides how far to simplify: TargetReduction (default) or TargetTriangleCount.
+   * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
+   * MaximumError.
    */
-  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_TRIANGLE_COUNT);
+  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
   vtkGetMacro(TargetMode, int);
   void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
   void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
+  void SetTargetModeToMaximumError() { this->SetTargetMode(TARGET_MAXIMUM_ERROR); }
   ///@}
 
   ///@{
@@ -98,6 +106,20 @@ public:
    */
   vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(TargetTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Error bound of MaximumError mode (default 0.01): the filter simplifies as far as it can
+   * while every output point stays within it of the planes of the input triangles it stands
+   * for. A distance, relative to the input's bounding-box diagonal when RelativeError is on
+   * (default), else in input units.
+   */
+  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumError, double);
+  vtkSetMacro(RelativeError, bool);
+  vtkGetMacro(RelativeError, bool);
+  vtkBooleanMacro(RelativeError, bool);
   ///@}
 
   ///@{
@@ -209,6 +231,12 @@ public:
    */
   vtkGetMacro(SquareVolumeError, double);
 
+  /**
+   * In MaximumError mode, the largest distance of an output point to the planes it stands for
+   * after the last execution, in input units (0 in the other modes).
+   */
+  vtkGetMacro(AchievedMaximumError, double);
+
 protected:
   vtkVolumeTriangleCollapse();
   ~vtkVolumeTriangleCollapse() override = default;
@@ -218,6 +246,8 @@ protected:
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;
   vtkIdType TargetTriangleCount = 1000;
+  double MaximumError = 0.01;
+  bool RelativeError = true;
   double FeatureCurvature = 0.3;
   bool PreserveBoundary = false;
   double BoundaryCornerAngle = 60.0;
@@ -230,6 +260,8 @@ protected:
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   double SquareVolumeError = 0.0;
+
+  double AchievedMaximumError = 0.0;
 
 private:
   vtkVolumeTriangleCollapse(const vtkVolumeTriangleCollapse&) = delete;

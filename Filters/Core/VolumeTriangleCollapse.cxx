@@ -2,6 +2,7 @@
 #include "VolumeTriangleCollapse.h"
 
 #include "CollapseHeap.h"
+#include "PlaneDistanceBound.h"
 #include "Quadric.h"
 
 #include <Eigen/Geometry>
@@ -138,6 +139,8 @@ private:
   double TotalArea = 0.0;
   double GuardAngle = 0.0; // the angle guard in force (lowered when it refuses every collapse)
   CollapseHeap Heap;
+  PlaneDistanceBound Bound;
+  double BoundLimit = -1.0; // MaximumError in normalised units; < 0: no bound
   std::vector<std::uint32_t> VertexMarks;
   std::uint32_t Stamp = 0;
   std::vector<std::int32_t> Ring;
@@ -656,6 +659,11 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
     p = (p - this->Origin) * this->Scale;
   }
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
+  if (this->Options.MaximumError >= 0.0)
+  {
+    this->Bound.Build(this->Mesh);
+    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? 1.0 : this->Scale);
+  }
   this->GuardAngle = std::max(0.0, this->Options.MinimumAngle);
   result.FinalMinimumAngle = this->GuardAngle;
   this->Mesh.SetMinimumAngle(this->GuardAngle);
@@ -761,7 +769,7 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
   {
     if (this->Heap.Empty())
     {
-      if (this->GuardAngle <= 0.0)
+      if (this->GuardAngle <= 0.0 || this->BoundLimit >= 0.0)
       {
         result.StoppedEarly = true;
         break;
@@ -833,6 +841,15 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
       }
       plan = edge;
     }
+    if (this->BoundLimit >= 0.0)
+    {
+      const double distance = this->Bound.Distance(plan);
+      if (distance > this->BoundLimit)
+      {
+        continue; // until a collapse nearby requeues it
+      }
+      this->Bound.Merge(plan, distance);
+    }
     const std::int32_t kept = plan.Vertices[0];
     double error = candidate.Cost;
     for (int i = 0; i < plan.Count; ++i)
@@ -876,6 +893,10 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
     result.PointError.push_back(this->VertexError[v] * scale8);
+    if (this->BoundLimit >= 0.0)
+    {
+      result.AchievedMaximumError = std::max(result.AchievedMaximumError, this->Bound.Error(v) * this->Diagonal);
+    }
   }
   for (const std::int32_t t : kept)
   {

@@ -66,6 +66,9 @@
  *   and CAD meshes need thin triangles along their creases. When the guard refuses every
  *   collapse left before the target, it is lowered a step (halved; 0 below 2°) and every
  *   triangle requeued, so the filter stops early only when no collapse keeps the mesh valid.
+ * - Beyond the paper (MaximumError): a collapse whose point would lie farther than the bound
+ *   from a plane of the input triangles merged into it (PlaneDistanceBound) is not made; the
+ *   order stays the one above.
  */
 #ifndef MeshSimplification_VolumeTriangleCollapse_h
 #define MeshSimplification_VolumeTriangleCollapse_h
@@ -110,6 +113,12 @@ struct VolumeCollapseOptions
   bool UseVolumeWeights = true;
   /// Keep what undoing each collapse needs in the result's records (progressive meshes).
   bool KeepUndo = false;
+  /// Error bound (< 0: none): no collapse puts a point farther than this from the planes of the
+  /// input triangles it stands for (PlaneDistanceBound); relative to the bounding-box diagonal
+  /// of the used points when RelativeError is set. With a bound the filter stops, without
+  /// lowering its angle guard, when no collapse within it is left.
+  double MaximumError = -1.0;
+  bool RelativeError = false;
 };
 
 struct VolumeCollapseResult
@@ -130,6 +139,8 @@ struct VolumeCollapseResult
   /// The angle guard at the end: below MinimumAngle when it refused every collapse left before
   /// the target and was lowered (halved, 0 below 2°) to go on.
   double FinalMinimumAngle = 0.0;
+  /// With MaximumError: the largest distance of an output point to its planes (input units).
+  double AchievedMaximumError = 0.0;
 };
 
 /// Runs the simplification. Returns false when aborted through the context's progress.

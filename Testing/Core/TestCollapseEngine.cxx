@@ -3,11 +3,14 @@
 // triangle collapse core built on it.
 #include "CollapseHeap.h"
 #include "CollapseMesh.h"
+#include "PlaneDistanceBound.h"
 #include "TestHelpers.h"
 #include "TestMeshes.h"
 #include "VolumeTriangleCollapse.h"
 
+#include <functional>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 
@@ -364,6 +367,27 @@ void AttributesFollowWeights()
   CHECK(std::abs(values[e.Id[12]] - e.Mesh.Point(e.Id[12]).x()) < 1e-15);
 }
 
+void PlaneBoundMeasuresMergedPlanes()
+{
+  // A 2 × 2 grid on z = 0 (unit square, spacing 0.5): the centre (input 4) has only its
+  // triangles' plane; the edge midpoint (input 1, on y = 0) also its two boundary edges' plane.
+  Engine e(Grid(2));
+  meshsimp::PlaneDistanceBound bound;
+  bound.Build(e.Mesh);
+  const std::int32_t centre = e.Id[4], edge = e.Id[1];
+  CHECK(std::abs(bound.Distance(centre, Eigen::Vector3d(0.5, 0.5, 0.3)) - 0.3) < 1e-15);
+  CHECK(bound.Distance(centre, Eigen::Vector3d(0.9, 0.1, 0.0)) == 0.0); // in the plane
+  CHECK(std::abs(bound.Distance(edge, Eigen::Vector3d(0.5, -0.2, 0.0)) - 0.2) < 1e-15);
+  CHECK(std::abs(bound.Distance(edge, Eigen::Vector3d(0.5, 0.1, -0.4)) - 0.4) < 1e-15);
+  // Merging the edge midpoint into the centre gives the centre the boundary plane too.
+  const CollapsePlan plan = e.Plan({ 4, 1 }, e.Point(4));
+  CHECK(std::abs(bound.Distance(plan) - 0.5) < 1e-15); // the border would move in by 0.5
+  bound.Merge(plan, 0.25);
+  CHECK(bound.Error(centre) == 0.25);
+  CHECK(std::abs(bound.Distance(centre, Eigen::Vector3d(0.5, -0.1, 0.0)) - 0.1) < 1e-15);
+  CHECK(bound.Distance(edge, Eigen::Vector3d(0.5, -0.1, 0.7)) == 0.0); // merged away: no planes
+}
+
 meshsimp::VolumeCollapseResult Collapse(const Mesh& mesh, std::int64_t target)
 {
   meshsimp::VolumeCollapseOptions options;
@@ -494,6 +518,78 @@ void VolumeCollapseSurfaceTermKeepsSurfaceClose()
   CHECK(withTerm.Triangles.size() == volumeOnly.Triangles.size());
   const double with = VertexHausdorff(elephant, withTerm), without = VertexHausdorff(elephant, volumeOnly);
   CHECK(with < 0.8 * without);
+}
+
+/// The largest distance from an output point to the planes of the input triangles with a corner
+/// among the input points merged into it (found from the records), checked independently of
+/// PlaneDistanceBound; for closed inputs (no boundary planes).
+double LargestPlaneDistance(const Mesh& input, const meshsimp::VolumeCollapseResult& result)
+{
+  std::vector<std::int32_t> group(input.Points.size() / 3);
+  std::iota(group.begin(), group.end(), 0);
+  const std::function<std::int32_t(std::int32_t)> find = [&](std::int32_t v) {
+    return group[v] == v ? v : group[v] = find(group[v]);
+  };
+  for (const meshsimp::CollapseRecord& record : result.Records)
+  {
+    for (const std::int32_t removed : record.Removed)
+    {
+      if (removed >= 0)
+      {
+        group[find(removed)] = find(record.Kept);
+      }
+    }
+  }
+  std::map<std::int32_t, Eigen::Vector3d> outputPoint; // group -> output point
+  for (std::size_t p = 0; p < result.PointSource.size(); ++p)
+  {
+    outputPoint[find(result.PointSource[p])] = Eigen::Vector3d(&result.Points[3 * p]);
+  }
+  double largest = 0.0;
+  for (std::size_t t = 0; t < input.Triangles.size(); t += 3)
+  {
+    const Eigen::Vector3d a(&input.Points[3 * input.Triangles[t]]), b(&input.Points[3 * input.Triangles[t + 1]]),
+      c(&input.Points[3 * input.Triangles[t + 2]]);
+    const Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
+    for (int k = 0; k < 3; ++k)
+    {
+      const auto found = outputPoint.find(find(input.Triangles[t + k]));
+      if (found != outputPoint.end())
+      {
+        largest = std::max(largest, std::abs(normal.dot(found->second - a)));
+      }
+    }
+  }
+  return largest;
+}
+
+void VolumeCollapseKeepsErrorBound()
+{
+  // With MaximumError (relative to the bounding-box diagonal) the filter simplifies as
+  // far as the bound lets it: every output point within the bound of its input planes.
+  const Mesh elephant = ReadData("elephant.off");
+  meshsimp::VolumeCollapseOptions options;
+  options.TargetTriangles = 0;
+  options.RelativeError = true;
+  Eigen::Vector3d lower = Eigen::Vector3d::Constant(1e300), upper = -lower;
+  for (std::size_t i = 0; i < elephant.Points.size(); i += 3)
+  {
+    lower = lower.cwiseMin(Eigen::Vector3d(&elephant.Points[i]));
+    upper = upper.cwiseMax(Eigen::Vector3d(&elephant.Points[i]));
+  }
+  std::size_t previous = elephant.Triangles.size() / 3;
+  for (const double bound : { 0.002, 0.01 })
+  {
+    options.MaximumError = bound;
+    meshsimp::VolumeCollapseResult result;
+    CHECK(meshsimp::VolumeTriangleCollapse(elephant.View(), options, result));
+    const double absolute = bound * (upper - lower).norm(), count = static_cast<double>(result.Triangles.size() / 3);
+    CHECK(result.StoppedEarly);
+    CHECK(count < 0.75 * static_cast<double>(previous)); // 5 558, 3 112, 778 triangles
+    CHECK(result.AchievedMaximumError > 0.5 * absolute && result.AchievedMaximumError <= absolute);
+    CHECK(LargestPlaneDistance(elephant, result) <= result.AchievedMaximumError * (1.0 + 1e-9));
+    previous = result.Triangles.size() / 3;
+  }
 }
 
 void VolumeCollapseDefaultGuardReachesPlaneTarget()
@@ -628,10 +724,12 @@ int main()
     { "LockedVerticesStay", LockedVerticesStay },
     { "CollapseUndoRedo", CollapseUndoRedo },
     { "AttributesFollowWeights", AttributesFollowWeights },
+    { "PlaneBoundMeasuresMergedPlanes", PlaneBoundMeasuresMergedPlanes },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
     { "VolumeCollapseKeepsTubeOnItsCylinder", VolumeCollapseKeepsTubeOnItsCylinder },
     { "VolumeCollapseSurfaceTermKeepsSurfaceClose", VolumeCollapseSurfaceTermKeepsSurfaceClose },
+    { "VolumeCollapseKeepsErrorBound", VolumeCollapseKeepsErrorBound },
     { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
     { "VolumeCollapseLowersGuardRatherThanStop", VolumeCollapseLowersGuardRatherThanStop },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },

@@ -70,6 +70,20 @@ simplified.UpdatePipeline()
 cells = simplified.GetDataInformation().GetNumberOfCells()
 check(abs(cells - 1000) <= 10, "triangle count 1000 +- 1 %%, got %d" % cells)
 
+# Error-bound mode: as far as the bound (1 % of the diagonal) lets; the field data holds the
+# largest distance reached; a tighter bound keeps more triangles.
+simplified.TargetMode = "Maximum Error"
+simplified.MaximumError = 0.01
+output = servermanager.Fetch(simplified)
+bounds = cow.GetDataInformation().GetBounds()
+diagonal = ((bounds[1] - bounds[0]) ** 2 + (bounds[3] - bounds[2]) ** 2 + (bounds[5] - bounds[4]) ** 2) ** 0.5
+reached = output.GetFieldData().GetArray("MaximumPlaneDistance")
+check(reached is not None and 0 < reached.GetValue(0) <= 0.01 * diagonal,
+      "largest plane distance within the bound")
+simplified.MaximumError = 0.002
+loose, tight = output.GetNumberOfPolys(), servermanager.Fetch(simplified).GetNumberOfPolys()
+check(loose < tight < 5804, "bounds 0.01 and 0.002 give %d and %d triangles" % (loose, tight))
+
 # A multiblock input is simplified block by block.
 terrain = XMLPolyDataReader(FileName=[os.path.join(args.data, "jacksboro_dem_half.vtp")])
 group = GroupDatasets(Input=[cow, terrain])
