@@ -26,6 +26,7 @@ int vtkParallelDecimation::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->Rounds = 0;
+  this->AchievedMaximumError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
@@ -37,9 +38,13 @@ int vtkParallelDecimation::RequestData(
 
   meshsimp::ParallelDecimationOptions options;
   const std::int64_t inputTriangles = triangles.View.NumberOfTriangles;
-  options.TargetTriangles = this->TargetMode == TARGET_TRIANGLE_COUNT
+  const bool bounded = this->TargetMode == TARGET_MAXIMUM_ERROR;
+  options.TargetTriangles = bounded ? 0
+    : this->TargetMode == TARGET_TRIANGLE_COUNT
     ? static_cast<std::int64_t>(this->TargetTriangleCount)
     : static_cast<std::int64_t>(std::llround(inputTriangles * (1.0 - this->TargetReduction)));
+  options.MaximumError = bounded ? this->MaximumError : -1.0;
+  options.RelativeError = this->RelativeError;
   options.FeatureAngle = this->FeatureAngle;
   options.BoundaryCornerAngle = this->BoundaryCornerAngle;
   options.PreserveBoundary = this->PreserveBoundary;
@@ -68,7 +73,7 @@ int vtkParallelDecimation::RequestData(
   }
   const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.PointSource.size());
   const vtkIdType numberOfTriangles = static_cast<vtkIdType>(result.TriangleSource.size());
-  if (result.StoppedEarly)
+  if (result.StoppedEarly && !bounded) // with a bound, stopping is how it ends
   {
     vtkWarningMacro(<< "Stopped at " << numberOfTriangles << " triangles ("
                     << result.TargetTriangles
@@ -113,6 +118,11 @@ int vtkParallelDecimation::RequestData(
   this->Rounds = static_cast<vtkIdType>(result.Rounds);
   vtkMeshSimplificationHelpers::AddFieldValue(output, "Rounds", static_cast<double>(result.Rounds));
   vtkMeshSimplificationHelpers::AddFieldValue(output, "MovedPoints", static_cast<double>(result.MovedPoints));
+  if (bounded)
+  {
+    this->AchievedMaximumError = result.AchievedMaximumError;
+    vtkMeshSimplificationHelpers::AddFieldValue(output, "MaximumPlaneDistance", result.AchievedMaximumError);
+  }
   return 1;
 }
 
@@ -122,6 +132,8 @@ void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetMode: " << this->TargetMode << "\n";
   os << indent << "TargetReduction: " << this->TargetReduction << "\n";
   os << indent << "TargetTriangleCount: " << this->TargetTriangleCount << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "RelativeError: " << this->RelativeError << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
   os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";

@@ -36,7 +36,13 @@
  * The triangle count is met within 2 % (TargetReduction or TargetTriangleCount). When no vertex
  * is removable before that (all corners, or no edge within the deviation), FeatureAngle and
  * MaximumNormalDeviation are raised by 15° at a time, with a warning; the filter stops early,
- * with a warning, only when nothing is removable at 180°.
+ * with a warning, only when nothing is removable at 180°. In MaximumError mode it removes, in
+ * the same order and without raising the angles, as far as it can while every survivor (moved
+ * or not) stays within the bound of the planes of the input triangles it stands for (their
+ * supporting planes and, along open borders, the planes through the border edges perpendicular
+ * to them: Ronfard and Rossignac's measure, the one the octree filter bounds); a vertex whose
+ * best half-edge would break the bound takes its next. "MaximumPlaneDistance" in the field data
+ * and AchievedMaximumError give the largest distance reached.
  *
  * Points can be locked (never removed) by a point-data array whose nonzero values mark them,
  * selected as input array 0.
@@ -71,7 +77,8 @@ public:
   enum TargetModes
   {
     TARGET_REDUCTION = 0,
-    TARGET_TRIANGLE_COUNT = 1
+    TARGET_TRIANGLE_COUNT = 1,
+    TARGET_MAXIMUM_ERROR = 2
   };
   enum ImportanceMeasures
   {
@@ -86,12 +93,14 @@ public:
 
   ///@{
   /**
-   * What decides how far to simplify: TargetReduction (default) or TargetTriangleCount.
+   * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
+   * MaximumError.
    */
-  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_TRIANGLE_COUNT);
+  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
   vtkGetMacro(TargetMode, int);
   void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
   void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
+  void SetTargetModeToMaximumError() { this->SetTargetMode(TARGET_MAXIMUM_ERROR); }
   ///@}
 
   ///@{
@@ -108,6 +117,20 @@ public:
    */
   vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(TargetTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Error bound of MaximumError mode (default 0.01): the filter simplifies as far as it can
+   * while every output point stays within it of the planes of the input triangles it stands
+   * for. A distance, relative to the input's bounding-box diagonal when RelativeError is on
+   * (default), else in input units.
+   */
+  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumError, double);
+  vtkSetMacro(RelativeError, bool);
+  vtkGetMacro(RelativeError, bool);
+  vtkBooleanMacro(RelativeError, bool);
   ///@}
 
   ///@{
@@ -211,6 +234,12 @@ public:
    */
   vtkGetMacro(Rounds, vtkIdType);
 
+  /**
+   * In MaximumError mode, the largest distance of an output point to the planes it stands for
+   * after the last execution, in input units (0 in the other modes).
+   */
+  vtkGetMacro(AchievedMaximumError, double);
+
 protected:
   vtkParallelDecimation();
   ~vtkParallelDecimation() override = default;
@@ -220,6 +249,8 @@ protected:
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;
   vtkIdType TargetTriangleCount = 1000;
+  double MaximumError = 0.01;
+  bool RelativeError = true;
   double FeatureAngle = 75.0;
   bool PreserveBoundary = false;
   double BoundaryCornerAngle = 60.0;
@@ -234,6 +265,8 @@ protected:
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   vtkIdType Rounds = 0;
+
+  double AchievedMaximumError = 0.0;
 
 private:
   vtkParallelDecimation(const vtkParallelDecimation&) = delete;

@@ -2,6 +2,7 @@
 #include "ParallelDecimation.h"
 
 #include "CollapseMesh.h"
+#include "PlaneDistanceBound.h"
 #include "Quadric.h"
 
 #include <Eigen/Geometry>
@@ -150,7 +151,8 @@ private:
   /// Half the change of area when v collapses into u (its star in the workspace), or -1 when a
   /// remaining triangle would turn by more than the deviation limit or degenerate (§5.3).
   double AreaChange(std::int32_t u, const Workspace& work) const;
-  bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const;
+  /// The legal half-edge v collapses along, and with a bound the survivor's distance after it.
+  bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double& distance) const;
   /// Fills chosen with the round's set; true when the window covered every candidate.
   bool SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen);
   /// MoveSurvivors: each survivor to its quadric's point of least error, where that turns no
@@ -190,6 +192,8 @@ private:
   const ExecutionContext& Context;
   double FeatureAngle = 0.0, DeviationAngle = 0.0, CosFeature = 1.0, CosDeviation = 1.0;
   CollapseMesh Mesh;
+  PlaneDistanceBound Bound;
+  double BoundLimit = -1.0; // MaximumError in input units; < 0: no bound
   std::vector<std::int32_t> InputVertex, InputTriangle;
   std::vector<double> Importance;
   std::vector<double> Accumulated;  // AveragePlane: importance inherited from removed vertices
@@ -407,7 +411,7 @@ double Decimator::AreaChange(std::int32_t u, const Workspace& work) const
   return 0.5 * std::abs(after - before);
 }
 
-bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
+bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double& distance) const
 {
   const VertexState state = this->Analyze(v, work);
   if (state.Type == DecimationVertexType::Corner || state.Type == DecimationVertexType::Complex)
@@ -468,7 +472,17 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan) const
     plan.Position = this->Mesh.Point(option.Target);
     plan.Weights[0] = 1.0;
     plan.Weights[1] = plan.Weights[2] = 0.0;
-    if (this->Mesh.IsLegal(plan, work.Scratch))
+    if (!this->Mesh.IsLegal(plan, work.Scratch))
+    {
+      continue;
+    }
+    if (this->BoundLimit < 0.0)
+    {
+      return true;
+    }
+    // The survivor stays where it is: its own planes keep their distance, v's are new to it.
+    distance = std::max(this->Bound.Error(option.Target), this->Bound.Distance(v, plan.Position));
+    if (distance <= this->BoundLimit)
     {
       return true;
     }
@@ -653,7 +667,13 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     : static_cast<std::int64_t>(std::llround(
         static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
   result.TargetTriangles = target;
+  const double diagonal = (compact.Upper - compact.Lower).norm();
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
+  if (this->Options.MaximumError >= 0.0)
+  {
+    this->Bound.Build(this->Mesh);
+    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? diagonal : 1.0);
+  }
   const std::int32_t n = this->Mesh.NumberOfPoints();
   for (std::int32_t v = 0; v < n; ++v)
   {
@@ -741,6 +761,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
   std::vector<std::int32_t> chosen, neighbours;
   std::vector<std::int64_t> slices;
+  std::vector<double> distances;
   std::vector<CollapsePlan> plans, applied;
   std::vector<std::uint8_t> planned;
   double fraction = std::min(1.0, std::max(1e-3, this->Options.RoundFraction));
@@ -757,9 +778,10 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     std::sort(chosen.begin(), chosen.end());
     const std::int64_t count = static_cast<std::int64_t>(chosen.size());
     plans.resize(chosen.size());
+    distances.resize(chosen.size());
     planned.assign(chosen.size(), 0);
     this->ForEachInParts(count, 2000, [&](std::int64_t i, Workspace& work) {
-      planned[i] = this->Plan(chosen[i], work, plans[i]) ? 1 : 0;
+      planned[i] = this->Plan(chosen[i], work, plans[i], distances[i]) ? 1 : 0;
     });
     // The neighbours of each removed vertex are the vertices whose triangles change: listed per
     // removal in its own slice (two per triangle around it, each vertex once, the repeats -1),
@@ -809,6 +831,10 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         {
           this->Accumulated[kept] += this->Importance[v];
         }
+        if (this->BoundLimit >= 0.0)
+        {
+          this->Bound.Merge(plans[i], distances[i]); // the sets of a round are disjoint
+        }
         this->Importance[v] = Never;
         this->Gone[v] = 1;
       }
@@ -821,7 +847,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         fraction = std::min(1.0, 2.0 * fraction); // every vertex in the window is stuck
         continue;
       }
-      if (this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0)
+      if ((this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0) || this->BoundLimit >= 0.0)
       {
         result.StoppedEarly = true;
         break;
@@ -868,6 +894,7 @@ std::int64_t Decimator::MoveSurvivors()
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   std::vector<Vec3> before(n);
   std::vector<Vec3> after(this->Live.size());
+  std::vector<double> planeDistance(this->BoundLimit >= 0.0 ? this->Live.size() : 0);
   this->Moved.assign(n, 0);
   this->ForEachInParts(static_cast<std::int64_t>(this->Live.size()), 100, [&](std::int64_t i, Workspace&) {
     const std::int32_t v = this->Live[i];
@@ -890,6 +917,11 @@ std::int64_t Decimator::MoveSurvivors()
     {
       after[i] = distance > reach ? Vec3(p + (x - p) * (reach / distance)) : x;
       this->Moved[v] = 1;
+    }
+    if (this->Moved[v] && this->BoundLimit >= 0.0)
+    {
+      planeDistance[i] = this->Bound.Distance(v, after[i]); // v's planes are all it stands for
+      this->Moved[v] = planeDistance[i] <= this->BoundLimit ? 1 : 0;
     }
   });
   for (std::size_t i = 0; i < this->Live.size(); ++i)
@@ -936,9 +968,14 @@ std::int64_t Decimator::MoveSurvivors()
     }
   }
   std::int64_t moved = 0;
-  for (const std::int32_t v : this->Live)
+  for (std::size_t i = 0; i < this->Live.size(); ++i)
   {
+    const std::int32_t v = this->Live[i];
     moved += this->Moved[v];
+    if (this->Moved[v] && this->BoundLimit >= 0.0)
+    {
+      this->Bound.SetError(v, planeDistance[i]);
+    }
   }
   return moved;
 }
@@ -955,6 +992,10 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
     result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] : -1.0);
+    if (this->BoundLimit >= 0.0)
+    {
+      result.AchievedMaximumError = std::max(result.AchievedMaximumError, this->Bound.Error(v));
+    }
     result.Types.push_back(this->Types[v]);
   }
   for (const std::int32_t t : kept)

@@ -40,6 +40,9 @@
  *   where no triangle around them turns by more than 60°: a final placement pass in the spirit
  *   of Garland–Heckbert's optimal placement, beyond the paper, which keeps points where they are.
  *   Without it every output point is an input point, bit for bit.
+ * - Beyond the paper (MaximumError): a half-edge (or a survivor's move) that would leave the
+ *   survivor farther than the bound from a plane of the input triangles it stands for
+ *   (PlaneDistanceBound) is not taken; the vertex tries its next one.
  */
 #ifndef MeshSimplification_ParallelDecimation_h
 #define MeshSimplification_ParallelDecimation_h
@@ -115,6 +118,12 @@ struct ParallelDecimationOptions
   double BucketShare = 0.8;
   /// The share of the candidates, least important first, that one round considers.
   double RoundFraction = 0.1;
+  /// Error bound (< 0: none): no removal (or survivor move) puts a survivor farther than this
+  /// from the planes of the input triangles it stands for (PlaneDistanceBound); relative to the
+  /// bounding-box diagonal of the used points when RelativeError is set. With a bound the
+  /// filter stops, without raising its angles, when no removal within it is left.
+  double MaximumError = -1.0;
+  bool RelativeError = false;
   /// Called with the mesh and the vertices taken for each round before they are removed (for
   /// tests and diagnostics); may be empty.
   std::function<void(const CollapseMesh&, const std::vector<std::int32_t>&)> RoundObserver;
@@ -137,6 +146,8 @@ struct ParallelDecimationResult
   std::int64_t Relaxations = 0;
   bool StoppedEarly = false; // no removable vertex was left before the target
   std::int64_t MovedPoints = 0; // survivors MoveSurvivors moved
+  /// With MaximumError: the largest distance of an output point to its planes (input units).
+  double AchievedMaximumError = 0.0;
 };
 
 /// Runs the decimation; the context's ParallelFor carries the threads. Returns false when

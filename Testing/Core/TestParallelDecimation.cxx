@@ -236,6 +236,36 @@ void TargetsAndInputPoints()
   CHECK(WithinTwoPercent(result));
 }
 
+void ErrorBoundKeepsBump()
+{
+  // A 20 × 20 grid (spacing 0.05) with its centre raised by 0.01 (a slope of 11°, no sharp
+  // edge): with a bound of 0.001 the flat part and the straight borders simplify away, the bump
+  // stays, whatever the thread count.
+  Mesh grid = Grid(20);
+  grid.Points[3 * (10 * 21 + 10) + 2] = 0.01;
+  ParallelDecimationOptions options;
+  options.TargetTriangles = 0;
+  options.MaximumError = 0.001;
+  ParallelDecimationResult result, threaded;
+  CHECK(meshsimp::ParallelDecimation(grid.View(), options, result));
+  CHECK(meshsimp::ParallelDecimation(grid.View(), options, threaded, meshsimp_test::Threaded<meshsimp::ExecutionContext>(2)));
+  CHECK(result.Points == threaded.Points && result.Triangles == threaded.Triangles);
+  CHECK(result.StoppedEarly && result.Relaxations == 0);
+  CHECK(result.AchievedMaximumError <= 0.001);
+  CHECK(result.Triangles.size() / 3 < 100); // of 800
+  double highest = 0.0;
+  for (std::size_t p = 2; p < result.Points.size(); p += 3)
+  {
+    highest = std::max(highest, result.Points[p]);
+  }
+  CHECK(highest >= 0.009);
+  // A looser bound never keeps more.
+  const std::size_t count = result.Triangles.size();
+  options.MaximumError = 0.1;
+  CHECK(meshsimp::ParallelDecimation(grid.View(), options, result));
+  CHECK(result.Triangles.size() <= count && result.AchievedMaximumError <= 0.1);
+}
+
 void MovedSurvivorsFitTheSurface()
 {
   // The sphere at 90 %: survivors moved to their quadrics' minimisers bring the output surface
@@ -405,6 +435,7 @@ int main()
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "TargetsAndInputPoints", TargetsAndInputPoints },
     { "MovedSurvivorsFitTheSurface", MovedSurvivorsFitTheSurface },
+    { "ErrorBoundKeepsBump", ErrorBoundKeepsBump },
     { "HighValenceVertex", HighValenceVertex },
     { "CubeKeepsCornersAndEdges", CubeKeepsCornersAndEdges },
     { "BoundariesAndLocks", BoundariesAndLocks },
