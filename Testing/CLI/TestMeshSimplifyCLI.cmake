@@ -54,15 +54,31 @@ if (NOT one STREQUAL two)
   message(FATAL_ERROR "--method parallel: 1 and 2 threads wrote different meshes")
 endif ()
 
+# An error bound for the collapse methods: the largest distance reached, in input units, within
+# 1 % of the cow's bounding-box diagonal (1.2171), and far fewer triangles.
+foreach (method IN ITEMS volume parallel)
+  execute_process(
+    COMMAND "${TOOL}" --method ${method} --max-error 0.01 --relative-error --json "${INPUT}" "${OUTPUT}"
+    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT code EQUAL 0)
+    message(FATAL_ERROR "meshsimplify --method ${method} --max-error failed (${code}): ${err}")
+  endif ()
+  string(JSON output_triangles GET "${out}" output_triangles)
+  string(JSON max_error GET "${out}" max_error)
+  if (output_triangles GREATER 2000 OR NOT max_error GREATER 0.006 OR max_error GREATER 0.012171)
+    message(FATAL_ERROR "unexpected ${method} result with an error bound: ${out}")
+  endif ()
+endforeach ()
+
 foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--method;octree;--reduction;abc;${INPUT};${OUTPUT}"
                       "--method;octree;--reduction;1.5;${INPUT};${OUTPUT}"
                       "--method;octree;/nonexistent/mesh.off;${OUTPUT}"
                       "--method;octree;${INPUT};${OUTPUT}.xyz"
                       "--method;octree;--set;Nope=1;${INPUT};${OUTPUT}"
-                      "--method;volume;--max-error;0.1;${INPUT};${OUTPUT}"
+                      "--method;volume;--max-error;-0.1;${INPUT};${OUTPUT}"
                       "--method;volume;--set;MaximumCellSize=1;${INPUT};${OUTPUT}"
-                      "--method;parallel;--max-error;0.1;${INPUT};${OUTPUT}"
+                      "--method;parallel;--max-error;nan;${INPUT};${OUTPUT}"
                       "--method;parallel;--set;FeatureCurvature=1;${INPUT};${OUTPUT}")
   execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
