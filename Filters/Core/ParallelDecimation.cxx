@@ -847,6 +847,12 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         fraction = std::min(1.0, 2.0 * fraction); // every vertex in the window is stuck
         continue;
       }
+      if (chosen.size() < this->Order.size())
+      {
+        // The stuck vertices kept others out of the set (on a small mesh one star can cover
+        // most of it); those are tried next, the stuck ones being no candidates now.
+        continue;
+      }
       if ((this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0) || this->BoundLimit >= 0.0)
       {
         result.StoppedEarly = true;
