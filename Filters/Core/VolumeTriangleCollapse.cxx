@@ -117,6 +117,11 @@ private:
   std::int64_t Prepare(const TriangleMeshView& input, VolumeCollapseResult& result);
   void QueueAll();
   bool CollapseToTarget(std::int64_t target, VolumeCollapseResult& result);
+  /// Applies the plan (legal), with its eq. (5) cost, and updates around the kept vertex.
+  void Commit(const CollapsePlan& plan, double cost, VolumeCollapseResult& result);
+  /// The last resort when no triangle's plan is legal: half-edge collapses of any edge, cheapest
+  /// first, while at least floor triangles stay. Returns whether any was made.
+  bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
 
   const VolumeCollapseOptions& Options;
@@ -759,20 +764,89 @@ void VolumeCollapser::QueueAll()
   }
 }
 
+void VolumeCollapser::Commit(const CollapsePlan& plan, double cost, VolumeCollapseResult& result)
+{
+  const std::int32_t kept = plan.Vertices[0];
+  double error = cost;
+  for (int i = 0; i < plan.Count; ++i)
+  {
+    error += this->VertexError[plan.Vertices[i]];
+  }
+  this->Moved[kept] |= plan.Position != this->Mesh.Point(kept) ? 1 : 0;
+  for (int i = 1; i < plan.Count && !this->InputPlanes.empty(); ++i)
+  {
+    this->InputPlanes[kept] += this->InputPlanes[plan.Vertices[i]];
+  }
+  this->Mesh.Apply(plan, this->Options.KeepUndo);
+  this->VertexError[kept] = error;
+  result.SquareVolumeError += cost;
+  this->UpdateAround(kept);
+}
+
+bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result)
+{
+  // Every legal half-edge collapse, cheapest first by the quadric sums of its two ends (ties in
+  // triangle and corner order), each checked again before it is made.
+  struct Option
+  {
+    double Cost;
+    std::int32_t Kept, Other;
+  };
+  std::vector<Option> options;
+  for (std::int32_t t = 0; t < this->Mesh.NumberOfTriangles(); ++t)
+  {
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    for (int k = 0; this->Mesh.IsAlive(t) && k < 6; ++k)
+    {
+      const std::int32_t kept = tri[k % 3], other = tri[(k % 3 + (k < 3 ? 1 : 2)) % 3];
+      Quadric q = this->VertexQuadrics[kept];
+      q += this->VertexQuadrics[other];
+      options.push_back({ q.Evaluate(this->Mesh.Point(kept)), kept, other });
+    }
+  }
+  std::stable_sort(options.begin(), options.end(), [](const Option& a, const Option& b) { return a.Cost < b.Cost; });
+  bool any = false;
+  for (const Option& option : options)
+  {
+    CollapsePlan plan;
+    plan.Count = 2;
+    plan.Vertices[0] = option.Kept;
+    plan.Vertices[1] = option.Other;
+    plan.Position = this->Mesh.Point(option.Kept);
+    if (this->Mesh.NumberOfAliveTriangles() <= floor)
+    {
+      break;
+    }
+    if (this->Mesh.NumberOfTrianglesAround(option.Kept) > 0 && this->Mesh.NumberOfTrianglesAround(option.Other) > 0 &&
+      this->Mesh.IsLegal(plan) && this->Mesh.NumberOfAliveTriangles() - this->CountRemoved(plan) >= floor)
+    {
+      this->Commit(plan, option.Cost, result);
+      any = true;
+    }
+  }
+  return any;
+}
+
 bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult& result)
 {
   // Step 5–6 of §3.6: collapse the cheapest triangle until the target is met.
-  const std::int64_t tolerance = target / 100;
+  const std::int64_t tolerance = std::max<std::int64_t>(1, target / 100); // a closed mesh has an even count
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
   std::int64_t steps = 0;
   while (this->Mesh.NumberOfAliveTriangles() > target)
   {
     if (this->Heap.Empty())
     {
-      if (this->GuardAngle <= 0.0 || this->BoundLimit >= 0.0)
+      if (this->BoundLimit >= 0.0 ||
+        (this->GuardAngle <= 0.0 &&
+          (!this->Options.EdgeCollapses || !this->CollapseAnyEdges(target - tolerance, result))))
       {
         result.StoppedEarly = true;
         break;
+      }
+      if (this->GuardAngle <= 0.0)
+      {
+        continue; // edge collapses were made: their neighbourhoods are queued again
       }
       // Every collapse left is refused: lower the angle guard a step (halving; 0 below 2°),
       // requeue every triangle and go on, rather than stop short of the target.
@@ -850,21 +924,7 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
       }
       this->Bound.Merge(plan, distance);
     }
-    const std::int32_t kept = plan.Vertices[0];
-    double error = candidate.Cost;
-    for (int i = 0; i < plan.Count; ++i)
-    {
-      error += this->VertexError[plan.Vertices[i]];
-    }
-    this->Moved[kept] |= plan.Position != this->Mesh.Point(kept) ? 1 : 0;
-    for (int i = 1; i < plan.Count && !this->InputPlanes.empty(); ++i)
-    {
-      this->InputPlanes[kept] += this->InputPlanes[plan.Vertices[i]];
-    }
-    this->Mesh.Apply(plan, this->Options.KeepUndo);
-    this->VertexError[kept] = error;
-    result.SquareVolumeError += candidate.Cost;
-    this->UpdateAround(kept);
+    this->Commit(plan, candidate.Cost, result);
     if ((++steps & 255) == 0)
     {
       const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /

@@ -31,7 +31,10 @@
  *   corners (a sharp turn of the boundary) never move. PreserveBoundary locks every boundary
  *   vertex; LockedPoints locks the caller's choice.
  * - The count: collapses stop at the target; one that would remove too many triangles (more than
- *   1 % below the target) is replaced by the collapse of one of the triangle's edges.
+ *   1 %, or one triangle, below the target) is replaced by the collapse of one of the
+ *   triangle's edges. When no triangle's plan is legal before the target (on small meshes of
+ *   higher genus the link condition refuses every one), half-edge collapses of any edge go on,
+ *   cheapest first by the quadric sums of their ends (with EdgeCollapses).
  * - Zero-cost triangles whose cost is set again queue behind the waiting zero-cost ones (§3.5,
  *   Fig. 7): the heap's tie rule (CollapseHeap).
  * - After a collapse the new vertex's triangles get their geometry, quadrics and costs at once,
