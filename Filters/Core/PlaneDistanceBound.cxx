@@ -42,10 +42,13 @@ void PlaneDistanceBound::Build(const CollapseMesh& mesh)
       {
         this->Next[head] = corner;
       }
+      // Through the end with fewer triangles: a fan's centre may have thousands.
+      const bool fromV = mesh.NumberOfTrianglesAround(v) <= mesh.NumberOfTrianglesAround(w);
+      const std::int32_t scanned = fromV ? v : w, far = fromV ? w : v;
       int shared = 0;
-      mesh.ForEachTriangle(v, [&](std::int32_t j) {
+      mesh.ForEachTriangle(scanned, [&](std::int32_t j) {
         const std::int32_t* o = mesh.Triangle(j);
-        shared += j != t && (o[0] == w || o[1] == w || o[2] == w) ? 1 : 0;
+        shared += j != t && (o[0] == far || o[1] == far || o[2] == far) ? 1 : 0;
       });
       const Eigen::Vector3d edge = mesh.Point(w) - mesh.Point(v);
       const Eigen::Vector3d side = edge.cross(normal);
