@@ -5,8 +5,6 @@
 
 #include "TestBadInput.h"
 
-#include <algorithm>
-
 int TestVolumeTriangleCollapseBadInput(int, char*[])
 {
   const meshsimp_test::FilterFactory make = [](double reduction) {
@@ -30,22 +28,6 @@ int TestVolumeTriangleCollapseBadInput(int, char*[])
     const meshsimp_test::Run none = meshsimp_test::Simplify(make, sphere, -1);
     CHECK(none.Output->GetNumberOfPolys() == sphere->GetNumberOfPolys());
   }
-  // A negative error bound is clamped to 0: on a sphere no collapse keeps every point on its
-  // planes, so nothing changes, and stopping at the bound is no cause for a warning.
-  {
-    const meshsimp_test::FilterFactory bounded = [](double bound) {
-      vtkNew<vtkVolumeTriangleCollapse> filter;
-      filter->SetTargetModeToMaximumError();
-      filter->SetMaximumError(bound);
-      CHECK(filter->GetMaximumError() == std::max(0.0, bound));
-      return vtkSmartPointer<vtkPolyDataAlgorithm>(filter);
-    };
-    vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
-    const meshsimp_test::Run none = meshsimp_test::Simplify(bounded, sphere, -1);
-    CHECK(!none.Warned && !none.Failed);
-    CHECK(none.Output->GetNumberOfPolys() == sphere->GetNumberOfPolys());
-    const meshsimp_test::Run some = meshsimp_test::Simplify(bounded, sphere, 0.05);
-    CHECK(!some.Warned && some.Output->GetNumberOfPolys() < sphere->GetNumberOfPolys());
-  }
+  meshsimp_test::CheckErrorBoundClamped<vtkVolumeTriangleCollapse>();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

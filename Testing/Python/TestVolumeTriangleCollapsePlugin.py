@@ -9,7 +9,7 @@ import os
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 from paraview import servermanager
 
-from plugintest import arguments, check, finish
+from plugintest import arguments, check, check_error_bound, finish
 
 args = arguments()
 
@@ -70,19 +70,8 @@ simplified.UpdatePipeline()
 cells = simplified.GetDataInformation().GetNumberOfCells()
 check(abs(cells - 1000) <= 10, "triangle count 1000 +- 1 %%, got %d" % cells)
 
-# Error-bound mode: as far as the bound (1 % of the diagonal) lets; the field data holds the
-# largest distance reached; a tighter bound keeps more triangles.
-simplified.TargetMode = "Maximum Error"
-simplified.MaximumError = 0.01
-output = servermanager.Fetch(simplified)
-bounds = cow.GetDataInformation().GetBounds()
-diagonal = ((bounds[1] - bounds[0]) ** 2 + (bounds[3] - bounds[2]) ** 2 + (bounds[5] - bounds[4]) ** 2) ** 0.5
-reached = output.GetFieldData().GetArray("MaximumPlaneDistance")
-check(reached is not None and 0 < reached.GetValue(0) <= 0.01 * diagonal,
-      "largest plane distance within the bound")
-simplified.MaximumError = 0.002
-loose, tight = output.GetNumberOfPolys(), servermanager.Fetch(simplified).GetNumberOfPolys()
-check(loose < tight < 5804, "bounds 0.01 and 0.002 give %d and %d triangles" % (loose, tight))
+# Maximum Error mode.
+check_error_bound(simplified, cow, 5804)
 
 # A multiblock input is simplified block by block.
 terrain = XMLPolyDataReader(FileName=[os.path.join(args.data, "jacksboro_dem_half.vtp")])

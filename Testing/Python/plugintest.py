@@ -24,6 +24,24 @@ def check(condition, message):
         print("check failed:", message, file=sys.stderr)
 
 
+def check_error_bound(simplifier, source, input_triangles):
+    """Maximum Error mode of a collapse filter: as far as the bound (1 % of the diagonal) lets;
+    the field data holds the largest distance reached; a tighter bound keeps more triangles."""
+    from paraview import servermanager
+    simplifier.TargetMode = "Maximum Error"
+    simplifier.MaximumError = 0.01
+    output = servermanager.Fetch(simplifier)
+    bounds = source.GetDataInformation().GetBounds()
+    diagonal = sum((bounds[2 * k + 1] - bounds[2 * k]) ** 2 for k in range(3)) ** 0.5
+    reached = output.GetFieldData().GetArray("MaximumPlaneDistance")
+    check(reached is not None and 0 < reached.GetValue(0) <= 0.01 * diagonal,
+          "largest plane distance within the bound")
+    simplifier.MaximumError = 0.002
+    loose, tight = output.GetNumberOfPolys(), servermanager.Fetch(simplifier).GetNumberOfPolys()
+    check(loose < tight < input_triangles,
+          "bounds 0.01 and 0.002 give %d and %d triangles" % (loose, tight))
+
+
 def finish():
     print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
     sys.exit(1 if failures else 0)
