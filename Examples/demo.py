@@ -74,6 +74,13 @@ SaveData(os.path.join(args.output, "terrain_octree_error0.005.vtp"), proxy=bound
 side_by_side(terrain, bounded, "ClusterError", "terrain-error",
              os.path.join(args.output, "terrain_octree_error0.005.png"), terrain_camera)
 
+# The same bound with Volume Triangle Collapse: the same largest distance to the input planes
+# with far fewer triangles.
+volume_bounded = VolumeTriangleCollapse(Input=terrain, TargetMode="Maximum Error", MaximumError=0.005)
+SaveData(os.path.join(args.output, "terrain_volume_error0.005.vtp"), proxy=volume_bounded)
+side_by_side(terrain, volume_bounded, "elevation", "terrain-volume-error",
+             os.path.join(args.output, "terrain_volume_error0.005.png"), terrain_camera)
+
 # Volume Triangle Collapse: the closed cow stays closed; coloured by the squared volume error
 # each output point absorbed.
 cow_volume = VolumeTriangleCollapse(Input=cow, TargetReduction=0.9)
