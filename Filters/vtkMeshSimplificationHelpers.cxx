@@ -306,6 +306,15 @@ void AddFieldValue(vtkPolyData* output, const char* name, double value)
   output->GetFieldData()->AddArray(array);
 }
 
+void AddPointValues(vtkPolyData* output, const char* name, const std::vector<double>& values)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  output->GetPointData()->AddArray(array);
+}
+
 int ResolveThreadCount(int numberOfThreads)
 {
   return numberOfThreads > 0 ? numberOfThreads

@@ -81,6 +81,9 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std:
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);
 
+/// Adds a point-data array of one value per output point.
+void AddPointValues(vtkPolyData* output, const char* name, const std::vector<double>& values);
+
 /// Threads (0 = all cores) of a worker pool that lives as long as the context, so that filters
 /// working in rounds do not start threads for every loop (VTK's SMP setting is untouched);
 /// progress and abort through the algorithm.

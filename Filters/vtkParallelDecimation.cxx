@@ -122,6 +122,7 @@ int vtkParallelDecimation::RequestData(
   {
     this->AchievedMaximumError = result.AchievedMaximumError;
     vtkMeshSimplificationHelpers::AddFieldValue(output, "MaximumPlaneDistance", result.AchievedMaximumError);
+    vtkMeshSimplificationHelpers::AddPointValues(output, "PlaneDistance", result.PlaneDistance);
   }
   return 1;
 }
@@ -134,6 +135,7 @@ void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetTriangleCount: " << this->TargetTriangleCount << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "RelativeError: " << this->RelativeError << "\n";
+  os << indent << "AchievedMaximumError: " << this->AchievedMaximumError << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
   os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";

@@ -41,8 +41,9 @@
  * or not) stays within the bound of the planes of the input triangles it stands for (their
  * supporting planes and, along open borders, the planes through the border edges perpendicular
  * to them: Ronfard and Rossignac's measure, the one the octree filter bounds); a vertex whose
- * best half-edge would break the bound takes its next. "MaximumPlaneDistance" in the field data
- * and AchievedMaximumError give the largest distance reached.
+ * best half-edge would break the bound takes its next. The point array "PlaneDistance" holds
+ * each output point's distance, "MaximumPlaneDistance" in the field data and
+ * AchievedMaximumError the largest.
  *
  * Points can be locked (never removed) by a point-data array whose nonzero values mark them,
  * selected as input array 0.

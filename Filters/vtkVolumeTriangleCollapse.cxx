@@ -152,6 +152,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   {
     this->AchievedMaximumError = result.AchievedMaximumError;
     vtkMeshSimplificationHelpers::AddFieldValue(output, "MaximumPlaneDistance", result.AchievedMaximumError);
+    vtkMeshSimplificationHelpers::AddPointValues(output, "PlaneDistance", result.PlaneDistance);
   }
   return 1;
 }
@@ -164,6 +165,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TargetTriangleCount: " << this->TargetTriangleCount << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "RelativeError: " << this->RelativeError << "\n";
+  os << indent << "AchievedMaximumError: " << this->AchievedMaximumError << "\n";
   os << indent << "FeatureCurvature: " << this->FeatureCurvature << "\n";
   os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
   os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";

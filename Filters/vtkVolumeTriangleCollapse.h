@@ -44,8 +44,9 @@
  * collapses, in the same order, as far as it can while every output point stays within the
  * bound of the planes of the input triangles it stands for (their supporting planes and, along
  * open borders, the planes through the border edges perpendicular to them: Ronfard and
- * Rossignac's measure, the one the octree filter bounds); "MaximumPlaneDistance" in the field
- * data and AchievedMaximumError give the largest distance reached.
+ * Rossignac's measure, the one the octree filter bounds); the point array "PlaneDistance" holds
+ * each output point's distance, "MaximumPlaneDistance" in the field data and
+ * AchievedMaximumError the largest.
  *
  * Polygons are triangulated and strips decomposed first; vertex and line cells are dropped (a
  * warning says how many); triangles with repeated point ids or non-finite points are ignored.

@@ -1000,7 +1000,8 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
     result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] : -1.0);
     if (this->BoundLimit >= 0.0)
     {
-      result.AchievedMaximumError = std::max(result.AchievedMaximumError, this->Bound.Error(v));
+      result.PlaneDistance.push_back(this->Bound.Error(v));
+      result.AchievedMaximumError = std::max(result.AchievedMaximumError, result.PlaneDistance.back());
     }
     result.Types.push_back(this->Types[v]);
   }

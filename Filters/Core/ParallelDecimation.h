@@ -146,7 +146,9 @@ struct ParallelDecimationResult
   std::int64_t Relaxations = 0;
   bool StoppedEarly = false; // no removable vertex was left before the target
   std::int64_t MovedPoints = 0; // survivors MoveSurvivors moved
-  /// With MaximumError: the largest distance of an output point to its planes (input units).
+  /// With MaximumError: each output point's distance to its planes, and the largest (input
+  /// units).
+  std::vector<double> PlaneDistance;
   double AchievedMaximumError = 0.0;
 };
 

@@ -955,7 +955,8 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
     result.PointError.push_back(this->VertexError[v] * scale8);
     if (this->BoundLimit >= 0.0)
     {
-      result.AchievedMaximumError = std::max(result.AchievedMaximumError, this->Bound.Error(v) * this->Diagonal);
+      result.PlaneDistance.push_back(this->Bound.Error(v) * this->Diagonal);
+      result.AchievedMaximumError = std::max(result.AchievedMaximumError, result.PlaneDistance.back());
     }
   }
   for (const std::int32_t t : kept)

@@ -142,7 +142,9 @@ struct VolumeCollapseResult
   /// The angle guard at the end: below MinimumAngle when it refused every collapse left before
   /// the target and was lowered (halved, 0 below 2°) to go on.
   double FinalMinimumAngle = 0.0;
-  /// With MaximumError: the largest distance of an output point to its planes (input units).
+  /// With MaximumError: each output point's distance to its planes, and the largest (input
+  /// units).
+  std::vector<double> PlaneDistance;
   double AchievedMaximumError = 0.0;
 };
 

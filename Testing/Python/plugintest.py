@@ -36,6 +36,10 @@ def check_error_bound(simplifier, source, input_triangles):
     reached = output.GetFieldData().GetArray("MaximumPlaneDistance")
     check(reached is not None and 0 < reached.GetValue(0) <= 0.01 * diagonal,
           "largest plane distance within the bound")
+    distances = output.GetPointData().GetArray("PlaneDistance")
+    check(distances is not None and distances.GetNumberOfTuples() == output.GetNumberOfPoints() and
+          distances.GetRange()[1] == reached.GetValue(0),
+          "PlaneDistance per point, its largest in the field data")
     simplifier.MaximumError = 0.002
     loose, tight = output.GetNumberOfPolys(), servermanager.Fetch(simplifier).GetNumberOfPolys()
     check(loose < tight < input_triangles,
