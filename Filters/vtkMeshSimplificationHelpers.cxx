@@ -261,6 +261,18 @@ bool PrepareTriangles(vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& t
   return triangles.View.NumberOfTriangles > 0;
 }
 
+bool CheckTarget(vtkAlgorithm* filter, int targetMode, double reduction, double maximumError)
+{
+  const char* name = targetMode == 0 ? "TargetReduction" : targetMode == 2 ? "MaximumError" : nullptr;
+  const double value = targetMode == 0 ? reduction : maximumError;
+  if (name && std::isnan(value))
+  {
+    vtkErrorWithObjectMacro(filter, << "Cannot simplify: " << name << " is not a number.");
+    return false;
+  }
+  return true;
+}
+
 bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints)
 {
   if (nonFinitePoints > 0)

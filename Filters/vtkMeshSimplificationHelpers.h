@@ -62,6 +62,10 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string&
 bool PrepareTriangles(vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles,
   int& requestResult, std::vector<std::uint8_t>& pieceLocks);
 
+/// False, with an error, when the target in force is not a number (vtkSetClampMacro lets NaN
+/// through): the reduction for TargetMode 0, the error bound for 2 (the filters share the modes).
+bool CheckTarget(vtkAlgorithm* filter, int targetMode, double reduction, double maximumError);
+
 /// Warns about ignored non-finite points and about an abort; returns finished.
 bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints);
 

@@ -33,6 +33,10 @@ int vtkOctreeVertexClustering::RequestData(
   {
     return requestResult;
   }
+  if (!vtkMeshSimplificationHelpers::CheckTarget(this, this->TargetMode, this->TargetReduction, this->MaximumError))
+  {
+    return 0;
+  }
 
   meshsimp::OctreeClusteringOptions options;
   const std::int64_t inputTriangles = triangles.View.NumberOfTriangles;

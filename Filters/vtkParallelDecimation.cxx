@@ -35,6 +35,10 @@ int vtkParallelDecimation::RequestData(
   {
     return requestResult;
   }
+  if (!vtkMeshSimplificationHelpers::CheckTarget(this, this->TargetMode, this->TargetReduction, this->MaximumError))
+  {
+    return 0;
+  }
 
   meshsimp::ParallelDecimationOptions options;
   const std::int64_t inputTriangles = triangles.View.NumberOfTriangles;

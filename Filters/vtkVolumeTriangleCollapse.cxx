@@ -81,6 +81,10 @@ int vtkVolumeTriangleCollapse::RequestData(
   {
     return requestResult;
   }
+  if (!vtkMeshSimplificationHelpers::CheckTarget(this, this->TargetMode, this->TargetReduction, this->MaximumError))
+  {
+    return 0;
+  }
 
   meshsimp::VolumeCollapseOptions options;
   const std::int64_t inputTriangles = triangles.View.NumberOfTriangles;

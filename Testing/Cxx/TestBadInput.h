@@ -177,6 +177,11 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     const Run run = Simplify(make, wires);
     CHECK(run.Warned && !run.Failed && run.Output->GetNumberOfCells() == 0);
   }
+  // A reduction that is not a number (vtkSetClampMacro lets NaN through): a clear error.
+  {
+    const Run run = Simplify(make, Sphere(), std::numeric_limits<double>::quiet_NaN());
+    CHECK(run.Failed && run.Output->GetNumberOfCells() == 0);
+  }
 }
 
 /// The error-bound target's bad input: a negative bound is clamped to 0, and on a sphere no
@@ -189,7 +194,7 @@ void CheckErrorBoundClamped()
     vtkNew<Filter> filter;
     filter->SetTargetModeToMaximumError();
     filter->SetMaximumError(bound);
-    CHECK(filter->GetMaximumError() == std::max(0.0, bound));
+    CHECK(filter->GetMaximumError() == std::max(0.0, bound) || std::isnan(bound));
     return vtkSmartPointer<vtkPolyDataAlgorithm>(filter);
   };
   vtkSmartPointer<vtkPolyData> sphere = Sphere();
@@ -198,6 +203,9 @@ void CheckErrorBoundClamped()
   CHECK(none.Output->GetNumberOfPolys() == sphere->GetNumberOfPolys());
   const Run some = Simplify(bounded, sphere, 0.05);
   CHECK(!some.Warned && some.Output->GetNumberOfPolys() < sphere->GetNumberOfPolys());
+  // vtkSetClampMacro lets NaN through: a clear error, no output.
+  const Run nan = Simplify(bounded, sphere, std::numeric_limits<double>::quiet_NaN());
+  CHECK(nan.Failed && nan.Output->GetNumberOfCells() == 0);
 }
 }
 
