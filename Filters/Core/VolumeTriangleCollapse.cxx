@@ -22,6 +22,9 @@ constexpr double NormalFactorFloor = 0.01;
 /// An edge of a triangle collapses instead of the triangle when its error is below this share
 /// of the triangle's (measured: a half, the share per removed triangle, made more slivers).
 constexpr double EdgeErrorShare = 0.25;
+/// Corners with more triangles count in a triangle's normal factor only through the other
+/// corners (ForEachAdjacent).
+constexpr std::int32_t FanLimit = 256;
 /// A collapse is flat when its error is below this fraction of Σ (plane weights) · (longest
 /// edge)²: its point lies within about 3·10⁻⁴ edge lengths of the planes (RMS).
 constexpr double FlatTolerance = 1e-7;
@@ -64,27 +67,40 @@ private:
     bool FreePlacement = false; // placed by eq. (5)/(8), not by a boundary, lock or feature rule
   };
 
-  /// Calls f(j) once for every triangle sharing a vertex with t, t included (Definition 2).
+  /// Calls f(j) once for every triangle sharing a vertex with t, t included (Definition 2). A
+  /// corner with more than FanLimit triangles (the centre of a triangulated polygon) adds only
+  /// those the other corners' lists hold, unless it has the fewest: otherwise every update
+  /// around a fan's centre would visit the whole fan.
   template <typename F>
   void ForEachAdjacent(std::int32_t t, F&& f) const
   {
     const std::int32_t* tri = this->Mesh.Triangle(t);
-    const std::int32_t a = tri[0], b = tri[1], c = tri[2];
-    this->Mesh.ForEachTriangle(a, f);
-    this->Mesh.ForEachTriangle(b, [&](std::int32_t j) {
-      const std::int32_t* o = this->Mesh.Triangle(j);
-      if (o[0] != a && o[1] != a && o[2] != a)
+    std::int32_t fewest = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      fewest = this->Mesh.NumberOfTrianglesAround(tri[k]) < this->Mesh.NumberOfTrianglesAround(tri[fewest]) ? k : fewest;
+    }
+    bool scanned[3] = { false, false, false };
+    for (int k = 0; k < 3; ++k)
+    {
+      scanned[k] = k == fewest || this->Mesh.NumberOfTrianglesAround(tri[k]) <= FanLimit;
+      if (!scanned[k])
       {
-        f(j);
+        continue;
       }
-    });
-    this->Mesh.ForEachTriangle(c, [&](std::int32_t j) {
-      const std::int32_t* o = this->Mesh.Triangle(j);
-      if (o[0] != a && o[1] != a && o[2] != a && o[0] != b && o[1] != b && o[2] != b)
-      {
+      // Once: a triangle holding an earlier scanned corner was visited there.
+      this->Mesh.ForEachTriangle(tri[k], [&](std::int32_t j) {
+        const std::int32_t* o = this->Mesh.Triangle(j);
+        for (int i = 0; i < k; ++i)
+        {
+          if (scanned[i] && (o[0] == tri[i] || o[1] == tri[i] || o[2] == tri[i]))
+          {
+            return;
+          }
+        }
         f(j);
-      }
-    });
+      });
+    }
   }
 
   void UpdateGeometry(std::int32_t t);
@@ -251,7 +267,13 @@ void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbo
   q -= this->TriangleQuadrics[t];
   for (int k = 0; k < 3; ++k)
   {
-    const std::int32_t u = tri[k], w = tri[(k + 1) % 3];
+    // The triangles across edge k, found around its end with fewer triangles (a fan's centre
+    // may have thousands).
+    std::int32_t u = tri[k], w = tri[(k + 1) % 3];
+    if (this->Mesh.NumberOfTrianglesAround(w) < this->Mesh.NumberOfTrianglesAround(u))
+    {
+      std::swap(u, w);
+    }
     this->Mesh.ForEachTriangle(u, [&](std::int32_t j) {
       const std::int32_t* o = this->Mesh.Triangle(j);
       if (j != t && (o[0] == w || o[1] == w || o[2] == w))
