@@ -817,9 +817,14 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
   std::vector<Option> options;
   for (std::int32_t t = 0; t < this->Mesh.NumberOfTriangles(); ++t)
   {
-    const std::int32_t* tri = this->Mesh.Triangle(t);
-    for (int k = 0; this->Mesh.IsAlive(t) && k < 6; ++k)
+    if (!this->Mesh.IsAlive(t))
     {
+      continue;
+    }
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    for (int k = 0; k < 6; ++k)
+    {
+      // Corner k % 3 kept, its next (k < 3) or previous corner merged: both ways of each edge.
       const std::int32_t kept = tri[k % 3], other = tri[(k % 3 + (k < 3 ? 1 : 2)) % 3];
       Quadric q = this->VertexQuadrics[kept];
       q += this->VertexQuadrics[other];
