@@ -39,8 +39,9 @@
  * simplified pieces still fit together; not for composite inputs, whose blocks are simplified
  * one by one.
  *
- * The triangle count is met within 1 % (TargetReduction or TargetTriangleCount); the filter
- * stops early, with a warning, only when no legal collapse is left. In MaximumError mode it
+ * The triangle count is met within 1 % or one triangle (TargetReduction or
+ * TargetTriangleCount); the filter stops early, with a warning, only when no legal collapse is
+ * left. In MaximumError mode it
  * collapses, in the same order, as far as it can while every output point stays within the
  * bound of the planes of the input triangles it stands for (their supporting planes and, along
  * open borders, the planes through the border edges perpendicular to them: Ronfard and
