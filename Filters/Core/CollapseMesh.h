@@ -38,6 +38,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace meshsimp
@@ -124,6 +125,24 @@ public:
     {
       f(ids[i]);
     }
+  }
+
+  /// Calls f(t) for every alive triangle with the edge (u, w), found around the end with fewer
+  /// triangles (a fan's centre may have thousands).
+  template <typename F>
+  void ForEachTriangleOnEdge(std::int32_t u, std::int32_t w, F&& f) const
+  {
+    if (this->Count[w] < this->Count[u])
+    {
+      std::swap(u, w);
+    }
+    this->ForEachTriangle(u, [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      if (tri[0] == w || tri[1] == w || tri[2] == w)
+      {
+        f(t);
+      }
+    });
   }
 
   /// Calls f(t, next, previous) for every alive triangle t around v with its corners after and

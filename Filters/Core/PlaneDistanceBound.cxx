@@ -42,14 +42,8 @@ void PlaneDistanceBound::Build(const CollapseMesh& mesh)
       {
         this->Next[head] = corner;
       }
-      // Through the end with fewer triangles: a fan's centre may have thousands.
-      const bool fromV = mesh.NumberOfTrianglesAround(v) <= mesh.NumberOfTrianglesAround(w);
-      const std::int32_t scanned = fromV ? v : w, far = fromV ? w : v;
       int shared = 0;
-      mesh.ForEachTriangle(scanned, [&](std::int32_t j) {
-        const std::int32_t* o = mesh.Triangle(j);
-        shared += j != t && (o[0] == far || o[1] == far || o[2] == far) ? 1 : 0;
-      });
+      mesh.ForEachTriangleOnEdge(v, w, [&](std::int32_t j) { shared += j != t ? 1 : 0; });
       const Eigen::Vector3d edge = mesh.Point(w) - mesh.Point(v);
       const Eigen::Vector3d side = edge.cross(normal);
       const double length = side.norm();

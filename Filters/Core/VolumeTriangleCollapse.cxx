@@ -267,16 +267,8 @@ void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbo
   q -= this->TriangleQuadrics[t];
   for (int k = 0; k < 3; ++k)
   {
-    // The triangles across edge k, found around its end with fewer triangles (a fan's centre
-    // may have thousands).
-    std::int32_t u = tri[k], w = tri[(k + 1) % 3];
-    if (this->Mesh.NumberOfTrianglesAround(w) < this->Mesh.NumberOfTrianglesAround(u))
-    {
-      std::swap(u, w);
-    }
-    this->Mesh.ForEachTriangle(u, [&](std::int32_t j) {
-      const std::int32_t* o = this->Mesh.Triangle(j);
-      if (j != t && (o[0] == w || o[1] == w || o[2] == w))
+    this->Mesh.ForEachTriangleOnEdge(tri[k], tri[(k + 1) % 3], [&](std::int32_t j) {
+      if (j != t)
       {
         q -= this->TriangleQuadrics[j];
         if (across)
