@@ -856,24 +856,24 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
   {
     if (this->Heap.Empty())
     {
-      if (this->BoundLimit >= 0.0 ||
-        (this->GuardAngle <= 0.0 &&
-          (!this->Options.EdgeCollapses || !this->CollapseAnyEdges(target - tolerance, result))))
+      if (this->BoundLimit < 0.0 && this->GuardAngle > 0.0)
       {
-        result.StoppedEarly = true;
-        break;
+        // Every collapse left is refused: lower the angle guard a step (halving; 0 below 2°),
+        // requeue every triangle and go on, rather than stop short of the target.
+        this->GuardAngle = this->GuardAngle >= 2.0 ? 0.5 * this->GuardAngle : 0.0;
+        this->Mesh.SetMinimumAngle(this->GuardAngle);
+        result.FinalMinimumAngle = this->GuardAngle;
+        this->QueueAll();
+        continue;
       }
-      if (this->GuardAngle <= 0.0)
+      // The guard is down and no triangle's plan is legal: the last resort.
+      if (this->BoundLimit < 0.0 && this->Options.EdgeCollapses &&
+        this->CollapseAnyEdges(target - tolerance, result))
       {
-        continue; // edge collapses were made: their neighbourhoods are queued again
+        continue; // their neighbourhoods are queued again
       }
-      // Every collapse left is refused: lower the angle guard a step (halving; 0 below 2°),
-      // requeue every triangle and go on, rather than stop short of the target.
-      this->GuardAngle = this->GuardAngle >= 2.0 ? 0.5 * this->GuardAngle : 0.0;
-      this->Mesh.SetMinimumAngle(this->GuardAngle);
-      result.FinalMinimumAngle = this->GuardAngle;
-      this->QueueAll();
-      continue;
+      result.StoppedEarly = true; // with a bound, simply the end
+      break;
     }
     const double queuedCost = this->Heap.TopCost();
     const std::int32_t t = this->Heap.Pop();
