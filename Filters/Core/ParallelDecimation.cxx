@@ -141,13 +141,14 @@ public:
 private:
   void CollectStar(std::int32_t v, Workspace& work) const;
   /// The type, the importance of eq. (5.1)–(5.4) and the special neighbours of v, with v's star
-  /// left in the workspace.
-  VertexState Analyze(std::int32_t v, Workspace& work) const;
+  /// left in the workspace (collected unless starCollected says it is there already).
+  VertexState Analyze(std::int32_t v, Workspace& work, bool starCollected = false) const;
   /// Analyze with the importance of the chosen measure.
-  VertexState Evaluate(std::int32_t v, Workspace& work) const;
+  VertexState Evaluate(std::int32_t v, Workspace& work, bool starCollected = false) const;
   /// The quadric error of collapsing v into u.
   double HalfEdgeError(std::int32_t v, std::int32_t u) const;
-  void InitializeQuadrics();
+  /// Quadric: v's own planes, from its star in the workspace.
+  void InitializeQuadric(std::int32_t v, const Workspace& work);
   /// Half the change of area when v collapses into u (its star in the workspace), or -1 when a
   /// remaining triangle would turn by more than the deviation limit or degenerate (§5.3).
   double AreaChange(std::int32_t u, const Workspace& work) const;
@@ -259,9 +260,9 @@ double Decimator::HalfEdgeError(std::int32_t v, std::int32_t u) const
   return this->Quadrics[v].Evaluate(this->Mesh.Point(u)) + this->OwnError[u];
 }
 
-VertexState Decimator::Evaluate(std::int32_t v, Workspace& work) const
+VertexState Decimator::Evaluate(std::int32_t v, Workspace& work, bool starCollected) const
 {
-  VertexState state = this->Analyze(v, work);
+  VertexState state = this->Analyze(v, work, starCollected);
   if (state.Importance == Never)
   {
     return state;
@@ -299,7 +300,7 @@ VertexState Decimator::Evaluate(std::int32_t v, Workspace& work) const
   return state;
 }
 
-VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
+VertexState Decimator::Analyze(std::int32_t v, Workspace& work, bool starCollected) const
 {
   VertexState state;
   const VertexClass c = this->Mesh.Class(v);
@@ -312,7 +313,10 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work) const
   {
     return state;
   }
-  this->CollectStar(v, work);
+  if (!starCollected)
+  {
+    this->CollectStar(v, work);
+  }
   if (work.Star.empty())
   {
     return state;
@@ -613,44 +617,37 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
   return window >= candidates;
 }
 
-void Decimator::InitializeQuadrics()
+void Decimator::InitializeQuadric(std::int32_t v, const Workspace& work)
 {
-  // Each vertex: the planes of its triangles weighted by area, and along a boundary edge the
-  // plane through the edge perpendicular to its triangle, weighted by the squared edge length,
-  // so that boundaries keep their place.
-  const std::int32_t n = this->Mesh.NumberOfPoints();
-  this->Quadrics.assign(n, Quadric());
-  this->OwnError.assign(n, 0.0);
-  this->ForEachInParts(n, 64, [&](std::int64_t i, Workspace& work) {
-    const std::int32_t v = static_cast<std::int32_t>(i);
-    this->CollectStar(v, work);
-    Quadric& q = this->Quadrics[v];
-    const Vec3& p = this->Mesh.Point(v);
-    for (const StarTriangle& star : work.Star)
+  // The planes of v's triangles weighted by area, and along a boundary edge the plane through
+  // the edge perpendicular to its triangle, weighted by the squared edge length, so that
+  // boundaries keep their place.
+  Quadric& q = this->Quadrics[v];
+  const Vec3& p = this->Mesh.Point(v);
+  for (const StarTriangle& star : work.Star)
+  {
+    if (star.Length > 0.0)
     {
-      if (star.Length > 0.0)
-      {
-        const Vec3 normal = star.Cross / star.Length;
-        q += Quadric::FromPlane(normal, -normal.dot(p), 0.5 * star.Length);
-      }
+      const Vec3 normal = star.Cross / star.Length;
+      q += Quadric::FromPlane(normal, -normal.dot(p), 0.5 * star.Length);
     }
-    for (const StarEdge& e : work.Edges)
+  }
+  for (const StarEdge& e : work.Edges)
+  {
+    if ((e.After < 0) == (e.Before < 0))
     {
-      if ((e.After < 0) == (e.Before < 0))
-      {
-        continue;
-      }
-      const Vec3& cross = work.Star[e.After >= 0 ? e.After : e.Before].Cross;
-      const Vec3 edge = this->Mesh.Point(e.W) - p;
-      const Vec3 side = edge.cross(cross);
-      const double length = side.norm();
-      if (length > 0.0)
-      {
-        const Vec3 normal = side / length;
-        q += Quadric::FromPlane(normal, -normal.dot(p), edge.squaredNorm());
-      }
+      continue;
     }
-  });
+    const Vec3& cross = work.Star[e.After >= 0 ? e.After : e.Before].Cross;
+    const Vec3 edge = this->Mesh.Point(e.W) - p;
+    const Vec3 side = edge.cross(cross);
+    const double length = side.norm();
+    if (length > 0.0)
+    {
+      const Vec3 normal = side / length;
+      q += Quadric::FromPlane(normal, -normal.dot(p), edge.squaredNorm());
+    }
+  }
 }
 
 bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& result)
@@ -684,10 +681,6 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     }
   }
 
-  if (this->Options.Measure == ImportanceMeasure::Quadric)
-  {
-    this->InitializeQuadrics();
-  }
   // Step 1–2 of §5.5: every vertex's type and importance, concurrently.
   this->Importance.assign(n, Never);
   this->Types.assign(n, DecimationVertexType::Complex);
@@ -704,8 +697,8 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     this->Live[v] = v;
   }
   this->Accumulated.assign(n, 0.0);
-  auto measure = [&](std::int32_t v, Workspace& work) {
-    const VertexState state = this->Evaluate(v, work);
+  auto measure = [&](std::int32_t v, Workspace& work, bool starCollected) {
+    const VertexState state = this->Evaluate(v, work, starCollected);
     this->Types[v] = state.Type;
     this->Importance[v] = state.Importance;
     this->BestTarget[v] = state.Best;
@@ -717,7 +710,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
       if (v >= 0) // -1: a repeat in the list
       {
-        measure(v, work);
+        measure(v, work, false);
       }
     });
   };
@@ -748,10 +741,23 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         this->Updated[w] = 1;
         return;
       }
-      measure(w, work);
+      measure(w, work, false);
     });
   };
-  evaluate(nullptr, n);
+  // The first time, each star serves both the vertex's quadric (Quadric: the only one its
+  // evaluation reads; the others' own errors are still 0) and its evaluation.
+  const bool quadric = this->Options.Measure == ImportanceMeasure::Quadric;
+  this->Quadrics.assign(quadric ? n : 0, Quadric());
+  this->OwnError.assign(quadric ? n : 0, 0.0);
+  this->ForEachInParts(n, 600, [&](std::int64_t i, Workspace& work) {
+    const std::int32_t v = static_cast<std::int32_t>(i);
+    this->CollectStar(v, work);
+    if (quadric)
+    {
+      this->InitializeQuadric(v, work);
+    }
+    measure(v, work, true);
+  });
   if (!this->Context.Report(0.05))
   {
     return false;
