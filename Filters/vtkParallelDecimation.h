@@ -26,7 +26,9 @@
  *   and 80 %).
  * - Rounds (§5.5): the least important vertices (RoundFraction of them per round) are taken
  *   greedily while any two taken vertices stay at least three edges apart (a
- *   super-independent set), and then removed concurrently without locks. Each removal collapses
+ *   super-independent set: their triangles share no edge; only the centre of a fan of 32 or
+ *   more triangles may be near several, and it is never a collapse's survivor), and then removed
+ *   concurrently without locks. Each removal collapses
  *   the legal edge of least area change among those that turn no triangle by more than
  *   MaximumNormalDeviation (HalfEdgeChoice LEAST_AREA_CHANGE, §5.3) or the shortest legal edge
  *   (SHORTEST_EDGE, §5.5); with QUADRIC, the edge of least error. Every collapse keeps the mesh

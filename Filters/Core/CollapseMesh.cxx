@@ -514,6 +514,10 @@ int CollapseMesh::Merge(
   // A removed triangle leaves the span of its corner outside the plan (order kept), so that
   // walks around that vertex do not skip it ever after.
   auto dropFromSpan = [&](std::int32_t w, std::int32_t t) {
+    if (!this->Shared.empty() && this->Shared[w])
+    {
+      return; // ApplyIndependent drops it after the concurrent merges
+    }
     std::int32_t* first = this->Refs.data() + this->Start[w];
     std::int32_t* last = first + this->Count[w];
     std::int32_t* end = std::remove(first, last, t);
@@ -627,7 +631,7 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
 }
 
 std::int64_t CollapseMesh::ApplyIndependent(
-  const std::vector<CollapsePlan>& plans, const ExecutionContext& context)
+  const std::vector<CollapsePlan>& plans, const ExecutionContext& context, const std::vector<std::int32_t>& shared)
 {
   // Each kept vertex's new span goes to its own slice of one block, sized by the merged
   // vertices' spans together, and the block is appended to Refs once: the concurrent merges
@@ -646,6 +650,14 @@ std::int64_t CollapseMesh::ApplyIndependent(
   std::vector<std::int32_t> block(offsets[count]);
   std::vector<std::int32_t> sizes(count), removedCounts(count);
   std::vector<std::int64_t> droppedRefs(count, 0);
+  if (!shared.empty())
+  {
+    this->Shared.resize(this->Points.size(), 0);
+  }
+  for (const std::int32_t w : shared)
+  {
+    this->Shared[w] = 1;
+  }
   context.For(count, [&](std::int64_t begin, std::int64_t end) {
     std::vector<std::int32_t> span;
     for (std::int64_t i = begin; i < end; ++i)
@@ -675,6 +687,16 @@ std::int64_t CollapseMesh::ApplyIndependent(
     removed += removedCounts[i];
   }
   this->AliveCount -= removed;
+  // The shared vertices' spans lose their dead triangles (order kept) after all the merges.
+  for (const std::int32_t w : shared)
+  {
+    std::int32_t* first = this->Refs.data() + this->Start[w];
+    std::int32_t* last = first + this->Count[w];
+    std::int32_t* end = std::remove_if(first, last, [this](std::int32_t t) { return !this->Alive[t]; });
+    this->LiveRefs -= last - end;
+    this->Count[w] = static_cast<std::int32_t>(end - first);
+    this->Shared[w] = 0;
+  }
   this->Undone.clear();
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {

@@ -207,10 +207,13 @@ public:
   /**
    * Applies plans that touch disjoint neighbourhoods (no vertex within one edge of a plan's
    * vertices is within one edge of another's, e.g. the half-edge collapses of a super-independent
-   * vertex set), concurrently through the context. No records are kept, so Undo cannot reach
-   * past such a batch. Returns the number of triangles removed.
+   * vertex set), concurrently through the context. The vertices listed in shared are the
+   * exception: they may neighbour the vertices of several plans, but be none of them; the
+   * triangles the plans remove leave their spans after the concurrent part. No records are kept,
+   * so Undo cannot reach past such a batch. Returns the number of triangles removed.
    */
-  std::int64_t ApplyIndependent(const std::vector<CollapsePlan>& plans, const ExecutionContext& context);
+  std::int64_t ApplyIndependent(const std::vector<CollapsePlan>& plans, const ExecutionContext& context,
+    const std::vector<std::int32_t>& shared = {});
 
 private:
   std::int32_t Valence(std::int32_t v, CheckScratch& scratch) const;
@@ -235,6 +238,7 @@ private:
   std::vector<std::int32_t> Start, Count; // per vertex, into Refs
   std::vector<std::int32_t> Refs;
   std::int64_t LiveRefs = 0;
+  std::vector<std::uint8_t> Shared; // ApplyIndependent: spans updated after the concurrent merges
 
   double MinimumAngleCosine = 1.0;
 

@@ -75,6 +75,10 @@ constexpr double Never = std::numeric_limits<double>::infinity();
 constexpr double RelaxationStep = 15.0; // degrees
 /// Candidates whose neighbourhoods SelectRound gathers at once.
 constexpr std::int64_t RingBlock = 16384;
+/// A vertex of at least this many triangles (the centre of a fan) is a hub: the stars of one
+/// round's vertices may share it (only it: no edge), and it survives no collapse, so that a
+/// round is not limited to one vertex around it.
+constexpr std::int32_t HubTriangles = 32;
 
 /// One edge (v, W) around a vertex v: the triangle where W follows v and the one where W precedes
 /// it (-1 when missing: a boundary edge).
@@ -145,6 +149,9 @@ private:
   VertexState Analyze(std::int32_t v, Workspace& work, bool starCollected = false) const;
   /// Analyze with the importance of the chosen measure.
   VertexState Evaluate(std::int32_t v, Workspace& work, bool starCollected = false) const;
+  /// The round's stamp in Owner and Touched.
+  std::uint8_t RoundStamp() const { return static_cast<std::uint8_t>((this->Round - 1) % 255 + 1); }
+  bool IsHub(std::int32_t v) const { return this->Mesh.NumberOfTrianglesAround(v) >= HubTriangles; }
   /// The quadric error of collapsing v into u.
   double HalfEdgeError(std::int32_t v, std::int32_t u) const;
   /// Quadric: v's own planes, from its star in the workspace.
@@ -203,6 +210,8 @@ private:
   std::vector<DecimationVertexType> Types;
   std::vector<std::uint8_t> Stuck; // no legal collapse since the last change around it
   std::vector<std::uint8_t> Owner; // round stamp of the vertices near a taken one
+  std::vector<std::uint8_t> Touched; // round stamp of the hubs near a taken one
+  std::vector<std::int32_t> SharedHubs; // those hubs, in the order they were reached
   std::vector<std::uint32_t> Listed; // round stamp of the vertices listed for re-evaluation
   std::vector<std::int32_t> Into;    // the survivor of the removal that listed the vertex
   std::vector<std::int32_t> BestTarget; // Quadric: the neighbour of least half-edge error
@@ -272,6 +281,10 @@ VertexState Decimator::Evaluate(std::int32_t v, Workspace& work, bool starCollec
     // The least error of a half-edge the vertex may collapse along, as a distance.
     double best = Never;
     auto consider = [&](std::int32_t u) {
+      if (this->IsHub(u))
+      {
+        return;
+      }
       const double error = this->HalfEdgeError(v, u);
       if (error < best || (error == best && u < state.Best))
       {
@@ -429,6 +442,10 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double
   const Vec3& p = this->Mesh.Point(v);
   work.Options.clear();
   auto consider = [&](std::int32_t u) {
+    if (this->IsHub(u))
+    {
+      return;
+    }
     const double length = (this->Mesh.Point(u) - p).squaredNorm();
     if (quadric)
     {
@@ -561,16 +578,19 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
   chosen.clear();
   std::int64_t expected = 0;
   // Owner holds byte stamps (1–255), so that it stays in cache; cleared when they wrap.
-  const std::uint8_t round = static_cast<std::uint8_t>((this->Round - 1) % 255 + 1);
+  const std::uint8_t round = this->RoundStamp();
   if (round == 1)
   {
     std::fill(this->Owner.begin(), this->Owner.end(), std::uint8_t(0));
+    std::fill(this->Touched.begin(), this->Touched.end(), std::uint8_t(0));
   }
+  this->SharedHubs.clear();
   const std::int64_t end = std::min<std::int64_t>(window, static_cast<std::int64_t>(sorted.size()));
   for (std::int64_t first = 0; first < end && expected < need; first += RingBlock)
   {
     // The other two corners of each candidate's triangles, gathered concurrently a block at a
-    // time, so the greedy pass below, serial, reads flat lists instead of walking the mesh.
+    // time, so the greedy pass below, serial, reads flat lists instead of walking the mesh;
+    // hubs as ~w.
     const std::int64_t count = std::min(RingBlock, end - first);
     this->RingStart.resize(static_cast<std::size_t>(count) + 1);
     this->RingStart[0] = 0;
@@ -584,22 +604,22 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
       {
         std::int32_t* out = this->Rings.data() + this->RingStart[i];
         this->Mesh.ForEachCorner(sorted[first + i], [&](std::int32_t, std::int32_t next, std::int32_t previous) {
-          *out++ = next;
-          *out++ = previous;
+          *out++ = this->IsHub(next) ? ~next : next;
+          *out++ = this->IsHub(previous) ? ~previous : previous;
         });
       }
     }, 20 * count);
-    // Free when no vertex of its triangles is near a vertex taken before; then its triangles'
-    // vertices are marked as near it.
+    // Free when no vertex of its triangles is near a vertex taken before (a hub may be, unless
+    // it is taken itself); then its triangles' vertices are marked as near it, hubs as touched.
     for (std::int64_t i = 0; i < count && expected < need; ++i)
     {
       const std::int32_t v = sorted[first + i];
       const std::int32_t* ring = this->Rings.data() + this->RingStart[i];
       const std::int32_t* ringEnd = this->Rings.data() + this->RingStart[i + 1];
-      bool free = this->Owner[v] != round;
+      bool free = this->Owner[v] != round && !(ringEnd - ring >= 2 * HubTriangles && this->Touched[v] == round);
       for (const std::int32_t* w = ring; free && w != ringEnd; ++w)
       {
-        free = this->Owner[*w] != round;
+        free = this->Owner[*w >= 0 ? *w : ~*w] != round;
       }
       if (!free)
       {
@@ -609,7 +629,15 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
       this->Owner[v] = round;
       for (const std::int32_t* w = ring; w != ringEnd; ++w)
       {
-        this->Owner[*w] = round;
+        if (*w >= 0)
+        {
+          this->Owner[*w] = round;
+        }
+        else if (this->Touched[~*w] != round)
+        {
+          this->Touched[~*w] = round;
+          this->SharedHubs.push_back(~*w);
+        }
       }
       expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
     }
@@ -685,6 +713,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   this->Importance.assign(n, Never);
   this->Types.assign(n, DecimationVertexType::Complex);
   this->Owner.assign(n, 0);
+  this->Touched.assign(n, 0);
   this->Listed.assign(n, 0);
   this->Into.assign(n, -1);
   this->BestTarget.assign(n, -1);
@@ -792,8 +821,8 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     // The neighbours of each removed vertex are the vertices whose triangles change: listed per
     // removal in its own slice (two per triangle around it, each vertex once, the repeats -1),
     // concurrently, while the survivor inherits what the removed vertex measured. The stars of a
-    // round's vertices share no vertex, so survivors are distinct and no vertex is listed in two
-    // slices.
+    // round's vertices share no vertex but hubs, so survivors are distinct and no other vertex is
+    // listed in two slices; the hubs are listed after the slices, once each.
     applied.clear();
     slices.assign(chosen.size() + 1, 0);
     for (std::int64_t i = 0; i < count; ++i)
@@ -809,6 +838,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       slices[i + 1] = slices[i] + (planned[i] ? 2 * this->Mesh.NumberOfTrianglesAround(chosen[i]) : 0);
     }
     neighbours.resize(static_cast<std::size_t>(slices[count]));
+    const std::uint8_t stamp = this->RoundStamp();
     this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t i = begin; i < end; ++i)
       {
@@ -820,6 +850,11 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         const std::int32_t kept = plans[i].Vertices[0];
         std::int32_t* out = neighbours.data() + slices[i];
         auto list = [&](std::int32_t w) {
+          if (this->Touched[w] == stamp)
+          {
+            *out++ = -1;
+            return;
+          }
           *out++ = this->Listed[w] != this->Round ? w : -1;
           this->Listed[w] = this->Round;
           this->Into[w] = kept;
@@ -845,6 +880,12 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
         this->Gone[v] = 1;
       }
     }, 40 * count);
+    for (const std::int32_t hub : this->SharedHubs)
+    {
+      neighbours.push_back(hub);
+      this->Listed[hub] = this->Round;
+      this->Into[hub] = hub; // evaluated in full
+    }
     ++result.Rounds;
     if (applied.empty())
     {
@@ -870,7 +911,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       evaluate(nullptr, n);
       continue;
     }
-    this->Mesh.ApplyIndependent(applied, this->Context);
+    this->Mesh.ApplyIndependent(applied, this->Context, this->SharedHubs);
     reevaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));

@@ -18,7 +18,11 @@
  *   by vertex id.
  * - Rounds (§5.5): in bucket order, a vertex joins the round's set when no vertex within one edge
  *   of it is within one edge of a vertex already taken, so the triangles around two taken vertices
- *   never share an edge (Fig. 5-6) and no two removals touch the same data. Every taken vertex is
+ *   never share an edge (Fig. 5-6) and no two removals touch the same data. Hubs (vertices of 32
+ *   triangles or more, the centres of fans) are the exception: the stars of a round's vertices
+ *   may share them (still no edge), and a hub never survives a collapse, so that a round takes
+ *   many vertices around one instead of a single one; the engine updates the hubs' triangle
+ *   lists after the concurrent removals. Every taken vertex is
  *   then removed concurrently, without locks, by collapsing one of its half-edges into a
  *   neighbour: the legal one of least area change among those that turn no triangle by more than
  *   MaximumNormalDeviation (§5.3), or the shortest legal one (§5.5 step 6). Boundary and

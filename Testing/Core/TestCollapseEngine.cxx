@@ -349,6 +349,34 @@ void CollapseUndoRedo()
   CHECK(Take(e.Mesh) == after);
 }
 
+void IndependentCollapsesShareHubs()
+{
+  // Half-edge collapses along the rim of a closed double fan, every fourth rim vertex into its
+  // next: their stars share only the two centres. Applied concurrently with the centres shared,
+  // they give the mesh the same collapses give one by one.
+  const int n = 64;
+  const Mesh fan = Fan(n, true);
+  Engine concurrent(fan), serial(fan);
+  std::vector<CollapsePlan> plans;
+  for (int i = 0; i < n; i += 4)
+  {
+    const CollapsePlan plan = serial.Plan({ 1 + i + 1, 1 + i }, serial.Point(1 + i + 1));
+    CHECK(serial.Mesh.IsLegal(plan));
+    plans.push_back(plan);
+  }
+  for (const CollapsePlan& plan : plans)
+  {
+    serial.Mesh.Apply(plan);
+  }
+  const std::vector<std::int32_t> hubs = { concurrent.Id[0], concurrent.Id[n + 1] };
+  CHECK(concurrent.Mesh.ApplyIndependent(plans, meshsimp_test::Threaded<meshsimp::ExecutionContext>(2), hubs) ==
+    2 * static_cast<std::int64_t>(plans.size()));
+  CHECK(Take(concurrent.Mesh) == Take(serial.Mesh));
+  CHECK(concurrent.Mesh.NumberOfTrianglesAround(hubs[0]) == n - n / 4);
+  CHECK(concurrent.Mesh.NumberOfTrianglesAround(hubs[1]) == n - n / 4);
+  CHECK(ClosedManifold(concurrent.Mesh));
+}
+
 void AttributesFollowWeights()
 {
   // A value linear in x, interpolated with the weights of a placement at the edge's midpoint,
@@ -737,6 +765,7 @@ int main()
     { "AngleGuardRejectsNewSlivers", AngleGuardRejectsNewSlivers },
     { "LockedVerticesStay", LockedVerticesStay },
     { "CollapseUndoRedo", CollapseUndoRedo },
+    { "IndependentCollapsesShareHubs", IndependentCollapsesShareHubs },
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "PlaneBoundMeasuresMergedPlanes", PlaneBoundMeasuresMergedPlanes },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
