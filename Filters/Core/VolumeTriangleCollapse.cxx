@@ -23,7 +23,7 @@ constexpr double NormalFactorFloor = 0.01;
 /// of the triangle's (measured: a half, the share per removed triangle, made more slivers).
 constexpr double EdgeErrorShare = 0.25;
 /// Corners with more triangles count in a triangle's normal factor only through the other
-/// corners (ForEachAdjacent).
+/// corners (ForEachAdjacent), and keep their sums (UpdateVertex) by differences.
 constexpr std::int32_t FanLimit = 256;
 /// A collapse is flat when its error is below this fraction of Σ (plane weights) · (longest
 /// edge)²: its point lies within about 3·10⁻⁴ edge lengths of the planes (RMS).
@@ -122,6 +122,11 @@ private:
   /// The edge of t from corner k to the next.
   void CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const;
   void UpdateVertex(std::int32_t v);
+  /// Adds (sign 1) or takes back (sign −1) what the triangles around the given vertices hold at
+  /// their corners of more than FanLimit triangles (other than those vertices) to those corners'
+  /// sums: a collapse next to a fan's centre changes a few of its triangles, and summing all of
+  /// them again after every such collapse would cost the square of the fan's size.
+  void UpdateFanSums(const std::int32_t* vertices, int count, double sign);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
   bool OntoCheapestCorner(Candidate& candidate) const;
@@ -211,6 +216,43 @@ void VolumeCollapser::UpdateVertex(std::int32_t v)
   // Eq. (6): 2π minus the angles around an interior vertex, π around a boundary one.
   this->Deficit[v] = (this->Mesh.OnBoundary(v) ? Pi : 2.0 * Pi) - angles;
   this->VertexArea[v] = area;
+}
+
+void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, double sign)
+{
+  for (int i = 0; i < count; ++i)
+  {
+    this->Mesh.ForEachTriangle(vertices[i], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      for (int j = 0; j < i; ++j)
+      {
+        if (tri[0] == vertices[j] || tri[1] == vertices[j] || tri[2] == vertices[j])
+        {
+          return; // visited around an earlier vertex
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::int32_t c = tri[k];
+        if (this->Mesh.NumberOfTrianglesAround(c) <= FanLimit ||
+          std::find(vertices, vertices + count, c) != vertices + count)
+        {
+          continue;
+        }
+        Quadric q = this->TriangleQuadrics[t];
+        if (sign > 0.0)
+        {
+          this->VertexQuadrics[c] += q;
+        }
+        else
+        {
+          this->VertexQuadrics[c] -= q;
+        }
+        this->Deficit[c] -= sign * this->Angles[3 * t + k];
+        this->VertexArea[c] += sign * this->Areas[t];
+      }
+    });
+  }
 }
 
 void VolumeCollapser::UpdateQuadric(std::int32_t t)
@@ -624,8 +666,12 @@ void VolumeCollapser::UpdateAround(std::int32_t kept)
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->UpdateQuadric(t); });
   for (const std::int32_t v : this->Ring)
   {
-    this->UpdateVertex(v);
+    if (v == kept || this->Mesh.NumberOfTrianglesAround(v) <= FanLimit)
+    {
+      this->UpdateVertex(v);
+    }
   }
+  this->UpdateFanSums(&kept, 1, 1.0); // Commit took back what they held before
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->Requeue(t); });
 }
 
@@ -791,6 +837,7 @@ void VolumeCollapser::Commit(const CollapsePlan& plan, double cost, VolumeCollap
   {
     this->InputPlanes[kept] += this->InputPlanes[plan.Vertices[i]];
   }
+  this->UpdateFanSums(plan.Vertices, plan.Count, -1.0);
   this->Mesh.Apply(plan, this->Options.KeepUndo);
   this->VertexError[kept] = error;
   result.SquareVolumeError += cost;
