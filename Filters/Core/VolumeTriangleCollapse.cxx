@@ -162,6 +162,7 @@ private:
   std::vector<double> Deficit;           // angle deficit of each vertex (eq. 6)
   std::vector<double> VertexArea;        // area of its adjacent triangles, A_v
   std::vector<std::uint8_t> Moved;       // a collapse gave the vertex a new position
+  bool HasFans = false;                  // a vertex has more than FanLimit triangles
   double TotalArea = 0.0;
   double GuardAngle = 0.0; // the angle guard in force (lowered when it refuses every collapse)
   CollapseHeap Heap;
@@ -220,6 +221,10 @@ void VolumeCollapser::UpdateVertex(std::int32_t v)
 
 void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, double sign)
 {
+  if (!this->HasFans)
+  {
+    return;
+  }
   for (int i = 0; i < count; ++i)
   {
     this->Mesh.ForEachTriangle(vertices[i], [&](std::int32_t t) {
@@ -672,6 +677,7 @@ void VolumeCollapser::UpdateAround(std::int32_t kept)
     }
   }
   this->UpdateFanSums(&kept, 1, 1.0); // Commit took back what they held before
+  this->HasFans = this->HasFans || this->Mesh.NumberOfTrianglesAround(kept) > FanLimit;
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) { this->Requeue(t); });
 }
 
@@ -772,6 +778,10 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
       this->UpdateVertex(static_cast<std::int32_t>(v));
     }
   }, 8 * static_cast<std::int64_t>(n));
+  for (std::int32_t v = 0; v < n && !this->HasFans; ++v)
+  {
+    this->HasFans = this->Mesh.NumberOfTrianglesAround(v) > FanLimit;
+  }
   for (const double a : this->Areas)
   {
     this->TotalArea += a;
