@@ -377,6 +377,12 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
   for (int i = 0; i < plan.Count; ++i)
   {
     const std::int32_t s = plan.Vertices[i];
+    // A vertex that stays where it is (the kept end of a half-edge) changes only the triangles
+    // it shares with the other merged vertices, and those are removed.
+    if (x == this->Points[s])
+    {
+      continue;
+    }
     bool ok = true;
     this->ForEachTriangle(s, [&](std::int32_t t) {
       if (!ok)

@@ -25,7 +25,8 @@
  *   interior; no vertex falls below three neighbours;
  * - no fold-over, by the plane-side test of paper 001 §5.3: the new position stays on the inner
  *   side of the plane through every opposite edge perpendicular to its triangle;
- * - no degenerate triangle: every changed triangle keeps a non-zero area;
+ * - no degenerate triangle: every changed triangle keeps a non-zero area (a merged vertex that
+ *   stays where it is, the kept end of a half-edge, changes none of its own);
  * - optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
  *   neighbourhood already had one as small, so simplification does not breed slivers.
  */
