@@ -268,6 +268,16 @@ void FoldOverAndDegenerateRejected()
   // So is one a hair inside it (1e-13 off the edge (6, 7)), which the plane-side test lets pass.
   CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.25 + 1e-13, 0.0))));
   CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.3, 0.0))));
+
+  // Vertex 14 moved onto the line from 13 to 19: the triangle (13, 14, 19) has no area. Collapsed
+  // into 13, which stays, the centre leaves that triangle as it is: legal. Moved, vertex 13 would
+  // change it: rejected.
+  Mesh flat = Grid(4);
+  flat.Points[3 * 14] = 0.875;
+  flat.Points[3 * 14 + 1] = 0.625;
+  Engine d(flat);
+  CHECK(d.Mesh.IsLegal(d.Plan({ 13, 12 }, d.Point(13))));
+  CHECK(!d.Mesh.IsLegal(d.Plan({ 13, 12 }, 0.5 * (d.Point(12) + d.Point(13)))));
 }
 
 void AngleGuardRejectsNewSlivers()
