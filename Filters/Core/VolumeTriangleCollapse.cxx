@@ -244,14 +244,13 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
         {
           continue;
         }
-        Quadric q = this->TriangleQuadrics[t];
         if (sign > 0.0)
         {
-          this->VertexQuadrics[c] += q;
+          this->VertexQuadrics[c] += this->TriangleQuadrics[t];
         }
         else
         {
-          this->VertexQuadrics[c] -= q;
+          this->VertexQuadrics[c] -= this->TriangleQuadrics[t];
         }
         this->Deficit[c] -= sign * this->Angles[3 * t + k];
         this->VertexArea[c] += sign * this->Areas[t];
