@@ -773,19 +773,19 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       measure(w, work, false);
     });
   };
-  // The first time, each star serves both the vertex's quadric (Quadric: the only one its
+  // The first time under Quadric, each star serves both the vertex's quadric (the only one its
   // evaluation reads; the others' own errors are still 0) and its evaluation.
   const bool quadric = this->Options.Measure == ImportanceMeasure::Quadric;
   this->Quadrics.assign(quadric ? n : 0, Quadric());
   this->OwnError.assign(quadric ? n : 0, 0.0);
   this->ForEachInParts(n, 600, [&](std::int64_t i, Workspace& work) {
     const std::int32_t v = static_cast<std::int32_t>(i);
-    this->CollectStar(v, work);
     if (quadric)
     {
+      this->CollectStar(v, work);
       this->InitializeQuadric(v, work);
     }
-    measure(v, work, true);
+    measure(v, work, quadric);
   });
   if (!this->Context.Report(0.05))
   {
