@@ -42,12 +42,19 @@ void PlaneDistanceBound::Build(const CollapseMesh& mesh)
       {
         this->Next[head] = corner;
       }
-      int shared = 0;
-      mesh.ForEachTriangleOnEdge(v, w, [&](std::int32_t j) { shared += j != t ? 1 : 0; });
-      const Eigen::Vector3d edge = mesh.Point(w) - mesh.Point(v);
-      const Eigen::Vector3d side = edge.cross(normal);
+      // Around an interior vertex (a closed fan) every edge has a second triangle.
+      int shared = mesh.Class(v) == VertexClass::Interior || mesh.Class(w) == VertexClass::Interior ? 1 : 0;
+      if (shared == 0)
+      {
+        mesh.ForEachTriangleOnEdge(v, w, [&](std::int32_t j) { shared += j != t ? 1 : 0; });
+      }
+      if (shared > 0)
+      {
+        continue;
+      }
+      const Eigen::Vector3d side = (mesh.Point(w) - mesh.Point(v)).cross(normal);
       const double length = side.norm();
-      if (shared == 0 && length > 0.0)
+      if (length > 0.0)
       {
         this->EdgePlaneOf[corner] = static_cast<std::int32_t>(this->EdgePlanes.size());
         this->EdgePlanes.emplace_back();
