@@ -468,26 +468,27 @@ int main(int argc, char* argv[])
       strips->GetCurrentCell(size, ids);
       inputTriangles += size >= 3 ? size - 2 : 0;
     }
-    // Each method's own error figure: the largest cluster error, or the total squared volume.
+    // Each method's own figures: the largest cluster error (the octree's always, the collapse
+    // filters' with an error bound), the total squared volume, the rounds.
+    auto field = [](const char* name, double value) {
+      char number[64];
+      std::snprintf(number, sizeof(number), "%.9g", value);
+      return std::string(", \"") + name + "\": " + number;
+    };
     std::string error;
-    char number[64];
     if (auto* octree = vtkOctreeVertexClustering::SafeDownCast(filter))
     {
-      std::snprintf(number, sizeof(number), "%.9g", octree->GetAchievedMaximumError());
-      error = std::string(", \"max_error\": ") + number;
+      error = field("max_error", octree->GetAchievedMaximumError());
     }
     else if (auto* volume = vtkVolumeTriangleCollapse::SafeDownCast(filter))
     {
-      std::snprintf(number, sizeof(number), "%.9g", volume->GetSquareVolumeError());
-      error = std::string(", \"square_volume_error\": ") + number;
-      std::snprintf(number, sizeof(number), "%.9g", volume->GetAchievedMaximumError());
-      error += maxError >= 0.0 ? std::string(", \"max_error\": ") + number : std::string();
+      error = field("square_volume_error", volume->GetSquareVolumeError()) +
+        (maxError >= 0.0 ? field("max_error", volume->GetAchievedMaximumError()) : std::string());
     }
     else if (auto* parallel = vtkParallelDecimation::SafeDownCast(filter))
     {
-      error = ", \"rounds\": " + std::to_string(parallel->GetRounds());
-      std::snprintf(number, sizeof(number), "%.9g", parallel->GetAchievedMaximumError());
-      error += maxError >= 0.0 ? std::string(", \"max_error\": ") + number : std::string();
+      error = ", \"rounds\": " + std::to_string(parallel->GetRounds()) +
+        (maxError >= 0.0 ? field("max_error", parallel->GetAchievedMaximumError()) : std::string());
     }
     std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
                 "\"time_ms\": %.3f, \"threads\": %d%s}\n",
