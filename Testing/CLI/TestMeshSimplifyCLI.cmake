@@ -1,11 +1,16 @@
 # meshsimplify end to end: a run that must succeed with valid JSON, and runs that must fail with
 # a one-line message and a non-zero exit.
-execute_process(
-  COMMAND "${TOOL}" --method octree --reduction 0.9 --threads 2 --json "${INPUT}" "${OUTPUT}"
-  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT code EQUAL 0)
-  message(FATAL_ERROR "meshsimplify failed (${code}): ${err}")
-endif ()
+
+# meshsimplify with the given arguments, which must succeed; its standard output in `out`.
+function (run_tool)
+  execute_process(COMMAND "${TOOL}" ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE output ERROR_VARIABLE err)
+  if (NOT code EQUAL 0)
+    message(FATAL_ERROR "meshsimplify ${ARGN} failed (${code}): ${err}")
+  endif ()
+  set(out "${output}" PARENT_SCOPE)
+endfunction ()
+
+run_tool(--method octree --reduction 0.9 --threads 2 --json "${INPUT}" "${OUTPUT}")
 foreach (key IN ITEMS method input_triangles output_triangles time_ms threads max_error)
   string(JSON value ERROR_VARIABLE json_error GET "${out}" ${key})
   if (json_error)
@@ -22,12 +27,7 @@ if (NOT EXISTS "${OUTPUT}")
 endif ()
 
 # The volume method: counts within 1 %, its own error figure.
-execute_process(
-  COMMAND "${TOOL}" --method volume --target-triangles 1000 --json "${INPUT}" "${OUTPUT}"
-  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT code EQUAL 0)
-  message(FATAL_ERROR "meshsimplify --method volume failed (${code}): ${err}")
-endif ()
+run_tool(--method volume --target-triangles 1000 --json "${INPUT}" "${OUTPUT}")
 string(JSON output_triangles GET "${out}" output_triangles)
 string(JSON square_volume_error GET "${out}" square_volume_error)
 if (output_triangles LESS 990 OR output_triangles GREATER 1010 OR NOT square_volume_error GREATER 0)
@@ -36,12 +36,7 @@ endif ()
 
 # The parallel method: counts within 2 %, the same output with 1 and 2 threads, its rounds.
 foreach (threads IN ITEMS 1 2)
-  execute_process(
-    COMMAND "${TOOL}" --method parallel --reduction 0.9 --threads ${threads} --json "${INPUT}" "${OUTPUT}.${threads}.off"
-    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (NOT code EQUAL 0)
-    message(FATAL_ERROR "meshsimplify --method parallel failed (${code}): ${err}")
-  endif ()
+  run_tool(--method parallel --reduction 0.9 --threads ${threads} --json "${INPUT}" "${OUTPUT}.${threads}.off")
   string(JSON output_triangles GET "${out}" output_triangles)
   string(JSON rounds GET "${out}" rounds)
   if (output_triangles LESS 568 OR output_triangles GREATER 592 OR NOT rounds GREATER 0)
@@ -57,12 +52,7 @@ endif ()
 # An error bound for the collapse methods: the largest distance reached, in input units, within
 # 1 % of the cow's bounding-box diagonal (1.2171), and far fewer triangles.
 foreach (method IN ITEMS volume parallel)
-  execute_process(
-    COMMAND "${TOOL}" --method ${method} --max-error 0.01 --relative-error --json "${INPUT}" "${OUTPUT}"
-    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (NOT code EQUAL 0)
-    message(FATAL_ERROR "meshsimplify --method ${method} --max-error failed (${code}): ${err}")
-  endif ()
+  run_tool(--method ${method} --max-error 0.01 --relative-error --json "${INPUT}" "${OUTPUT}")
   string(JSON output_triangles GET "${out}" output_triangles)
   string(JSON max_error GET "${out}" max_error)
   if (output_triangles GREATER 2000 OR NOT max_error GREATER 0.006 OR max_error GREATER 0.012171)
