@@ -37,6 +37,15 @@
 namespace vtkMeshSimplificationHelpers
 {
 
+namespace
+{
+std::string TooManyTriangles(std::int64_t count)
+{
+  return "the input has " + std::to_string(count) + " triangles, more than the " +
+    std::to_string(meshsimp::MaximumTriangles) + " the filters take";
+}
+}
+
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error)
 {
   out = TriangleInput();
@@ -86,9 +95,9 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   {
     // Triangles only, the common case: the connectivity is viewed in place.
     const vtkIdType count = polyCells->GetNumberOfCells();
-    if (count >= std::numeric_limits<std::int32_t>::max())
+    if (count > meshsimp::MaximumTriangles)
     {
-      error = "the input has more than 2^31 - 1 triangles";
+      error = TooManyTriangles(count);
       return false;
     }
     if (polyCells->IsStorage64Bit())
@@ -154,9 +163,9 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
       }
     }
   }
-  if (out.Triangles.size() / 3 >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+  if (static_cast<std::int64_t>(out.SourceCells.size()) > meshsimp::MaximumTriangles)
   {
-    error = "the input has more than 2^31 - 1 triangles";
+    error = TooManyTriangles(static_cast<std::int64_t>(out.SourceCells.size()));
     return false;
   }
   out.View.Triangles = out.Triangles.data();

@@ -486,7 +486,7 @@ void CollapseMesh::SetSpan(std::int32_t v, const std::vector<std::int32_t>& tria
   this->LiveRefs += size - this->Count[v];
   if (size > this->Count[v])
   {
-    this->Start[v] = static_cast<std::int32_t>(this->Refs.size());
+    this->Start[v] = static_cast<std::int64_t>(this->Refs.size());
     this->Refs.insert(this->Refs.end(), triangles.begin(), triangles.end());
   }
   else
@@ -502,10 +502,10 @@ void CollapseMesh::CompactRefs()
   refs.reserve(static_cast<std::size_t>(this->LiveRefs));
   for (std::int32_t v = 0; v < this->NumberOfPoints(); ++v)
   {
-    const std::int32_t start = static_cast<std::int32_t>(refs.size());
+    const std::int64_t start = static_cast<std::int64_t>(refs.size());
     this->ForEachTriangle(v, [&](std::int32_t t) { refs.push_back(t); });
     this->Start[v] = start;
-    this->Count[v] = static_cast<std::int32_t>(refs.size()) - start;
+    this->Count[v] = static_cast<std::int32_t>(static_cast<std::int64_t>(refs.size()) - start);
   }
   this->Refs = std::move(refs);
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
@@ -687,7 +687,7 @@ std::int64_t CollapseMesh::ApplyIndependent(
     }
     const std::int32_t kept = plan.Vertices[0];
     this->LiveRefs += sizes[i] - this->Count[kept];
-    this->Start[kept] = static_cast<std::int32_t>(base + offsets[i]);
+    this->Start[kept] = base + offsets[i];
     this->Count[kept] = sizes[i];
     this->LiveRefs -= droppedRefs[i];
     removed += removedCounts[i];

@@ -236,7 +236,9 @@ private:
   std::int64_t AliveCount = 0;
   std::vector<VertexClass> Classes;
   std::vector<std::uint8_t> Locked;
-  std::vector<std::int32_t> Start, Count; // per vertex, into Refs
+  std::vector<std::int64_t> Start; // per vertex, into Refs (which grows past 2^31 entries on
+                                   // inputs of over 238 million triangles before a compaction)
+  std::vector<std::int32_t> Count;
   std::vector<std::int32_t> Refs;
   std::int64_t LiveRefs = 0;
   std::vector<std::uint8_t> Shared; // ApplyIndependent: spans updated after the concurrent merges

@@ -3,7 +3,8 @@
  * @file TriangleMesh.h
  * @brief Triangle-mesh views and adjacency in flat arrays, shared by all filters.
  *
- * Indices are 32-bit: the core serves meshes up to 2^31 − 1 points and triangles. Algorithms
+ * Indices are 32-bit: the core serves meshes of up to 2^31 − 1 points and MaximumTriangles
+ * triangles (the adjacency counts three corners per triangle in 32 bits). Algorithms
  * take an input view, make a compact, spatially ordered copy of its usable part and walk its
  * vertex→triangle adjacency: a CSR of corners (offsets + one {triangle, next, previous} per
  * incident triangle) built by counting, so it costs two flat arrays and no per-vertex
@@ -19,11 +20,16 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
 namespace meshsimp
 {
+
+/// The most triangles an input may have (usable or not): their corners, three each, are
+/// counted in 32 bits. Callers check it; the VTK filters refuse larger inputs with an error.
+constexpr std::int64_t MaximumTriangles = std::numeric_limits<std::int32_t>::max() / 3;
 
 /// A read-only view of an indexed triangle mesh: 3 coordinates per point, 3 ids per triangle.
 /// Input meshes may give single-precision points (FloatPoints instead of Points) and 64-bit ids
