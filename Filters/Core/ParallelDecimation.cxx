@@ -31,40 +31,109 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
   std::size_t limit, const ExecutionContext& context)
 {
   // One bucket per vertex on average; a counting sort by bucket, stable in the given order. The
-  // buckets are found concurrently, counted and filled serially.
+  // buckets are found concurrently, with a histogram of at most 4096 coarse buckets per part,
+  // which tells the ones that hold the first `limit` vertices: only their vertices are sorted
+  // serially, in a table that stays in cache.
   const std::size_t count = vertices.size();
   const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
-  buckets.assign(static_cast<std::size_t>(bucketCount) + 1, 0);
-  order.resize(2 * count);
-  std::int32_t* bucketOf = order.data() + count; // the second half holds each vertex's bucket
-  context.For(static_cast<std::int64_t>(count), [&](std::int64_t first, std::int64_t last) {
-    for (std::int64_t i = first; i < last; ++i)
+  int shift = 0;
+  while (((bucketCount - 1) >> shift) >= 4096)
+  {
+    ++shift;
+  }
+  const std::int32_t coarseCount = ((bucketCount - 1) >> shift) + 1;
+  const std::int64_t parts =
+    std::max<std::int64_t>(1, std::min<std::int64_t>(context.Threads, static_cast<std::int64_t>(count) / 4096));
+  std::vector<std::int64_t> coarse(static_cast<std::size_t>(parts * coarseCount), 0);
+  // Working memory, grown but never shrunk (no refill each round): each vertex's bucket, then
+  // the counting table and the gathered vertices with their buckets.
+  if (buckets.size() < count)
+  {
+    buckets.resize(count);
+  }
+  std::int32_t* bucketOf = buckets.data();
+  context.For(parts, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t part = first; part < last; ++part)
     {
-      const double x = largest > 0.0 ? importance[vertices[i]] / largest : 0.0;
-      bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
+      std::int64_t* histogram = coarse.data() + part * coarseCount;
+      const std::int64_t size = static_cast<std::int64_t>(count);
+      for (std::int64_t i = size * part / parts, end = size * (part + 1) / parts; i < end; ++i)
+      {
+        const double x = largest > 0.0 ? importance[vertices[i]] / largest : 0.0;
+        bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
+        ++histogram[bucketOf[i] >> shift];
+      }
     }
   }, 10 * static_cast<std::int64_t>(count));
-  for (std::size_t i = 0; i < count; ++i)
+  // The coarse bucket where the first `limit` vertices end: the vertices of it and the ones
+  // before are gathered, each part's in its place, concurrently; then counted and placed.
+  std::int64_t total = 0;
+  std::int32_t lastCoarse = coarseCount - 1;
+  for (std::int32_t c = 0; c < coarseCount && lastCoarse == coarseCount - 1; ++c)
   {
-    ++buckets[bucketOf[i] + 1];
+    for (std::int64_t part = 0; part < parts; ++part)
+    {
+      total += coarse[part * coarseCount + c];
+    }
+    if (static_cast<std::size_t>(total) >= limit)
+    {
+      lastCoarse = c;
+    }
+  }
+  std::vector<std::int64_t> gatheredAt(static_cast<std::size_t>(parts) + 1, 0);
+  for (std::int64_t part = 0; part < parts; ++part)
+  {
+    const std::int64_t* histogram = coarse.data() + part * coarseCount;
+    gatheredAt[part + 1] = gatheredAt[part] + std::accumulate(histogram, histogram + lastCoarse + 1, std::int64_t(0));
+  }
+  const std::int32_t range = std::min(bucketCount, (lastCoarse + 1) << shift);
+  const std::int64_t gathered = gatheredAt[parts];
+  const std::size_t needed = count + static_cast<std::size_t>(range + 1 + 2 * gathered);
+  if (buckets.size() < needed)
+  {
+    buckets.resize(needed);
+  }
+  bucketOf = buckets.data();
+  std::int32_t* table = bucketOf + count;
+  std::fill(table, table + range + 1, 0);
+  std::int32_t* gatheredBucket = table + range + 1;
+  std::int32_t* gatheredVertex = gatheredBucket + gathered;
+  context.For(parts, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t part = first; part < last; ++part)
+    {
+      std::int64_t at = gatheredAt[part];
+      const std::int64_t size = static_cast<std::int64_t>(count);
+      for (std::int64_t i = size * part / parts, end = size * (part + 1) / parts; i < end; ++i)
+      {
+        if (bucketOf[i] < range)
+        {
+          gatheredBucket[at] = bucketOf[i];
+          gatheredVertex[at++] = vertices[i];
+        }
+      }
+    }
+  }, 2 * static_cast<std::int64_t>(count));
+  for (std::int64_t j = 0; j < gathered; ++j)
+  {
+    ++table[gatheredBucket[j] + 1];
   }
   std::int32_t last = bucketCount - 1; // the last bucket needed for the first `limit` vertices
-  for (std::int32_t b = 0; b < bucketCount; ++b)
+  for (std::int32_t b = 0; b < range; ++b)
   {
-    buckets[b + 1] += buckets[b];
-    if (static_cast<std::size_t>(buckets[b + 1]) >= limit && last == bucketCount - 1)
+    table[b + 1] += table[b];
+    if (static_cast<std::size_t>(table[b + 1]) >= limit && last == bucketCount - 1)
     {
       last = b;
     }
   }
-  for (std::size_t i = 0; i < count; ++i)
+  order.resize(static_cast<std::size_t>(table[last + 1]));
+  for (std::int64_t j = 0; j < gathered; ++j)
   {
-    if (bucketOf[i] <= last)
+    if (gatheredBucket[j] <= last)
     {
-      order[buckets[bucketOf[i]]++] = vertices[i];
+      order[table[gatheredBucket[j]]++] = gatheredVertex[j];
     }
   }
-  order.resize(std::min<std::size_t>(count, static_cast<std::size_t>(buckets[last])));
 }
 
 namespace
@@ -594,10 +663,13 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     const std::int64_t count = std::min(RingBlock, end - first);
     this->RingStart.resize(static_cast<std::size_t>(count) + 1);
     this->RingStart[0] = 0;
-    for (std::int64_t i = 0; i < count; ++i)
-    {
-      this->RingStart[i + 1] = this->RingStart[i] + 2 * this->Mesh.NumberOfTrianglesAround(sorted[first + i]);
-    }
+    this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
+      for (std::int64_t i = begin; i < last; ++i)
+      {
+        this->RingStart[i + 1] = 2 * this->Mesh.NumberOfTrianglesAround(sorted[first + i]);
+      }
+    }, 5 * count);
+    std::partial_sum(this->RingStart.begin(), this->RingStart.end(), this->RingStart.begin());
     this->Rings.resize(static_cast<std::size_t>(this->RingStart[count]));
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)

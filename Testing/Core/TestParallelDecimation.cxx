@@ -90,10 +90,11 @@ void BucketFunction()
 void BucketOrderKeepsOrderWithinBucketWidth()
 {
   // Importances spread over many scales: after the O(N) ordering a vertex of larger importance
-  // comes first only when both share a bucket, and within a bucket vertex order is kept.
+  // comes first only when both share a bucket, and within a bucket vertex order is kept. Enough
+  // vertices for several parts and coarse buckets of several fine ones each.
   std::mt19937 random(7);
   std::lognormal_distribution<double> spread(0.0, 3.0);
-  const int n = 5000;
+  const int n = 60000;
   std::vector<double> importance(n);
   std::vector<std::int32_t> vertices;
   double largest = 0.0;
@@ -129,16 +130,23 @@ void BucketOrderKeepsOrderWithinBucketWidth()
   CHECK(bucket(order.front()) == 0);
   CHECK(importance[order.back()] == largest);
 
-  // The buckets found on three threads give the same order, whole or cut at a limit.
-  std::vector<std::int32_t> threaded, limited, serialLimited;
+  // The buckets found on three threads give the same order, whole or cut at a limit: the
+  // whole buckets that hold the first `limit` vertices.
+  std::vector<std::int32_t> threaded;
   meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, threaded, buckets,
     static_cast<std::size_t>(-1), meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
   CHECK(threaded == order);
-  meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, serialLimited, buckets, 100);
-  meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, limited, buckets, 100,
-    meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
-  CHECK(limited == serialLimited && limited.size() >= 100 && limited.size() < order.size());
-  CHECK(std::equal(limited.begin(), limited.end(), order.begin()));
+  for (const std::size_t limit : { std::size_t(1), std::size_t(100), std::size_t(4000), vertices.size() })
+  {
+    std::vector<std::int32_t> limited, serialLimited;
+    meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, serialLimited, buckets, limit);
+    meshsimp::BucketOrder(importance.data(), vertices, largest, 0.02, 0.8, limited, buckets, limit,
+      meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
+    CHECK(limited == serialLimited && limited.size() >= limit);
+    CHECK(std::equal(limited.begin(), limited.end(), order.begin()));
+    CHECK(limited.size() == order.size() || bucket(order[limited.size()]) > bucket(limited.back()));
+    CHECK(limit == vertices.size() || limited.size() < order.size());
+  }
 }
 
 void RoundsAreSuperIndependent()
