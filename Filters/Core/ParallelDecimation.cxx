@@ -32,8 +32,8 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
 {
   // One bucket per vertex on average; a counting sort by bucket, stable in the given order. The
   // buckets are found concurrently, with a histogram of at most 4096 coarse buckets per part,
-  // which tells the ones that hold the first `limit` vertices: only their vertices are sorted
-  // serially, in a table that stays in cache.
+  // which tells the ones that hold the first `limit` vertices: only their vertices are counted
+  // and placed serially, in a table of those buckets alone.
   const std::size_t count = vertices.size();
   const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
   int shift = 0;
