@@ -526,9 +526,13 @@ int CollapseMesh::Merge(
     }
     std::int32_t* first = this->Refs.data() + this->Start[w];
     std::int32_t* last = first + this->Count[w];
-    std::int32_t* end = std::remove(first, last, t);
-    droppedRefs += last - end;
-    this->Count[w] = static_cast<std::int32_t>(end - first);
+    std::int32_t* found = std::find(first, last, t); // a span lists a triangle once
+    if (found != last)
+    {
+      std::copy(found + 1, last, found);
+      ++droppedRefs;
+      --this->Count[w];
+    }
   };
   for (int i = 0; i < plan.Count; ++i)
   {
