@@ -86,9 +86,10 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
     const std::int64_t* histogram = coarse.data() + part * coarseCount;
     gatheredAt[part + 1] = gatheredAt[part] + std::accumulate(histogram, histogram + lastCoarse + 1, std::int64_t(0));
   }
-  const std::int32_t range = std::min(bucketCount, (lastCoarse + 1) << shift);
+  const std::int32_t range =
+    static_cast<std::int32_t>(std::min<std::int64_t>(bucketCount, std::int64_t(lastCoarse + 1) << shift));
   const std::int64_t gathered = gatheredAt[parts];
-  const std::size_t needed = count + static_cast<std::size_t>(range + 1 + 2 * gathered);
+  const std::size_t needed = count + static_cast<std::size_t>(range) + 1 + 2 * static_cast<std::size_t>(gathered);
   if (buckets.size() < needed)
   {
     buckets.resize(needed);
