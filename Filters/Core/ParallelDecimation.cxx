@@ -660,14 +660,15 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
   {
     // The other two corners of each candidate's triangles, gathered concurrently a block at a
     // time, so the greedy pass below, serial, reads flat lists instead of walking the mesh;
-    // hubs as ~w.
+    // hubs as ~w. None for a candidate already near a vertex taken in an earlier block.
     const std::int64_t count = std::min(RingBlock, end - first);
     this->RingStart.resize(static_cast<std::size_t>(count) + 1);
     this->RingStart[0] = 0;
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)
       {
-        this->RingStart[i + 1] = 2 * this->Mesh.NumberOfTrianglesAround(sorted[first + i]);
+        const std::int32_t v = sorted[first + i];
+        this->RingStart[i + 1] = this->Owner[v] == round ? 0 : 2 * this->Mesh.NumberOfTrianglesAround(v);
       }
     }, 5 * count);
     std::partial_sum(this->RingStart.begin(), this->RingStart.end(), this->RingStart.begin());
@@ -675,6 +676,10 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)
       {
+        if (this->RingStart[i + 1] == this->RingStart[i])
+        {
+          continue;
+        }
         std::int32_t* out = this->Rings.data() + this->RingStart[i];
         this->Mesh.ForEachCorner(sorted[first + i], [&](std::int32_t, std::int32_t next, std::int32_t previous) {
           *out++ = this->IsHub(next) ? ~next : next;
