@@ -69,7 +69,7 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
   // before are gathered, each part's in its place, concurrently; then counted and placed.
   std::int64_t total = 0;
   std::int32_t lastCoarse = coarseCount - 1;
-  for (std::int32_t c = 0; c < coarseCount && lastCoarse == coarseCount - 1; ++c)
+  for (std::int32_t c = 0; c < coarseCount; ++c)
   {
     for (std::int64_t part = 0; part < parts; ++part)
     {
@@ -78,6 +78,7 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
     if (static_cast<std::size_t>(total) >= limit)
     {
       lastCoarse = c;
+      break;
     }
   }
   std::vector<std::int64_t> gatheredAt(static_cast<std::size_t>(parts) + 1, 0);
@@ -118,13 +119,14 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
   {
     ++table[gatheredBucket[j] + 1];
   }
-  std::int32_t last = bucketCount - 1; // the last bucket needed for the first `limit` vertices
+  std::int32_t last = range - 1; // the last bucket needed for the first `limit` vertices
   for (std::int32_t b = 0; b < range; ++b)
   {
     table[b + 1] += table[b];
-    if (static_cast<std::size_t>(table[b + 1]) >= limit && last == bucketCount - 1)
+    if (static_cast<std::size_t>(table[b + 1]) >= limit)
     {
       last = b;
+      break;
     }
   }
   order.resize(static_cast<std::size_t>(table[last + 1]));
