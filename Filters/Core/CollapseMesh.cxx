@@ -672,6 +672,15 @@ std::int64_t CollapseMesh::ApplyIndependent(
     std::vector<std::int32_t> span;
     for (std::int64_t i = begin; i < end; ++i)
     {
+      // The merged vertices' spans a few plans ahead, as PrefetchStars.
+      for (int j = 0; i + PrefetchDistance < end && j < plans[i + PrefetchDistance].Count; ++j)
+      {
+        this->PrefetchPlace(plans[i + PrefetchDistance].Vertices[j]);
+      }
+      for (int j = 0; i + PrefetchDistance / 2 < end && j < plans[i + PrefetchDistance / 2].Count; ++j)
+      {
+        this->PrefetchSpan(plans[i + PrefetchDistance / 2].Vertices[j]);
+      }
       removedCounts[i] = this->Merge(plans[i], span, false, droppedRefs[i]);
       std::copy(span.begin(), span.end(), block.begin() + offsets[i]);
       sizes[i] = static_cast<std::int32_t>(span.size());

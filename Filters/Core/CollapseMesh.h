@@ -45,6 +45,24 @@
 namespace meshsimp
 {
 
+// The prefetch helpers are always inlined: GCC judges a function whose only effect is a prefetch
+// to have none, and drops the calls to it that it did not inline.
+#if defined(__GNUC__) || defined(__clang__)
+#define MESHSIMP_PREFETCH_HELPER __attribute__((always_inline)) inline
+#else
+#define MESHSIMP_PREFETCH_HELPER inline
+#endif
+
+/// A hint to start loading the cache line holding p; it changes no result (GCC and Clang only).
+MESHSIMP_PREFETCH_HELPER void Prefetch(const void* p)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(p);
+#else
+  static_cast<void>(p);
+#endif
+}
+
 enum class VertexClass : std::uint8_t
 {
   Interior,   // a closed fan of triangles
@@ -113,6 +131,26 @@ public:
   }
   bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
   void Lock(std::int32_t v) { this->Locked[v] = 1; }
+
+  /**
+   * Memory hints for walking the triangles around each vertex of a list, in order: at position
+   * i, the span place (start, count) of the vertex PrefetchDistance further on, and the span of
+   * the one half as far, whose place has arrived by then. Walking the stars of vertices spread
+   * over a mesh larger than the caches otherwise waits on two dependent misses per vertex.
+   * Entries below zero are skipped. No effect on results.
+   */
+  static constexpr std::int64_t PrefetchDistance = 16;
+  MESHSIMP_PREFETCH_HELPER void PrefetchStars(const std::int32_t* vertices, std::int64_t i, std::int64_t end) const
+  {
+    if (i + PrefetchDistance < end && vertices[i + PrefetchDistance] >= 0)
+    {
+      this->PrefetchPlace(vertices[i + PrefetchDistance]);
+    }
+    if (i + PrefetchDistance / 2 < end && vertices[i + PrefetchDistance / 2] >= 0)
+    {
+      this->PrefetchSpan(vertices[i + PrefetchDistance / 2]);
+    }
+  }
 
   /// The number of alive triangles around v.
   std::int32_t NumberOfTrianglesAround(std::int32_t v) const { return this->Count[v]; }
@@ -229,6 +267,12 @@ private:
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
   void CompactRefs();
+  MESHSIMP_PREFETCH_HELPER void PrefetchPlace(std::int32_t v) const
+  {
+    Prefetch(this->Start.data() + v);
+    Prefetch(this->Count.data() + v);
+  }
+  MESHSIMP_PREFETCH_HELPER void PrefetchSpan(std::int32_t v) const { Prefetch(this->Refs.data() + this->Start[v]); }
 
   std::vector<Eigen::Vector3d> Points;
   std::vector<std::int32_t> Triangles; // 3 per triangle

@@ -221,6 +221,16 @@ private:
   VertexState Analyze(std::int32_t v, Workspace& work, bool starCollected = false) const;
   /// Analyze with the importance of the chosen measure.
   VertexState Evaluate(std::int32_t v, Workspace& work, bool starCollected = false) const;
+  /// The engine's PrefetchStars, and the quadric the evaluation of a listed vertex reads first.
+  MESHSIMP_PREFETCH_HELPER void PrefetchAhead(const std::int32_t* vertices, std::int64_t i, std::int64_t end) const
+  {
+    this->Mesh.PrefetchStars(vertices, i, end);
+    const std::int64_t near = i + CollapseMesh::PrefetchDistance / 2;
+    if (!this->Quadrics.empty() && near < end && vertices[near] >= 0)
+    {
+      Prefetch(this->Quadrics.data() + vertices[near]);
+    }
+  }
   /// The round's stamp in Owner and Touched.
   std::uint8_t RoundStamp() const { return static_cast<std::uint8_t>((this->Round - 1) % 255 + 1); }
   bool IsHub(std::int32_t v) const { return this->Mesh.NumberOfTrianglesAround(v) >= HubTriangles; }
@@ -669,6 +679,11 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)
       {
+        this->Mesh.PrefetchStars(sorted.data() + first, i, last);
+        if (i + CollapseMesh::PrefetchDistance < last)
+        {
+          Prefetch(this->Owner.data() + sorted[first + i + CollapseMesh::PrefetchDistance]);
+        }
         const std::int32_t v = sorted[first + i];
         this->RingStart[i + 1] = this->Owner[v] == round ? 0 : 2 * this->Mesh.NumberOfTrianglesAround(v);
       }
@@ -678,6 +693,7 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)
       {
+        this->Mesh.PrefetchStars(sorted.data() + first, i, last);
         if (this->RingStart[i + 1] == this->RingStart[i])
         {
           continue;
@@ -829,6 +845,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   // new neighbour, the survivor, is the only new option. Other vertices are evaluated in full.
   auto reevaluate = [&](const std::int32_t* vertices, std::int64_t count) {
     this->ForEachInParts(count, 300, [&](std::int64_t i, Workspace& work) {
+      this->PrefetchAhead(vertices, i, count);
       const std::int32_t w = vertices[i];
       if (w < 0)
       {
@@ -896,6 +913,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     distances.resize(chosen.size());
     planned.assign(chosen.size(), 0);
     this->ForEachInParts(count, 2000, [&](std::int64_t i, Workspace& work) {
+      this->PrefetchAhead(chosen.data(), i, count);
       planned[i] = this->Plan(chosen[i], work, plans[i], distances[i]) ? 1 : 0;
     });
     // The neighbours of each removed vertex are the vertices whose triangles change: listed per
@@ -922,6 +940,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t i = begin; i < end; ++i)
       {
+        this->Mesh.PrefetchStars(chosen.data(), i, end);
         if (!planned[i])
         {
           continue;
