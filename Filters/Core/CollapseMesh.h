@@ -151,6 +151,12 @@ public:
       this->PrefetchSpan(vertices[i + PrefetchDistance / 2]);
     }
   }
+  /// The first of PrefetchStars' hints alone: v's span place, for a walk that reads only counts.
+  MESHSIMP_PREFETCH_HELPER void PrefetchPlace(std::int32_t v) const
+  {
+    Prefetch(this->Start.data() + v);
+    Prefetch(this->Count.data() + v);
+  }
 
   /// The number of alive triangles around v.
   std::int32_t NumberOfTrianglesAround(std::int32_t v) const { return this->Count[v]; }
@@ -267,11 +273,6 @@ private:
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
   void CompactRefs();
-  MESHSIMP_PREFETCH_HELPER void PrefetchPlace(std::int32_t v) const
-  {
-    Prefetch(this->Start.data() + v);
-    Prefetch(this->Count.data() + v);
-  }
   MESHSIMP_PREFETCH_HELPER void PrefetchSpan(std::int32_t v) const { Prefetch(this->Refs.data() + this->Start[v]); }
 
   std::vector<Eigen::Vector3d> Points;

@@ -679,10 +679,11 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
       for (std::int64_t i = begin; i < last; ++i)
       {
-        this->Mesh.PrefetchStars(sorted.data() + first, i, last);
         if (i + CollapseMesh::PrefetchDistance < last)
         {
-          Prefetch(this->Owner.data() + sorted[first + i + CollapseMesh::PrefetchDistance]);
+          const std::int32_t ahead = sorted[first + i + CollapseMesh::PrefetchDistance];
+          this->Mesh.PrefetchPlace(ahead); // the ring gathering below prefetches the spans
+          Prefetch(this->Owner.data() + ahead);
         }
         const std::int32_t v = sorted[first + i];
         this->RingStart[i + 1] = this->Owner[v] == round ? 0 : 2 * this->Mesh.NumberOfTrianglesAround(v);
