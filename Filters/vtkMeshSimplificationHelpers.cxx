@@ -403,9 +403,17 @@ public:
   {
     for (int i = 1; i < threads; ++i)
     {
-      this->Workers.emplace_back([this] { this->Serve(); });
+      this->Workers.emplace_back([this, i] {
+        CurrentPool = this;
+        CurrentIndex = i;
+        this->Serve();
+      });
     }
   }
+
+  /// The calling thread's index: 1, 2, ... for the workers, 0 for the thread that calls For
+  /// (also when it is a worker of another pool).
+  int Worker() const { return CurrentPool == this ? CurrentIndex : 0; }
 
   ~WorkerPool()
   {
@@ -421,12 +429,14 @@ public:
     }
   }
 
-  void For(std::int64_t n, const Body& body)
+  /// Runs body over [0, n) in chunks of about 64 us of the estimated work (4 to 64 per thread):
+  /// fine enough that the threads finish together, though the machine may slow one down.
+  void For(std::int64_t n, std::int64_t work, const Body& body)
   {
     const std::int64_t threads = static_cast<std::int64_t>(this->Workers.size()) + 1;
     this->Job = &body;
     this->Size = n;
-    this->Chunks = std::min(n, 4 * threads);
+    this->Chunks = std::min(n, std::max(4 * threads, std::min(64 * threads, work >> 16)));
     this->Next = 0;
     this->Busy.store(static_cast<int>(this->Workers.size()), std::memory_order_relaxed);
     {
@@ -503,6 +513,8 @@ private:
     }
   }
 
+  static thread_local const WorkerPool* CurrentPool;
+  static thread_local int CurrentIndex;
   static constexpr int WorkerPolls = 1 << 20; // about a millisecond
   static constexpr int CallerPolls = 1 << 17;
   std::vector<std::thread> Workers;
@@ -516,6 +528,8 @@ private:
   std::atomic<bool> Stopping{ false };
   bool CallerWaiting = false; // guarded by Mutex
 };
+thread_local const WorkerPool* WorkerPool::CurrentPool = nullptr;
+thread_local int WorkerPool::CurrentIndex = 0;
 }
 
 meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int numberOfThreads)
@@ -541,8 +555,9 @@ meshsimp::ExecutionContext MakeExecutionContext(vtkAlgorithm* algorithm, int num
       {
         *pool = std::make_unique<WorkerPool>(threads);
       }
-      (*pool)->For(n, body);
+      (*pool)->For(n, work, body);
     };
+    context.Worker = [pool] { return *pool ? (*pool)->Worker() : 0; };
   }
   context.Progress = [algorithm](double progress) {
     algorithm->UpdateProgress(progress);

@@ -26,8 +26,11 @@ struct ExecutionContext
     const std::function<void(std::int64_t, std::int64_t)>& body)>
     ParallelFor;
   /// How many bodies ParallelFor may run at once. Algorithms whose bodies need large scratch
-  /// split their work into this many parts, one scratch each.
+  /// keep one per thread (see Worker), or else split their work into this many parts.
   int Threads = 1;
+  /// The index in [0, Threads) of the thread that runs the calling body, so that a body can use
+  /// that thread's scratch without a lock. Empty when ParallelFor cannot tell.
+  std::function<int()> Worker;
   /// Receives progress in [0, 1]; returns false when the caller wants to abort.
   std::function<bool(double)> Progress;
 

@@ -250,13 +250,27 @@ private:
   std::int64_t MoveSurvivors();
   void Output(const TriangleMeshView& input, ParallelDecimationResult& result) const;
 
-  /// Runs f(i, workspace) for i in [0, count), split into one part per thread, each part with
-  /// its own workspace (the checks' marks are as large as the mesh, so they are kept).
+  /// Runs f(i, workspace) for i in [0, count) with one workspace per thread (the checks' marks
+  /// are as large as the mesh, so they are kept). Where the context tells which thread runs a
+  /// chunk, the loop goes in its chunks, to whichever thread asks first, so that a thread the
+  /// machine slows down does not hold the others up; else in one part per thread.
   template <typename F>
   void ForEachInParts(std::int64_t count, std::int64_t workPerItem, F&& f)
   {
-    const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(this->Context.Threads, count));
-    this->Workspaces.resize(std::max<std::size_t>(this->Workspaces.size(), static_cast<std::size_t>(parts)));
+    const std::int64_t threads = std::max(1, this->Context.Threads);
+    this->Workspaces.resize(std::max<std::size_t>(this->Workspaces.size(), static_cast<std::size_t>(threads)));
+    if (this->Context.Worker)
+    {
+      this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
+        Workspace& work = this->Workspaces[this->Context.Worker()];
+        for (std::int64_t i = begin; i < end; ++i)
+        {
+          f(i, work);
+        }
+      }, workPerItem * count);
+      return;
+    }
+    const std::int64_t parts = std::min(threads, std::max<std::int64_t>(1, count));
     this->Context.For(parts, [&](std::int64_t first, std::int64_t last) {
       for (std::int64_t part = first; part < last; ++part)
       {
@@ -304,7 +318,7 @@ private:
   std::vector<std::int32_t> Rings;
   std::vector<std::uint8_t> Gone; // removed by a collapse
   std::vector<std::uint8_t> Moved; // moved by MoveSurvivors
-  std::vector<Workspace> Workspaces;
+  std::vector<Workspace> Workspaces; // one per thread
 };
 
 void Decimator::CollectStar(std::int32_t v, Workspace& work) const

@@ -31,21 +31,32 @@ inline int& Failures()
     }                                                                                              \
   } while (false)
 
+/// The chunk index of the running Threaded body (0 on the calling thread).
+inline int& ThreadedWorker()
+{
+  thread_local int index = 0;
+  return index;
+}
+
 /// An execution context (meshsimp::ExecutionContext; a template so that this header needs no
-/// core include) whose ParallelFor runs count real threads, one contiguous chunk each: results
-/// must not depend on the thread count.
+/// core include) whose ParallelFor runs count real threads, one contiguous chunk each, and
+/// tells each its index: results must not depend on the thread count.
 template <typename Context>
 Context Threaded(int count)
 {
   Context context;
   context.Threads = count;
+  context.Worker = [] { return ThreadedWorker(); };
   context.ParallelFor = [count](std::int64_t n, std::int64_t,
                           const std::function<void(std::int64_t, std::int64_t)>& body) {
     std::vector<std::thread> threads;
     const std::int64_t chunk = (n + count - 1) / count;
     for (std::int64_t begin = 0; begin < n; begin += chunk)
     {
-      threads.emplace_back([&body, begin, end = std::min(n, begin + chunk)] { body(begin, end); });
+      threads.emplace_back([&body, begin, end = std::min(n, begin + chunk), index = static_cast<int>(begin / chunk)] {
+        ThreadedWorker() = index;
+        body(begin, end);
+      });
     }
     for (std::thread& thread : threads)
     {
