@@ -5,6 +5,7 @@
 #define MeshSimplification_TestHelpers_h
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -58,6 +59,36 @@ Context Threaded(int count)
         body(begin, end);
       });
     }
+    for (std::thread& thread : threads)
+    {
+      thread.join();
+    }
+  };
+  return context;
+}
+
+/// Like Threaded, but the threads take chunks of chunkSize items in turn as they finish (as the
+/// plugin's pool does), so a thread runs many chunks and its index comes from Worker.
+template <typename Context>
+Context Chunked(int count, std::int64_t chunkSize)
+{
+  Context context = Threaded<Context>(count);
+  context.ParallelFor = [count, chunkSize](std::int64_t n, std::int64_t,
+                          const std::function<void(std::int64_t, std::int64_t)>& body) {
+    std::atomic<std::int64_t> next{ 0 };
+    auto work = [&](int index) {
+      ThreadedWorker() = index;
+      for (std::int64_t begin = next.fetch_add(chunkSize); begin < n; begin = next.fetch_add(chunkSize))
+      {
+        body(begin, std::min(n, begin + chunkSize));
+      }
+    };
+    std::vector<std::thread> threads;
+    for (int index = 1; index < count; ++index)
+    {
+      threads.emplace_back(work, index);
+    }
+    work(0);
     for (std::thread& thread : threads)
     {
       thread.join();

@@ -207,10 +207,18 @@ void SameResultForAnyThreadCount()
         CHECK(serial.Importance == other.Importance);
       }
     }
-    ParallelDecimationResult serial, threaded;
+    ParallelDecimationResult serial, threaded, chunked, parts;
     CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), serial));
     CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), threaded, meshsimp_test::Threaded<meshsimp::ExecutionContext>(3)));
     CHECK(serial.Triangles == threaded.Triangles);
+    // Small chunks taken in turn (each thread's workspace found by its index), and a context
+    // that cannot tell the index (one part per thread).
+    CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), chunked, meshsimp_test::Chunked<meshsimp::ExecutionContext>(2, 7)));
+    CHECK(serial.Points == chunked.Points && serial.Triangles == chunked.Triangles);
+    meshsimp::ExecutionContext noIndex = meshsimp_test::Threaded<meshsimp::ExecutionContext>(3);
+    noIndex.Worker = nullptr;
+    CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), parts, noIndex));
+    CHECK(serial.Points == parts.Points && serial.Triangles == parts.Triangles);
   }
 }
 
