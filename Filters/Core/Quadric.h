@@ -151,8 +151,7 @@ inline bool MinimizeQuadric(const Quadric& q, Eigen::Vector3d& x, double relativ
 inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eigen::Vector3d& x,
   double relativeTolerance = 1e-6)
 {
-  const Eigen::Matrix3d a = q.A();
-  if (!(a.trace() > 0.0))
+  if (!(q.A00 + q.A11 + q.A22 > 0.0))
   {
     x = x0; // no planes at all
     return 0;
@@ -162,6 +161,7 @@ inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eige
     return 3;
   }
   // Rank-deficient: closed-form eigenvectors are accurate enough for the directions kept.
+  const Eigen::Matrix3d a = q.A();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(a);
   const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
