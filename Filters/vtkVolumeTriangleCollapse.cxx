@@ -104,6 +104,7 @@ int vtkVolumeTriangleCollapse::RequestData(
   options.EdgeCollapses = this->EdgeCollapses;
   options.SurfaceErrorWeight = this->SurfaceErrorWeight;
   options.MinimumAngle = this->MinimumAngle;
+  options.BatchSize = this->BatchSize;
 
   vtkMeshSimplificationHelpers::ReadLockedPoints(this, input, locked);
   if (!locked.empty())
@@ -179,6 +180,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
   os << indent << "SurfaceErrorWeight: " << this->SurfaceErrorWeight << "\n";
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
+  os << indent << "BatchSize: " << this->BatchSize << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "SquareVolumeError: " << this->SquareVolumeError << "\n";

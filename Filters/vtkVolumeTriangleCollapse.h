@@ -212,8 +212,20 @@ public:
 
   ///@{
   /**
-   * Threads for the set-up (per-triangle matrices and first costs); 0 (default) uses all
-   * cores. The collapses themselves run in order, and the output does not depend on it.
+   * Collapses made per batch (default 64; 1 keeps the strict order of the paper's heap). The
+   * cheapest queued triangles whose neighbourhoods (every vertex of the triangles around their
+   * corners) are disjoint are evaluated and checked together, collapsed in cost order, and the
+   * costs around them updated together, on NumberOfThreads threads. The output depends on the
+   * batch size, never on the thread count.
+   */
+  vtkSetClampMacro(BatchSize, int, 1, 4096);
+  vtkGetMacro(BatchSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Threads for the set-up (per-triangle matrices and first costs) and for each batch of
+   * collapses (BatchSize); 0 (default) uses all cores. The output does not depend on it.
    */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
@@ -259,6 +271,7 @@ protected:
   bool EdgeCollapses = true;
   double SurfaceErrorWeight = 3000.0;
   double MinimumAngle = 10.0;
+  int BatchSize = 64;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   double SquareVolumeError = 0.0;

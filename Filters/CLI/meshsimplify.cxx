@@ -257,6 +257,7 @@ Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
     { "EdgeCollapses", [f](double v) { f->SetEdgeCollapses(v != 0.0); } },
     { "SurfaceErrorWeight", [f](double v) { f->SetSurfaceErrorWeight(v); } },
     { "MinimumAngle", [f](double v) { f->SetMinimumAngle(v); } },
+    { "BatchSize", [f](double v) { f->SetBatchSize(static_cast<int>(v)); } },
     { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
 }

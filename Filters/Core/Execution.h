@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace meshsimp
 {
@@ -53,6 +54,44 @@ struct ExecutionContext
 
   /// False when the caller asked to abort.
   bool Report(double progress) const { return !this->Progress || this->Progress(progress); }
+
+  /**
+   * Calls f(i, scratch) for every i in [0, n), possibly concurrently, each call with a scratch
+   * that no concurrent call uses: the running thread's (scratches[Worker()]), so that chunks go
+   * to whichever thread asks first; without Worker, one scratch per part of Threads fixed parts.
+   * workPerItem estimates one call's time in nanoseconds. scratches grows to Threads entries.
+   */
+  template <typename Scratch, typename F>
+  void ForEachWithScratch(std::vector<Scratch>& scratches, std::int64_t n, std::int64_t workPerItem, F&& f) const
+  {
+    const std::int64_t threads = this->Threads > 1 ? this->Threads : 1;
+    if (scratches.size() < static_cast<std::size_t>(threads))
+    {
+      scratches.resize(static_cast<std::size_t>(threads));
+    }
+    if (this->Worker)
+    {
+      this->For(n, [&](std::int64_t begin, std::int64_t end) {
+        Scratch& scratch = scratches[static_cast<std::size_t>(this->Worker())];
+        for (std::int64_t i = begin; i < end; ++i)
+        {
+          f(i, scratch);
+        }
+      }, workPerItem * n);
+      return;
+    }
+    const std::int64_t parts = n < threads ? n : threads;
+    this->For(parts, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t part = first; part < last; ++part)
+      {
+        Scratch& scratch = scratches[static_cast<std::size_t>(part)];
+        for (std::int64_t i = n * part / parts, end = n * (part + 1) / parts; i < end; ++i)
+        {
+          f(i, scratch);
+        }
+      }
+    }, workPerItem * n);
+  }
 };
 
 } // namespace meshsimp

@@ -251,36 +251,11 @@ private:
   void Output(const TriangleMeshView& input, ParallelDecimationResult& result) const;
 
   /// Runs f(i, workspace) for i in [0, count) with one workspace per thread (the checks' marks
-  /// are as large as the mesh, so they are kept). Where the context tells which thread runs a
-  /// chunk, the loop goes in its chunks, to whichever thread asks first, so that a thread the
-  /// machine slows down does not hold the others up; else in one part per thread.
+  /// are as large as the mesh, so they are kept): ExecutionContext::ForEachWithScratch.
   template <typename F>
   void ForEachInParts(std::int64_t count, std::int64_t workPerItem, F&& f)
   {
-    const std::int64_t threads = std::max(1, this->Context.Threads);
-    this->Workspaces.resize(std::max<std::size_t>(this->Workspaces.size(), static_cast<std::size_t>(threads)));
-    if (this->Context.Worker)
-    {
-      this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
-        Workspace& work = this->Workspaces[this->Context.Worker()];
-        for (std::int64_t i = begin; i < end; ++i)
-        {
-          f(i, work);
-        }
-      }, workPerItem * count);
-      return;
-    }
-    const std::int64_t parts = std::min(threads, std::max<std::int64_t>(1, count));
-    this->Context.For(parts, [&](std::int64_t first, std::int64_t last) {
-      for (std::int64_t part = first; part < last; ++part)
-      {
-        Workspace& work = this->Workspaces[part];
-        for (std::int64_t i = count * part / parts, end = count * (part + 1) / parts; i < end; ++i)
-        {
-          f(i, work);
-        }
-      }
-    }, workPerItem * count);
+    this->Context.ForEachWithScratch(this->Workspaces, count, workPerItem, std::forward<F>(f));
   }
 
   /// The angles in force (raised by relaxation) and their cosines.

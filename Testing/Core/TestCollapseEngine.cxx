@@ -481,6 +481,43 @@ void VolumeCollapseKeepsSphereClosed()
   }
 }
 
+void VolumeCollapseBatchesDoNotDependOnThreads()
+{
+  // Batches of collapses (BatchSize, at most one per 1000 triangles) are evaluated, checked and
+  // updated on the context's threads: the same result whatever the threads and their chunks, a
+  // closed sphere stays closed, and BatchSize 1 (the strict heap order) gives another result.
+  const Mesh sphere = Sphere(48); // 27 648 triangles: batches of up to 27
+  auto run = [&](const meshsimp::ExecutionContext& context, int batchSize) {
+    meshsimp::VolumeCollapseOptions options;
+    options.TargetTriangles = 2765;
+    options.BatchSize = batchSize;
+    meshsimp::VolumeCollapseResult result;
+    CHECK(meshsimp::VolumeTriangleCollapse(sphere.View(), options, result, context));
+    return result;
+  };
+  const meshsimp::VolumeCollapseResult serial = run({}, 64);
+  const meshsimp::VolumeCollapseResult strict = run({}, 1);
+  for (const meshsimp::ExecutionContext& context :
+    { meshsimp_test::Threaded<meshsimp::ExecutionContext>(2),
+      meshsimp_test::Chunked<meshsimp::ExecutionContext>(2, 3) })
+  {
+    const meshsimp::VolumeCollapseResult threaded = run(context, 64);
+    CHECK(threaded.Points == serial.Points && threaded.Triangles == serial.Triangles);
+    CHECK(threaded.PointError == serial.PointError && threaded.SquareVolumeError == serial.SquareVolumeError);
+  }
+  for (const meshsimp::VolumeCollapseResult* result : { &serial, &strict })
+  {
+    const std::int64_t count = static_cast<std::int64_t>(result->Triangles.size() / 3);
+    CHECK(std::abs(count - 2765) <= 27);
+    Mesh out;
+    out.Points = result->Points;
+    out.Triangles = result->Triangles;
+    Engine check(out);
+    CHECK(ClosedManifold(check.Mesh));
+  }
+  CHECK(strict.Points != serial.Points);
+}
+
 void VolumeCollapseKeepsPlaneAndCorners()
 {
   // A flat grid stays flat, and its four corners (sharp boundary turns) stay where they are.
@@ -779,6 +816,7 @@ int main()
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "PlaneBoundMeasuresMergedPlanes", PlaneBoundMeasuresMergedPlanes },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
+    { "VolumeCollapseBatchesDoNotDependOnThreads", VolumeCollapseBatchesDoNotDependOnThreads },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
     { "VolumeCollapseKeepsTubeOnItsCylinder", VolumeCollapseKeepsTubeOnItsCylinder },
     { "VolumeCollapseSurfaceTermKeepsSurfaceClose", VolumeCollapseSurfaceTermKeepsSurfaceClose },
