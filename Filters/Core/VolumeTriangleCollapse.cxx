@@ -170,7 +170,8 @@ private:
   /// has it: two collapses claimed in one batch then read and write disjoint data.
   bool ClaimNeighbourhood(std::int32_t t, std::uint32_t stamp);
   /// Pops the batch: up to limit of the cheapest alive triangles with disjoint neighbourhoods
-  /// (one when limit is 1); those passed over (Passed) go back with their keys after the batch.
+  /// (one when limit is 1, or when it has a corner of more than FanLimit triangles); those passed
+  /// over (Passed) go back with their keys after the batch.
   void SelectBatch(std::int64_t limit);
   int CountRemoved(const CollapsePlan& plan) const;
   std::int64_t Prepare(const TriangleMeshView& input, VolumeCollapseResult& result);
@@ -836,15 +837,26 @@ void VolumeCollapser::SelectBatch(std::int64_t limit)
     {
       continue;
     }
-    if (limit > 1 && !this->ClaimNeighbourhood(t, this->Stamp))
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    const bool hub = std::any_of(
+      tri, tri + 3, [&](std::int32_t v) { return this->Mesh.NumberOfTrianglesAround(v) > FanLimit; });
+    if (limit > 1 && (hub ? !this->Batch.empty() : !this->ClaimNeighbourhood(t, this->Stamp)))
     {
       this->Passed.push_back({ t, key });
+      if (hub)
+      {
+        break; // next batch, alone
+      }
       continue;
     }
     BatchItem item;
     item.Triangle = t;
     item.QueuedKey = key;
     this->Batch.push_back(item);
+    if (hub)
+    {
+      break; // a fan's centre: a batch of one, without walking its triangles
+    }
   }
 }
 

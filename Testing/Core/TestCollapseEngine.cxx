@@ -516,6 +516,34 @@ void VolumeCollapseBatchesDoNotDependOnThreads()
     CHECK(ClosedManifold(check.Mesh));
   }
   CHECK(strict.Points != serial.Points);
+
+  // The same on the other paths a batch takes: a fan's centre (its sums kept by differences),
+  // locked points and a kept boundary, an error bound with undo records.
+  std::vector<std::uint8_t> locks(101 * 101, 0);
+  for (std::size_t i = 0; i < locks.size(); i += 3)
+  {
+    locks[i] = 1;
+  }
+  meshsimp::VolumeCollapseOptions fanOptions, gridOptions, boundOptions;
+  fanOptions.TargetTriangles = 5000;
+  gridOptions.LockedPoints = locks.data();
+  gridOptions.PreserveBoundary = true;
+  boundOptions.MaximumError = 0.01;
+  boundOptions.RelativeError = true;
+  boundOptions.TargetReduction = 1.0;
+  boundOptions.KeepUndo = true;
+  const std::pair<Mesh, meshsimp::VolumeCollapseOptions> cases[] = { { Fan(10000, true), fanOptions },
+    { Grid(100), gridOptions }, { Sphere(40), boundOptions } };
+  for (const auto& [mesh, options] : cases)
+  {
+    meshsimp::VolumeCollapseResult alone, together;
+    CHECK(meshsimp::VolumeTriangleCollapse(mesh.View(), options, alone));
+    CHECK(meshsimp::VolumeTriangleCollapse(
+      mesh.View(), options, together, meshsimp_test::Chunked<meshsimp::ExecutionContext>(2, 1)));
+    CHECK(together.Points == alone.Points && together.Triangles == alone.Triangles);
+    CHECK(together.Records.size() == alone.Records.size() && together.PlaneDistance == alone.PlaneDistance);
+    CHECK(alone.Triangles.size() < mesh.Triangles.size() / 2);
+  }
 }
 
 void VolumeCollapseKeepsPlaneAndCorners()
