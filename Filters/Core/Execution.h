@@ -62,7 +62,8 @@ struct ExecutionContext
    * workPerItem estimates one call's time in nanoseconds. scratches grows to Threads entries.
    */
   template <typename Scratch, typename F>
-  void ForEachWithScratch(std::vector<Scratch>& scratches, std::int64_t n, std::int64_t workPerItem, F&& f) const
+  void ForEachWithScratch(
+    std::vector<Scratch>& scratches, std::int64_t n, std::int64_t workPerItem, F&& f) const
   {
     const std::int64_t threads = this->Threads > 1 ? this->Threads : 1;
     if (scratches.size() < static_cast<std::size_t>(threads))

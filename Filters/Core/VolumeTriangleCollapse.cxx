@@ -164,7 +164,10 @@ private:
   /// not to be queued) in star order. Calls for collapses whose neighbourhoods are disjoint
   /// (ClaimNeighbourhood) may run concurrently: each writes only its own ring's data.
   void RefreshAround(std::int32_t kept, Scratch& scratch, std::int32_t* triangles, double* keys);
-  /// Serially: RefreshAround and the heap's keys.
+  /// RefreshAround for the kept vertex of each collapse in Applied, concurrently (their
+  /// neighbourhoods are disjoint), then the keys of their triangles in order.
+  void RefreshApplied();
+  /// RefreshApplied for one collapse.
   void UpdateAround(std::int32_t kept);
   /// Marks every vertex of the triangles around t's corners with the stamp, unless one already
   /// has it: two collapses claimed in one batch then read and write disjoint data.
@@ -173,6 +176,9 @@ private:
   /// (one when limit is 1, or when it has a corner of more than FanLimit triangles); those passed
   /// over (Passed) go back with their keys after the batch.
   void SelectBatch(std::int64_t limit);
+  /// Evaluates and checks the batch concurrently, then applies its collapses in key order under
+  /// the heap's rule, listing their kept vertices in Applied; those passed over are queued again.
+  void CollapseBatch(std::int64_t target, std::int64_t tolerance, VolumeCollapseResult& result);
   int CountRemoved(const CollapsePlan& plan) const;
   std::int64_t Prepare(const TriangleMeshView& input, VolumeCollapseResult& result);
   void QueueAll();
@@ -727,7 +733,8 @@ VolumeCollapser::Verdict VolumeCollapser::Examine(std::int32_t t, double queuedK
                                                                                       : Verdict::Illegal;
 }
 
-void VolumeCollapser::RefreshAround(std::int32_t kept, Scratch& scratch, std::int32_t* triangles, double* keys)
+void VolumeCollapser::RefreshAround(
+  std::int32_t kept, Scratch& scratch, std::int32_t* triangles, double* keys)
 {
   // The new vertex's triangles changed shape, and the angle sums of their corners changed: their
   // geometry, quadrics and costs are updated at once. The costs of triangles further out (their
@@ -773,13 +780,30 @@ void VolumeCollapser::RefreshAround(std::int32_t kept, Scratch& scratch, std::in
 
 void VolumeCollapser::UpdateAround(std::int32_t kept)
 {
-  const std::size_t count = static_cast<std::size_t>(this->Mesh.NumberOfTrianglesAround(kept));
-  this->RefreshTriangles.resize(count);
-  this->RefreshKeys.resize(count);
-  this->Scratches.resize(std::max<std::size_t>(1, this->Scratches.size()));
-  this->RefreshAround(kept, this->Scratches[0], this->RefreshTriangles.data(), this->RefreshKeys.data());
-  this->HasFans = this->HasFans || this->Mesh.NumberOfTrianglesAround(kept) > FanLimit;
-  for (std::size_t i = 0; i < count; ++i)
+  this->Applied.assign(1, kept);
+  this->RefreshApplied();
+}
+
+void VolumeCollapser::RefreshApplied()
+{
+  const std::int64_t applied = static_cast<std::int64_t>(this->Applied.size());
+  this->RefreshOffsets.assign(static_cast<std::size_t>(applied) + 1, 0);
+  for (std::int64_t i = 0; i < applied; ++i)
+  {
+    this->RefreshOffsets[i + 1] =
+      this->RefreshOffsets[i] + this->Mesh.NumberOfTrianglesAround(this->Applied[i]);
+  }
+  this->RefreshTriangles.resize(static_cast<std::size_t>(this->RefreshOffsets[applied]));
+  this->RefreshKeys.resize(this->RefreshTriangles.size());
+  this->Context.ForEachWithScratch(this->Scratches, applied, 10000, [&](std::int64_t i, Scratch& scratch) {
+    this->RefreshAround(this->Applied[i], scratch, this->RefreshTriangles.data() + this->RefreshOffsets[i],
+      this->RefreshKeys.data() + this->RefreshOffsets[i]);
+  });
+  for (const std::int32_t kept : this->Applied)
+  {
+    this->HasFans = this->HasFans || this->Mesh.NumberOfTrianglesAround(kept) > FanLimit;
+  }
+  for (std::size_t i = 0; i < this->RefreshTriangles.size(); ++i)
   {
     if (this->RefreshKeys[i] >= 0.0)
     {
@@ -939,7 +963,8 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   this->Deficit.resize(n);
   this->VertexArea.resize(n);
   this->VertexMarks.assign(n, 0);
-  this->BatchLimit = std::max<std::int64_t>(1, std::min<std::int64_t>(this->Options.BatchSize, m / BatchShare));
+  this->BatchLimit =
+    std::max<std::int64_t>(1, std::min<std::int64_t>(this->Options.BatchSize, m / BatchShare));
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
@@ -1088,6 +1113,91 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
   return any;
 }
 
+void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance, VolumeCollapseResult& result)
+{
+  const std::int64_t size = static_cast<std::int64_t>(this->Batch.size());
+  // The next key a batch's triangle is compared with below is at most the next one's key in
+  // the batch, or the heap's top now for the last: the heap only gains keys until the batch is
+  // collapsed, so its top can only fall.
+  const double unbounded = std::numeric_limits<double>::infinity();
+  const double lastNextKey = this->Heap.Empty() ? unbounded : this->Heap.TopCost();
+  this->Context.ForEachWithScratch(this->Scratches, size, 1500, [&](std::int64_t i, Scratch& scratch) {
+    BatchItem& item = this->Batch[i];
+    const double nextKey = i + 1 < size ? this->Batch[i + 1].QueuedKey : lastNextKey;
+    item.Check =
+      this->Examine(item.Triangle, item.QueuedKey, nextKey, item.Chosen, item.EvaluatedPriority, scratch);
+  });
+  this->Applied.clear();
+  for (std::int64_t i = 0; i < size; ++i)
+  {
+    BatchItem& item = this->Batch[i];
+    const std::int32_t t = item.Triangle;
+    if (item.Check == Verdict::Invalid)
+    {
+      continue; // until a collapse nearby requeues it
+    }
+    // The key the next triangle would be popped with.
+    const bool hasNext = i + 1 < size || !this->Heap.Empty();
+    double nextKey = i + 1 < size ? this->Batch[i + 1].QueuedKey : 0.0;
+    if (!this->Heap.Empty())
+    {
+      nextKey = i + 1 < size ? std::min(nextKey, this->Heap.TopCost()) : this->Heap.TopCost();
+    }
+    if (item.Check == Verdict::Stale ||
+      (item.EvaluatedPriority > item.QueuedKey && hasNext && item.EvaluatedPriority > nextKey))
+    {
+      this->Heap.Set(t, item.EvaluatedPriority); // its neighbourhood changed since it was queued
+      continue;
+    }
+    if (item.Check == Verdict::Illegal)
+    {
+      continue; // until a collapse nearby requeues it
+    }
+    Candidate& candidate = item.Chosen;
+    if (item.Check == Verdict::Fallback && hasNext && candidate.Priority > nextKey)
+    {
+      this->Heap.Set(t, candidate.Priority);
+      continue;
+    }
+    CollapsePlan& plan = candidate.Plan;
+    const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
+    if (alive - 4 < target - tolerance && alive - this->CountRemoved(plan) < target - tolerance)
+    {
+      // Near the target: collapse only the edge to the corner of larger weight instead.
+      const int other = plan.Weights[1] >= plan.Weights[2] ? 1 : 2;
+      CollapsePlan edge = plan;
+      edge.Count = 2;
+      edge.Vertices[1] = plan.Vertices[other];
+      edge.Vertices[2] = -1;
+      const double sum = plan.Weights[0] + plan.Weights[other];
+      edge.Weights[0] = sum > 0.0 ? plan.Weights[0] / sum : 0.5;
+      edge.Weights[1] = 1.0 - edge.Weights[0];
+      edge.Weights[2] = 0.0;
+      if (!this->Mesh.IsLegal(edge) || alive - this->CountRemoved(edge) < target - tolerance)
+      {
+        continue;
+      }
+      plan = edge;
+    }
+    if (this->BoundLimit >= 0.0)
+    {
+      const double distance = this->Bound.Distance(plan);
+      if (distance > this->BoundLimit)
+      {
+        continue; // until a collapse nearby requeues it
+      }
+      this->Bound.Merge(plan, distance);
+    }
+    this->Apply(plan, candidate.Cost, result);
+    this->Applied.push_back(plan.Vertices[0]);
+  }
+  // The triangles passed over go back, with their keys: the next batch starts with them.
+  for (const Entry& entry : this->Passed)
+  {
+    this->Heap.Set(entry.Triangle, entry.Key);
+  }
+}
+
 bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult& result)
 {
   // Step 5–6 of §3.6: collapse the cheapest triangle until the target is met.
@@ -1124,112 +1234,9 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
     const std::int64_t room = (this->Mesh.NumberOfAliveTriangles() - target) / 4;
     const std::int64_t limit = std::max<std::int64_t>(1, std::min<std::int64_t>(this->BatchLimit, room));
     this->SelectBatch(limit);
-    const std::int64_t size = static_cast<std::int64_t>(this->Batch.size());
-    // The next key a batch's triangle is compared with below is at most the next one's key in
-    // the batch, or the heap's top now for the last (the keys queued meanwhile can only be lower).
-    const double unbounded = std::numeric_limits<double>::infinity();
-    const double lastNextKey = this->Heap.Empty() ? unbounded : this->Heap.TopCost();
-    this->Context.ForEachWithScratch(this->Scratches, size, 1500, [&](std::int64_t i, Scratch& scratch) {
-      BatchItem& item = this->Batch[i];
-      const double nextKey = i + 1 < size ? this->Batch[i + 1].QueuedKey : lastNextKey;
-      item.Check = this->Examine(item.Triangle, item.QueuedKey, nextKey, item.Chosen, item.EvaluatedPriority, scratch);
-    });
-    this->Applied.clear();
-    for (std::int64_t i = 0; i < size; ++i)
-    {
-      BatchItem& item = this->Batch[i];
-      const std::int32_t t = item.Triangle;
-      if (item.Check == Verdict::Invalid)
-      {
-        continue; // until a collapse nearby requeues it
-      }
-      // The key the next triangle would be popped with.
-      const bool hasNext = i + 1 < size || !this->Heap.Empty();
-      const double nextKey = i + 1 < size
-        ? (this->Heap.Empty() ? this->Batch[i + 1].QueuedKey : std::min(this->Batch[i + 1].QueuedKey, this->Heap.TopCost()))
-        : (hasNext ? this->Heap.TopCost() : 0.0);
-      if (item.Check == Verdict::Stale ||
-        (item.EvaluatedPriority > item.QueuedKey && hasNext && item.EvaluatedPriority > nextKey))
-      {
-        this->Heap.Set(t, item.EvaluatedPriority); // its neighbourhood changed since it was queued
-        continue;
-      }
-      if (item.Check == Verdict::Illegal)
-      {
-        continue; // until a collapse nearby requeues it
-      }
-      Candidate& candidate = item.Chosen;
-      if (item.Check == Verdict::Fallback && hasNext && candidate.Priority > nextKey)
-      {
-        this->Heap.Set(t, candidate.Priority);
-        continue;
-      }
-      CollapsePlan& plan = candidate.Plan;
-      const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
-      if (alive - 4 < target - tolerance && alive - this->CountRemoved(plan) < target - tolerance)
-      {
-        // Near the target: collapse only the edge to the corner of larger weight instead.
-        const int other = plan.Weights[1] >= plan.Weights[2] ? 1 : 2;
-        CollapsePlan edge = plan;
-        edge.Count = 2;
-        edge.Vertices[1] = plan.Vertices[other];
-        edge.Vertices[2] = -1;
-        const double sum = plan.Weights[0] + plan.Weights[other];
-        edge.Weights[0] = sum > 0.0 ? plan.Weights[0] / sum : 0.5;
-        edge.Weights[1] = 1.0 - edge.Weights[0];
-        edge.Weights[2] = 0.0;
-        if (!this->Mesh.IsLegal(edge) || alive - this->CountRemoved(edge) < target - tolerance)
-        {
-          continue;
-        }
-        plan = edge;
-      }
-      if (this->BoundLimit >= 0.0)
-      {
-        const double distance = this->Bound.Distance(plan);
-        if (distance > this->BoundLimit)
-        {
-          continue; // until a collapse nearby requeues it
-        }
-        this->Bound.Merge(plan, distance);
-      }
-      this->Apply(plan, candidate.Cost, result);
-      this->Applied.push_back(plan.Vertices[0]);
-    }
-    // The triangles passed over go back, with their keys: the next batch starts with them.
-    for (const Entry& entry : this->Passed)
-    {
-      this->Heap.Set(entry.Triangle, entry.Key);
-    }
-    // The updates around the new vertices, concurrently (their rings are disjoint), then their
-    // triangles' keys in order.
+    this->CollapseBatch(target, tolerance, result);
+    this->RefreshApplied();
     const std::int64_t applied = static_cast<std::int64_t>(this->Applied.size());
-    this->RefreshOffsets.assign(static_cast<std::size_t>(applied) + 1, 0);
-    for (std::int64_t i = 0; i < applied; ++i)
-    {
-      this->RefreshOffsets[i + 1] = this->RefreshOffsets[i] + this->Mesh.NumberOfTrianglesAround(this->Applied[i]);
-    }
-    this->RefreshTriangles.resize(static_cast<std::size_t>(this->RefreshOffsets[applied]));
-    this->RefreshKeys.resize(this->RefreshTriangles.size());
-    this->Context.ForEachWithScratch(this->Scratches, applied, 10000, [&](std::int64_t i, Scratch& scratch) {
-      this->RefreshAround(this->Applied[i], scratch, this->RefreshTriangles.data() + this->RefreshOffsets[i],
-        this->RefreshKeys.data() + this->RefreshOffsets[i]);
-    });
-    for (std::int64_t i = 0; i < applied; ++i)
-    {
-      this->HasFans = this->HasFans || this->Mesh.NumberOfTrianglesAround(this->Applied[i]) > FanLimit;
-    }
-    for (std::size_t i = 0; i < this->RefreshTriangles.size(); ++i)
-    {
-      if (this->RefreshKeys[i] >= 0.0)
-      {
-        this->Heap.Set(this->RefreshTriangles[i], this->RefreshKeys[i]);
-      }
-      else
-      {
-        this->Heap.Remove(this->RefreshTriangles[i]);
-      }
-    }
     if ((steps & ~std::int64_t(255)) != ((steps + applied) & ~std::int64_t(255)))
     {
       const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
