@@ -938,7 +938,9 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
     this->Bound.Build(this->Mesh);
     this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? 1.0 : this->Scale);
   }
-  this->GuardAngle = std::max(0.0, this->Options.MinimumAngle);
+  // No triangle's smallest angle exceeds 60°: a larger guard (or an infinite one, which
+  // halving never lowers) would only refuse every collapse.
+  this->GuardAngle = std::min(60.0, std::max(0.0, this->Options.MinimumAngle));
   result.FinalMinimumAngle = this->GuardAngle;
   this->Mesh.SetMinimumAngle(this->GuardAngle);
   const std::int32_t n = this->Mesh.NumberOfPoints();

@@ -111,8 +111,8 @@ struct VolumeCollapseOptions
   const std::uint8_t* LockedPoints = nullptr;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
-  /// The engine's angle guard (degrees; 0 turns it off): no collapse makes a new angle below
-  /// it unless the neighbourhood had one as small.
+  /// The engine's angle guard (degrees, at most 60; 0 turns it off): no collapse makes a new
+  /// angle below it unless the neighbourhood had one as small.
   double MinimumAngle = 10.0;
   /// Let a triangle collapse its cheapest edge instead when that costs under a quarter of the
   /// triangle's error (beyond the paper; off gives the paper's triangle collapses only).

@@ -746,6 +746,14 @@ void VolumeCollapseLowersGuardRatherThanStop()
   CHECK(!result.StoppedEarly);
   CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 58) <= 1);
   CHECK(result.FinalMinimumAngle < 30.0);
+
+  // A guard above 60° (no triangle's smallest angle is larger), even an infinite one, is 60°:
+  // it is lowered the same way instead of refusing every collapse for ever.
+  options.MinimumAngle = std::numeric_limits<double>::infinity();
+  CHECK(meshsimp::VolumeTriangleCollapse(terrain.View(), options, result));
+  CHECK(!result.StoppedEarly);
+  CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 58) <= 1);
+  CHECK(result.FinalMinimumAngle < 30.0);
 }
 
 void VolumeCollapseReportsProgressAndAborts()
