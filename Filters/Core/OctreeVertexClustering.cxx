@@ -243,7 +243,7 @@ void Clusterer::PrepareGeometry()
   // The compact mesh's points become the normalised coordinates: its box centred at the origin,
   // with a diagonal of 1.
   this->Origin = 0.5 * (this->Local.Lower + this->Local.Upper);
-  const double diagonal = (this->Local.Upper - this->Local.Lower).norm();
+  const double diagonal = this->Local.Diagonal();
   this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   this->P = std::move(this->Local.Points);
   this->Locked.assign(n, 0);

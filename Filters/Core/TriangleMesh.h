@@ -162,6 +162,18 @@ struct CompactMesh
   std::vector<std::int32_t> InputTriangle; // triangle → input triangle
   std::int64_t NonFinitePoints = 0;        // input points with a NaN or infinite coordinate
   VertexTriangleAdjacency Adjacency;
+
+  /// The box's diagonal, also where its square would over- or underflow (coordinates beyond
+  /// about 1e150 or below 1e-150, whose normalisation would otherwise divide by inf or 0).
+  double Diagonal() const
+  {
+    const double diagonal = (this->Upper - this->Lower).norm();
+    if (diagonal > 1e-150 && diagonal < 1e150)
+    {
+      return diagonal;
+    }
+    return 2.0 * (0.5 * this->Upper - 0.5 * this->Lower).stableNorm();
+  }
 };
 
 CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});

@@ -925,7 +925,7 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   // Normalised coordinates (box centred at the origin, diagonal 1) keep the sixth and eighth
   // powers of lengths in the costs within range.
   this->Origin = 0.5 * (compact.Lower + compact.Upper);
-  const double diagonal = (compact.Upper - compact.Lower).norm();
+  const double diagonal = compact.Diagonal();
   this->Diagonal = diagonal > 0.0 ? diagonal : 1.0;
   this->Scale = 1.0 / this->Diagonal;
   for (Vec3& p : compact.Points)

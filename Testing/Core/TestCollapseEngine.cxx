@@ -756,6 +756,25 @@ void VolumeCollapseLowersGuardRatherThanStop()
   CHECK(result.FinalMinimumAngle < 30.0);
 }
 
+void VolumeCollapseHugeAndTinyCoordinates()
+{
+  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600): the costs are
+  // computed in coordinates normalised by the box's diagonal, so the target is still met.
+  const Mesh sphere = Sphere(12);
+  for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600) })
+  {
+    const Mesh scaled = Scaled(sphere, factor);
+    meshsimp::VolumeCollapseOptions options;
+    options.TargetReduction = 0.8;
+    meshsimp::VolumeCollapseResult result;
+    CHECK(meshsimp::VolumeTriangleCollapse(scaled.View(), options, result));
+    CHECK(!result.StoppedEarly);
+    CHECK(std::abs(static_cast<double>(result.Triangles.size() / 3) - 0.2 * (sphere.Triangles.size() / 3)) <=
+      0.01 * (sphere.Triangles.size() / 3) + 1);
+    CHECK(InsideBox(result.Points, scaled));
+  }
+}
+
 void VolumeCollapseReportsProgressAndAborts()
 {
   // Progress rises from the set-up to the end; a caller that says stop gets false at once.
@@ -860,6 +879,7 @@ int main()
     { "VolumeCollapseReachesSmallTargets", VolumeCollapseReachesSmallTargets },
     { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
     { "VolumeCollapseLowersGuardRatherThanStop", VolumeCollapseLowersGuardRatherThanStop },
+    { "VolumeCollapseHugeAndTinyCoordinates", VolumeCollapseHugeAndTinyCoordinates },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
     { "VolumeCollapseSimplifiesFan", VolumeCollapseSimplifiesFan },
     { "VolumeCollapseSurvivesRandomSoups", VolumeCollapseSurvivesRandomSoups },

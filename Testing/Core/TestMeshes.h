@@ -144,6 +144,30 @@ Mesh Fan(int n, bool closed = false)
   return mesh;
 }
 
+/// The mesh with every coordinate multiplied by factor (a power of two keeps them exact).
+Mesh Scaled(Mesh mesh, double factor)
+{
+  for (double& c : mesh.Points)
+  {
+    c *= factor;
+  }
+  return mesh;
+}
+
+/// Whether every output coordinate is finite and inside the input's box (widened by its size).
+bool InsideBox(const std::vector<double>& output, const Mesh& input)
+{
+  double lower = std::numeric_limits<double>::infinity(), upper = -lower;
+  for (const double c : input.Points)
+  {
+    lower = std::min(lower, c);
+    upper = std::max(upper, c);
+  }
+  const double margin = upper - lower;
+  return std::all_of(output.begin(), output.end(),
+    [&](double c) { return std::isfinite(c) && c >= lower - margin && c <= upper + margin; });
+}
+
 /// Cube(n) pushed out onto the sphere of radius 1/2 around the cube's centre.
 Mesh Sphere(int n)
 {

@@ -402,6 +402,21 @@ void SameResultForAnyThreadCount()
   }
 }
 
+void HugeAndTinyCoordinates()
+{
+  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600): the normalisation
+  // still gets the box's diagonal, so the same clustering comes out, scaled.
+  const Mesh sphere = Sphere(12);
+  const OctreeClusteringResult reference = Simplify(sphere, Target(200));
+  for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600) })
+  {
+    const Mesh scaled = Scaled(sphere, factor);
+    const OctreeClusteringResult result = Simplify(scaled, Target(200));
+    CHECK(result.Triangles.size() == reference.Triangles.size());
+    CHECK(InsideBox(result.Points, scaled));
+  }
+}
+
 void InvalidTrianglesAreSkipped()
 {
   Mesh mesh = Grid(4);
@@ -578,6 +593,7 @@ int main()
     { "QuadricMinimumOfThreePlanes", QuadricMinimumOfThreePlanes },
     { "QuadricSingularIsRejected", QuadricSingularIsRejected },
     { "PlanarMeshStaysExactlyPlanar", PlanarMeshStaysExactlyPlanar },
+    { "HugeAndTinyCoordinates", HugeAndTinyCoordinates },
     { "CubeKeepsItsCorners", CubeKeepsItsCorners },
     { "DiskBorderIsKeptWithBoundaryPlanes", DiskBorderIsKeptWithBoundaryPlanes },
     { "DisconnectedPartsInOneCellStayApart", DisconnectedPartsInOneCellStayApart },
