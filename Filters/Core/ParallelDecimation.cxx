@@ -151,6 +151,8 @@ constexpr std::int64_t RingBlock = 16384;
 /// round's vertices may share it (only it: no edge), and it survives no collapse, so that a
 /// round is not limited to one vertex around it.
 constexpr std::int32_t HubTriangles = 32;
+/// Meshes whose bounding-box diagonal lies outside this range are scaled (Run).
+constexpr double MinimumDiagonal = 0x1p-64, MaximumDiagonal = 0x1p64;
 
 /// One edge (v, W) around a vertex v: the triangle where W follows v and the one where W precedes
 /// it (-1 when missing: a boundary edge).
@@ -271,6 +273,7 @@ private:
   const ExecutionContext& Context;
   double FeatureAngle = 0.0, DeviationAngle = 0.0, CosFeature = 1.0, CosDeviation = 1.0;
   CollapseMesh Mesh;
+  double Scale = 1.0; // a power of two: mesh coordinates = input coordinates · Scale
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0; // MaximumError in input units; < 0: no bound
   std::vector<std::int32_t> InputVertex, InputTriangle;
@@ -778,12 +781,23 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     : static_cast<std::int64_t>(std::llround(
         static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
   result.TargetTriangles = target;
-  const double diagonal = (compact.Upper - compact.Lower).norm();
+  const double diagonal = compact.Diagonal();
+  if (diagonal > 0.0 && (diagonal < MinimumDiagonal || diagonal > MaximumDiagonal))
+  {
+    // Quadric errors grow with the fourth power of lengths: coordinates far from 1 are scaled
+    // by a power of two, which keeps every rounding, so that the result is the one of a mesh
+    // of diagonal about 1, scaled back exactly.
+    this->Scale = std::ldexp(1.0, -std::ilogb(diagonal));
+    for (Vec3& p : compact.Points)
+    {
+      p *= this->Scale;
+    }
+  }
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
   if (this->Options.MaximumError >= 0.0)
   {
     this->Bound.Build(this->Mesh);
-    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? diagonal : 1.0);
+    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? diagonal : 1.0) * this->Scale;
   }
   const std::int32_t n = this->Mesh.NumberOfPoints();
   for (std::int32_t v = 0; v < n; ++v)
@@ -1127,16 +1141,20 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
   // The surviving triangles and their points, with their importance and type.
   std::vector<std::int32_t> used, kept;
   this->Mesh.Surviving(used, result.Triangles, kept);
+  // A distance (AveragePlane), or the square root of an area-weighted squared distance.
+  const double importanceScale =
+    this->Options.Measure == ImportanceMeasure::Quadric ? this->Scale * this->Scale : this->Scale;
   for (const std::int32_t v : used)
   {
     // Points MoveSurvivors left in place keep their input coordinates bit for bit.
-    const Vec3 p = !this->Moved.empty() && this->Moved[v] ? this->Mesh.Point(v) : input.Point(this->InputVertex[v]);
+    const Vec3 p = !this->Moved.empty() && this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale)
+                                                          : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
-    result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] : -1.0);
+    result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] / importanceScale : -1.0);
     if (this->BoundLimit >= 0.0)
     {
-      result.PlaneDistance.push_back(this->Bound.Error(v));
+      result.PlaneDistance.push_back(this->Bound.Error(v) / this->Scale);
       result.AchievedMaximumError = std::max(result.AchievedMaximumError, result.PlaneDistance.back());
     }
     result.Types.push_back(this->Types[v]);

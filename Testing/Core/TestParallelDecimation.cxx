@@ -184,6 +184,43 @@ void RoundsAreSuperIndependent()
   }
 }
 
+void HugeAndTinyCoordinates()
+{
+  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600), with and without
+  // a relative error bound: the mesh is scaled by a power of two, which keeps every rounding,
+  // so the result is the unscaled one's, scaled exactly.
+  const Mesh sphere = Sphere(12);
+  for (const bool bound : { false, true })
+  {
+    ParallelDecimationOptions options = Reduction(0.8);
+    if (bound)
+    {
+      options.MaximumError = 0.01;
+      options.RelativeError = true;
+      options.TargetReduction = 1.0;
+    }
+    ParallelDecimationResult reference;
+    CHECK(meshsimp::ParallelDecimation(sphere.View(), options, reference));
+    CHECK(reference.MovedPoints > 0);
+    for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600) })
+    {
+      ParallelDecimationResult result;
+      CHECK(meshsimp::ParallelDecimation(Scaled(sphere, factor).View(), options, result));
+      CHECK(result.Triangles == reference.Triangles);
+      CHECK(result.Points.size() == reference.Points.size());
+      for (std::size_t i = 0; i < result.Points.size() && i < reference.Points.size(); ++i)
+      {
+        CHECK(result.Points[i] == reference.Points[i] * factor);
+      }
+      for (std::size_t i = 0; i < result.Importance.size() && i < reference.Importance.size(); ++i)
+      {
+        CHECK(result.Importance[i] == (reference.Importance[i] < 0.0 ? -1.0 : reference.Importance[i] * factor * factor));
+      }
+      CHECK(result.AchievedMaximumError == reference.AchievedMaximumError * factor);
+    }
+  }
+}
+
 void SameResultForAnyThreadCount()
 {
   const Mesh sphere = Sphere(16);
@@ -485,6 +522,7 @@ int main()
     { "BucketOrderKeepsOrderWithinBucketWidth", BucketOrderKeepsOrderWithinBucketWidth },
     { "RoundsAreSuperIndependent", RoundsAreSuperIndependent },
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
+    { "HugeAndTinyCoordinates", HugeAndTinyCoordinates },
     { "TargetsAndInputPoints", TargetsAndInputPoints },
     { "MovedSurvivorsFitTheSurface", MovedSurvivorsFitTheSurface },
     { "ErrorBoundKeepsBump", ErrorBoundKeepsBump },
