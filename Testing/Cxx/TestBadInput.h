@@ -71,7 +71,8 @@ inline vtkSmartPointer<vtkPolyData> Sphere()
 }
 
 /// Empty input, points only, NaN points, degenerate and non-manifold triangles, quads and
-/// strips (whose count must land within countTolerance of the target), lines and vertices.
+/// strips and tiny and huge meshes (whose counts must land within countTolerance of the
+/// target), lines and vertices.
 inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
 {
   // Empty input: empty output, no error.
@@ -176,6 +177,25 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     wires->SetVerts(verts);
     const Run run = Simplify(make, wires);
     CHECK(run.Warned && !run.Failed && run.Output->GetNumberOfCells() == 0);
+  }
+  // Tiny and huge meshes (double points scaled by 2^-600 and 2^600, beyond the range where
+  // squared lengths are finite and nonzero): simplified like the unit sphere.
+  for (const double factor : { std::ldexp(1.0, -600), std::ldexp(1.0, 600) })
+  {
+    vtkSmartPointer<vtkPolyData> sphere = Sphere();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      sphere->GetPoint(i, p);
+      points->InsertNextPoint(p[0] * factor, p[1] * factor, p[2] * factor);
+    }
+    sphere->SetPoints(points);
+    const Run run = Simplify(make, sphere);
+    const double target = 0.5 * sphere->GetNumberOfPolys();
+    CHECK(!run.Warned && !run.Failed);
+    CHECK(std::abs(run.Output->GetNumberOfPolys() - target) <= countTolerance * target);
   }
   // A reduction that is not a number (vtkSetClampMacro lets NaN through): a clear error.
   {
