@@ -4,4 +4,6 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/Examples/setup.sh"
 cd "$here/build"
-xvfb-run -a ctest --output-on-failure "$@"
+# -noreset: the server does not reset when its last client leaves, which under load let the
+# next test's first connection fail ("bad X server connection").
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ctest --output-on-failure "$@"
