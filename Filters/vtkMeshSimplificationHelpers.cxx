@@ -44,6 +44,42 @@ std::string TooManyTriangles(std::int64_t count)
   return "the input has " + std::to_string(count) + " triangles, more than the " +
     std::to_string(meshsimp::MaximumTriangles) + " the filters take";
 }
+
+}
+
+vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input)
+{
+  vtkSmartPointer<vtkPolyData> usable = input;
+  const struct
+  {
+    int Association;
+    vtkIdType Count;
+    const char* What;
+  } sets[2] = { { vtkDataObject::POINT, input->GetNumberOfPoints(), "point" },
+    { vtkDataObject::CELL, input->GetNumberOfCells(), "cell" } };
+  for (const auto& set : sets)
+  {
+    vtkDataSetAttributes* data = input->GetAttributes(set.Association);
+    for (int i = data->GetNumberOfArrays() - 1; i >= 0; --i) // from the end: indices stay valid
+    {
+      vtkAbstractArray* array = data->GetAbstractArray(i);
+      if (array->GetNumberOfTuples() >= set.Count)
+      {
+        continue;
+      }
+      vtkWarningWithObjectMacro(filter, << "Not passing " << set.What << " data array '"
+                                        << (array->GetName() ? array->GetName() : "") << "': it has "
+                                        << array->GetNumberOfTuples() << " tuples for "
+                                        << set.Count << " " << set.What << "s.");
+      if (usable == input)
+      {
+        usable = vtkSmartPointer<vtkPolyData>::New();
+        usable->ShallowCopy(input); // shares every array; the input keeps its own lists
+      }
+      usable->GetAttributes(set.Association)->RemoveArray(i);
+    }
+  }
+  return usable;
 }
 
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error)

@@ -43,6 +43,11 @@ struct TriangleInput
   }
 };
 
+/// The input, or a shallow copy of it without the point and cell data arrays that are shorter
+/// than its points or cells (copying their values would read past their ends), each named in a
+/// warning. The input itself is never changed.
+vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input);
+
 /// False with a message in error when the input cannot be processed at all (too large).
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string& error);
 

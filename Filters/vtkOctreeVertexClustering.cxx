@@ -22,7 +22,9 @@ vtkOctreeVertexClustering::vtkOctreeVertexClustering() = default;
 int vtkOctreeVertexClustering::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  // Arrays too short for the input's points or cells are left out, with a warning.
+  vtkSmartPointer<vtkPolyData> input =
+    vtkMeshSimplificationHelpers::WithUsableAttributes(this, vtkPolyData::GetData(inputVector[0]));
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->AchievedMaximumError = 0.0;
 

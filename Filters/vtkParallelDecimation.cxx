@@ -23,7 +23,9 @@ vtkParallelDecimation::vtkParallelDecimation() = default;
 int vtkParallelDecimation::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  // Arrays too short for the input's points or cells are left out, with a warning.
+  vtkSmartPointer<vtkPolyData> input =
+    vtkMeshSimplificationHelpers::WithUsableAttributes(this, vtkPolyData::GetData(inputVector[0]));
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->Rounds = 0;
   this->AchievedMaximumError = 0.0;

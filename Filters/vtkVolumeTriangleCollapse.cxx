@@ -69,7 +69,9 @@ void InterpolatePointData(vtkPointData* inPD, vtkPointData* outPD,
 int vtkVolumeTriangleCollapse::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  // Arrays too short for the input's points or cells are left out, with a warning.
+  vtkSmartPointer<vtkPolyData> input =
+    vtkMeshSimplificationHelpers::WithUsableAttributes(this, vtkPolyData::GetData(inputVector[0]));
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->SquareVolumeError = 0.0;
   this->AchievedMaximumError = 0.0;

@@ -5,9 +5,12 @@
 #define MeshSimplification_TestBadInput_h
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
@@ -72,7 +75,7 @@ inline vtkSmartPointer<vtkPolyData> Sphere()
 
 /// Empty input, points only, NaN points, degenerate and non-manifold triangles, quads and
 /// strips and tiny and huge meshes (whose counts must land within countTolerance of the
-/// target), lines and vertices.
+/// target), lines and vertices, data arrays too short for their points or cells (left out).
 inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
 {
   // Empty input: empty output, no error.
@@ -196,6 +199,27 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     const double target = 0.5 * sphere->GetNumberOfPolys();
     CHECK(!run.Warned && !run.Failed);
     CHECK(std::abs(run.Output->GetNumberOfPolys() - target) <= countTolerance * target);
+  }
+  // A point or cell data array shorter than the points or cells it describes (copying from it
+  // would read past its end) is left out with a warning; the rest is simplified as usual.
+  for (const bool onPoints : { true, false })
+  {
+    vtkSmartPointer<vtkPolyData> sphere = Sphere();
+    vtkNew<vtkDoubleArray> shortArray;
+    shortArray->SetName("short");
+    shortArray->SetNumberOfTuples(3);
+    shortArray->FillValue(1.0);
+    vtkDataSetAttributes* data = onPoints ? static_cast<vtkDataSetAttributes*>(sphere->GetPointData())
+                                          : static_cast<vtkDataSetAttributes*>(sphere->GetCellData());
+    data->AddArray(shortArray);
+    const Run run = Simplify(make, sphere);
+    const double target = 0.5 * sphere->GetNumberOfPolys();
+    CHECK(run.Warned && !run.Failed);
+    CHECK(std::abs(run.Output->GetNumberOfPolys() - target) <= countTolerance * target);
+    CHECK(!run.Output->GetPointData()->GetAbstractArray("short"));
+    CHECK(!run.Output->GetCellData()->GetAbstractArray("short"));
+    CHECK(run.Output->GetPointData()->GetNormals() || !sphere->GetPointData()->GetNormals());
+    CHECK(data->GetAbstractArray("short") == shortArray.Get()); // the input keeps it
   }
   // A reduction that is not a number (vtkSetClampMacro lets NaN through): a clear error.
   {
