@@ -44,7 +44,6 @@ std::string TooManyTriangles(std::int64_t count)
   return "the input has " + std::to_string(count) + " triangles, more than the " +
     std::to_string(meshsimp::MaximumTriangles) + " the filters take";
 }
-
 }
 
 vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input)
