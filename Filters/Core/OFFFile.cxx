@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OFFFile.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -70,19 +71,22 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
     error = path + ": bad counts line";
     return false;
   }
-  mesh.Points.resize(3 * numberOfPoints);
+  // The counts are not trusted with memory: a damaged header could claim more than any machine
+  // holds. The lists grow with what is read; reserved up front only to a bounded size.
+  constexpr long long ReserveLimit = 1 << 22;
+  mesh.Points.reserve(3 * static_cast<std::size_t>(std::min(numberOfPoints, ReserveLimit)));
   for (long long i = 0; i < numberOfPoints; ++i)
   {
-    if (!NextDataLine(in, line) ||
-      std::sscanf(line.c_str(), "%lf %lf %lf", &mesh.Points[3 * i], &mesh.Points[3 * i + 1],
-        &mesh.Points[3 * i + 2]) != 3)
+    double p[3];
+    if (!NextDataLine(in, line) || std::sscanf(line.c_str(), "%lf %lf %lf", &p[0], &p[1], &p[2]) != 3)
     {
       error = path + ": bad or missing point " + std::to_string(i);
       return false;
     }
+    mesh.Points.insert(mesh.Points.end(), p, p + 3);
   }
-  mesh.FaceOffsets.reserve(numberOfFaces + 1);
-  mesh.FaceIds.reserve(3 * numberOfFaces);
+  mesh.FaceOffsets.reserve(static_cast<std::size_t>(std::min(numberOfFaces, ReserveLimit)) + 1);
+  mesh.FaceIds.reserve(3 * static_cast<std::size_t>(std::min(numberOfFaces, ReserveLimit)));
   for (long long f = 0; f < numberOfFaces; ++f)
   {
     long long size = 0;

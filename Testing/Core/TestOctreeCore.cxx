@@ -417,6 +417,27 @@ void HugeAndTinyCoordinates()
   }
 }
 
+void OFFReaderRefusesDamagedCounts()
+{
+  // Counts no file could hold (more than any memory, or overflowing 3 · points) are an error
+  // about the missing data, not an allocation that throws; a sound file still reads.
+  const std::string path = MESHSIMPLIFICATION_TEST_OUTPUT "/damaged.off";
+  const char* files[] = { "OFF\n99999999999 1 0\n0 0 0\n",
+    "OFF\n3 4611686018427387904 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "OFF\n3074457345618258603 1 0\n",
+    "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n" };
+  for (const char* text : files)
+  {
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    CHECK(file && std::fputs(text, file) >= 0 && std::fclose(file) == 0);
+    meshsimp::PolygonMesh mesh;
+    std::string error;
+    const bool sound = std::string(text).rfind("OFF 3 1", 0) == 0;
+    CHECK(meshsimp::ReadOFF(path, mesh, error) == sound);
+    CHECK(sound ? error.empty() && mesh.Points.size() == 9 && mesh.FaceIds.size() == 3
+                : error.find("missing") != std::string::npos);
+  }
+}
+
 void InvalidTrianglesAreSkipped()
 {
   Mesh mesh = Grid(4);
@@ -604,6 +625,7 @@ int main()
     { "FlipRuleReducesFlippedTriangles", FlipRuleReducesFlippedTriangles },
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "InvalidTrianglesAreSkipped", InvalidTrianglesAreSkipped },
+    { "OFFReaderRefusesDamagedCounts", OFFReaderRefusesDamagedCounts },
     { "LockedPointsStayTheirOwnClusters", LockedPointsStayTheirOwnClusters },
     { "AbortStopsEarly", AbortStopsEarly },
     { "CompactMeshIsSpatialAndMapsBack", CompactMeshIsSpatialAndMapsBack },
