@@ -44,8 +44,10 @@ std::string TooManyTriangles(std::int64_t count)
   return "the input has " + std::to_string(count) + " triangles, more than the " +
     std::to_string(meshsimp::MaximumTriangles) + " the filters take";
 }
-}
 
+/// The input, or a shallow copy of it without the point and cell data arrays that are shorter
+/// than its points or cells (copying their values would read past their ends), each named in a
+/// warning. The input itself is never changed.
 vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input)
 {
   vtkSmartPointer<vtkPolyData> usable = input;
@@ -79,6 +81,7 @@ vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyD
     }
   }
   return usable;
+}
 }
 
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error)
@@ -283,9 +286,10 @@ vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
 }
 }
 
-bool PrepareTriangles(vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles,
-  int& requestResult, std::vector<std::uint8_t>& pieceLocks)
+bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
+  TriangleInput& triangles, int& requestResult, std::vector<std::uint8_t>& pieceLocks)
 {
+  input = WithUsableAttributes(filter, input);
   std::string problem;
   const bool extracted = ExtractTriangles(input, triangles, problem);
   LockPieceBorders(filter, extracted ? &triangles : nullptr, input->GetNumberOfPoints(), pieceLocks);

@@ -43,18 +43,16 @@ struct TriangleInput
   }
 };
 
-/// The input, or a shallow copy of it without the point and cell data arrays that are shorter
-/// than its points or cells (copying their values would read past their ends), each named in a
-/// warning. The input itself is never changed.
-vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input);
-
 /// False with a message in error when the input cannot be processed at all (too large).
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string& error);
 
 /**
  * ExtractTriangles as every filter starts: an error for an input it cannot process, a warning
- * for the vertex and line cells it drops. False when there is nothing to simplify; then
- * requestResult is what RequestData returns (0 after an error, 1 for an empty input).
+ * for the vertex and line cells it drops. Point and cell data arrays shorter than the input's
+ * points or cells (copying them would read past their ends) are left out, each named in a
+ * warning: input becomes a shallow copy without them (the input itself is never changed). False
+ * when there is nothing to simplify; then requestResult is what RequestData returns (0 after an
+ * error, 1 for an empty input).
  *
  * Under MPI (a global controller of several processes) also the points this piece shares with
  * other pieces: its border points whose coordinates are on another piece's border too, flagged
@@ -64,8 +62,8 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string&
  * are simplified block by block, possibly a different number of blocks per process, so they are
  * not exchanged (their piece borders are not locked).
  */
-bool PrepareTriangles(vtkAlgorithm* filter, vtkPolyData* input, TriangleInput& triangles,
-  int& requestResult, std::vector<std::uint8_t>& pieceLocks);
+bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
+  TriangleInput& triangles, int& requestResult, std::vector<std::uint8_t>& pieceLocks);
 
 /// False, with an error, when the target in force is not a number (vtkSetClampMacro lets NaN
 /// through): the reduction for TargetMode 0, the error bound for 2 (the filters share the modes).

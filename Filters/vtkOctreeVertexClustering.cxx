@@ -22,9 +22,7 @@ vtkOctreeVertexClustering::vtkOctreeVertexClustering() = default;
 int vtkOctreeVertexClustering::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // Arrays too short for the input's points or cells are left out, with a warning.
-  vtkSmartPointer<vtkPolyData> input =
-    vtkMeshSimplificationHelpers::WithUsableAttributes(this, vtkPolyData::GetData(inputVector[0]));
+  vtkSmartPointer<vtkPolyData> input = vtkPolyData::GetData(inputVector[0]); // PrepareTriangles may replace it
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->AchievedMaximumError = 0.0;
 

@@ -23,9 +23,7 @@ vtkParallelDecimation::vtkParallelDecimation() = default;
 int vtkParallelDecimation::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // Arrays too short for the input's points or cells are left out, with a warning.
-  vtkSmartPointer<vtkPolyData> input =
-    vtkMeshSimplificationHelpers::WithUsableAttributes(this, vtkPolyData::GetData(inputVector[0]));
+  vtkSmartPointer<vtkPolyData> input = vtkPolyData::GetData(inputVector[0]); // PrepareTriangles may replace it
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->Rounds = 0;
   this->AchievedMaximumError = 0.0;
