@@ -2,9 +2,12 @@
 #include "OFFFile.h"
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 namespace meshsimp
 {
@@ -26,6 +29,39 @@ bool NextDataLine(std::istream& in, std::string& line)
     }
   }
   return false;
+}
+
+/// The next number on a line from cursor on, past blanks (a leading '+' allowed); moves cursor
+/// past it. std::from_chars: no locale, no stream per line (the reader's cost was that).
+template <typename T>
+bool NextNumber(const char*& cursor, const char* end, T& value)
+{
+  while (cursor < end && std::isspace(static_cast<unsigned char>(*cursor)))
+  {
+    ++cursor;
+  }
+  if (cursor + 1 < end && cursor[0] == '+' && cursor[1] != '-')
+  {
+    ++cursor;
+  }
+  std::from_chars_result parsed = std::from_chars(cursor, end, value);
+  if constexpr (std::is_floating_point_v<T>)
+  {
+    if (parsed.ec == std::errc::result_out_of_range)
+    {
+      // Beyond double's range (1e400, 1e-400): its infinity or zero, as strtod would give
+      // (beyond long double's too, an error).
+      long double wide = 0.0L;
+      parsed = std::from_chars(cursor, end, wide);
+      value = static_cast<T>(wide);
+    }
+  }
+  if (parsed.ec != std::errc())
+  {
+    return false;
+  }
+  cursor = parsed.ptr;
+  return true;
 }
 }
 
@@ -78,7 +114,14 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
   for (long long i = 0; i < numberOfPoints; ++i)
   {
     double p[3];
-    if (!NextDataLine(in, line) || std::sscanf(line.c_str(), "%lf %lf %lf", &p[0], &p[1], &p[2]) != 3)
+    bool ok = NextDataLine(in, line);
+    const char* cursor = line.data();
+    const char* end = cursor + line.size();
+    for (int k = 0; k < 3 && ok; ++k)
+    {
+      ok = NextNumber(cursor, end, p[k]);
+    }
+    if (!ok)
     {
       error = path + ": bad or missing point " + std::to_string(i);
       return false;
@@ -90,12 +133,10 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
   for (long long f = 0; f < numberOfFaces; ++f)
   {
     long long size = 0;
-    std::istringstream face;
-    if (NextDataLine(in, line))
-    {
-      face.str(line);
-    }
-    if (!(face >> size) || size < 0)
+    const bool found = NextDataLine(in, line);
+    const char* cursor = line.data();
+    const char* end = cursor + line.size();
+    if (!found || !NextNumber(cursor, end, size) || size < 0)
     {
       error = path + ": bad or missing face " + std::to_string(f);
       return false;
@@ -103,7 +144,7 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
     for (long long k = 0; k < size; ++k)
     {
       long long id = -1;
-      if (!(face >> id) || id < 0 || id >= numberOfPoints)
+      if (!NextNumber(cursor, end, id) || id < 0 || id >= numberOfPoints)
       {
         error = path + ": face " + std::to_string(f) + " has a bad point index";
         return false;

@@ -5,7 +5,8 @@
  *
  * Supports the plain ASCII variant: an optional "OFF" header keyword, the counts line, points
  * (extra columns such as colours are ignored), and polygons of any size. Comments (#) and blank
- * lines are skipped.
+ * lines are skipped. Numbers are read with std::from_chars: the same values as strtod gives, in
+ * any locale (no hexadecimal floats); one beyond double's range becomes its infinity or zero.
  */
 #ifndef MeshSimplification_OFFFile_h
 #define MeshSimplification_OFFFile_h

@@ -438,6 +438,37 @@ void OFFReaderRefusesDamagedCounts()
   }
 }
 
+void OFFReaderParsesNumbersExactly()
+{
+  // Numbers read as strtod and streams would, without their locale: signs, exponents, nan and
+  // inf, blanks of any kind, comments and extra columns (colours); beyond double's range, its
+  // infinity or zero. A letter inside a number is an error.
+  const std::string path = MESHSIMPLIFICATION_TEST_OUTPUT "/numbers.off";
+  const auto read = [&path](const char* text, meshsimp::PolygonMesh& mesh, std::string& error) {
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    CHECK(file && std::fputs(text, file) >= 0 && std::fclose(file) == 0);
+    return meshsimp::ReadOFF(path, mesh, error);
+  };
+  meshsimp::PolygonMesh mesh;
+  std::string error;
+  CHECK(read("OFF\n# a comment\n4 2 0\n\n0.1 -2.5e-3 +7 # first\n1e400\t-1e400 1e-400\n"
+             "nan -0 \f inf\n 3.14159265358979323846 1E2 .5\r\n3 0 1 2\n+4 1 2 3 0 255 0 0\n",
+    mesh, error));
+  CHECK(error.empty() && mesh.Points.size() == 12);
+  const double inf = std::numeric_limits<double>::infinity();
+  const double expected[] = { 0.1, -2.5e-3, 7, inf, -inf, 0, 0, -0.0, inf, 3.14159265358979323846, 100, 0.5 };
+  for (int i = 0; i < 12; ++i)
+  {
+    CHECK(i == 6 ? std::isnan(mesh.Points[i]) : mesh.Points[i] == expected[i]);
+  }
+  CHECK(std::signbit(mesh.Points[7]));
+  CHECK(mesh.FaceOffsets == (std::vector<std::int64_t>{ 0, 3, 7 }));
+  CHECK(mesh.FaceIds == (std::vector<std::int64_t>{ 0, 1, 2, 1, 2, 3, 0 }));
+  CHECK(!read("OFF\n1 0 0\n0.5x 1 2\n", mesh, error) && error.find("point 0") != std::string::npos);
+  CHECK(!read("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1x 2\n", mesh, error) &&
+    error.find("bad point index") != std::string::npos);
+}
+
 void InvalidTrianglesAreSkipped()
 {
   Mesh mesh = Grid(4);
@@ -626,6 +657,7 @@ int main()
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "InvalidTrianglesAreSkipped", InvalidTrianglesAreSkipped },
     { "OFFReaderRefusesDamagedCounts", OFFReaderRefusesDamagedCounts },
+    { "OFFReaderParsesNumbersExactly", OFFReaderParsesNumbersExactly },
     { "LockedPointsStayTheirOwnClusters", LockedPointsStayTheirOwnClusters },
     { "AbortStopsEarly", AbortStopsEarly },
     { "CompactMeshIsSpatialAndMapsBack", CompactMeshIsSpatialAndMapsBack },
