@@ -242,7 +242,7 @@ void Clusterer::PrepareGeometry()
 
   // The compact mesh's points become the normalised coordinates: its box centred at the origin,
   // with a diagonal of 1.
-  this->Origin = 0.5 * (this->Local.Lower + this->Local.Upper);
+  this->Origin = this->Local.Centre();
   const double diagonal = this->Local.Diagonal();
   this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   this->P = std::move(this->Local.Points);
@@ -1465,7 +1465,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   OctreeNode root;
   // The bounding cube of the normalised points (a margin covers their rounding).
   root.Center = Vec3::Zero();
-  root.Half = 0.5 * (this->Local.Upper - this->Local.Lower).maxCoeff() * this->Scale * (1.0 + 1e-9) + 1e-12;
+  root.Half = (0.5 * this->Local.Upper - 0.5 * this->Local.Lower).maxCoeff() * this->Scale * (1.0 + 1e-9) + 1e-12;
   root.Begin = 0;
   root.End = static_cast<std::int32_t>(this->Order.size());
   root.Depth = 0;

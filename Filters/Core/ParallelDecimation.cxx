@@ -793,11 +793,14 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       p *= this->Scale;
     }
   }
+  // The diagonal in mesh coordinates (also where the input's exceeds the largest double).
+  const double meshDiagonal = (this->Scale * compact.Upper - this->Scale * compact.Lower).norm();
   this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
   if (this->Options.MaximumError >= 0.0)
   {
     this->Bound.Build(this->Mesh);
-    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? diagonal : 1.0) * this->Scale;
+    this->BoundLimit =
+      this->Options.RelativeError ? this->Options.MaximumError * meshDiagonal : this->Options.MaximumError * this->Scale;
   }
   const std::int32_t n = this->Mesh.NumberOfPoints();
   for (std::int32_t v = 0; v < n; ++v)
@@ -1141,9 +1144,9 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
   // The surviving triangles and their points, with their importance and type.
   std::vector<std::int32_t> used, kept;
   this->Mesh.Surviving(used, result.Triangles, kept);
-  // A distance (AveragePlane), or the square root of an area-weighted squared distance.
-  const double importanceScale =
-    this->Options.Measure == ImportanceMeasure::Quadric ? this->Scale * this->Scale : this->Scale;
+  // A distance (AveragePlane), or the square root of an area-weighted squared distance: divided
+  // by Scale once or twice (Scale² underflows for the largest meshes).
+  const bool squared = this->Options.Measure == ImportanceMeasure::Quadric;
   for (const std::int32_t v : used)
   {
     // Points MoveSurvivors left in place keep their input coordinates bit for bit.
@@ -1151,7 +1154,8 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
                                                           : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
-    result.Importance.push_back(this->Importance[v] < Never ? this->Importance[v] / importanceScale : -1.0);
+    const double importance = this->Importance[v] / this->Scale;
+    result.Importance.push_back(this->Importance[v] < Never ? (squared ? importance / this->Scale : importance) : -1.0);
     if (this->BoundLimit >= 0.0)
     {
       result.PlaneDistance.push_back(this->Bound.Error(v) / this->Scale);

@@ -85,9 +85,12 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
     ++bits;
   }
   const std::int32_t side = 1 << bits;
-  const double extent = used > 0 ? (hi - lo).maxCoeff() : 0.0;
+  // A box wider than the largest double (coordinates near ±1.8e308) is gridded at half scale,
+  // which is exact; any other at its own.
+  const double shrink = used > 0 && !std::isfinite((hi - lo).maxCoeff()) ? 0.5 : 1.0;
+  const double extent = used > 0 ? (shrink * hi - shrink * lo).maxCoeff() : 0.0;
   const double toCell = extent > 0.0 ? side / extent : 0.0;
-  const Eigen::Vector3d corner = 0.5 * (lo + hi) - Eigen::Vector3d::Constant(0.5 * extent);
+  const Eigen::Vector3d corner = 0.5 * (shrink * lo + shrink * hi) - Eigen::Vector3d::Constant(0.5 * extent);
   std::vector<std::int32_t> code(n, -1);
   context.For(n, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v)
@@ -96,7 +99,7 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
       {
         continue;
       }
-      const Eigen::Vector3d cell = (input.Point(v) - corner) * toCell;
+      const Eigen::Vector3d cell = (shrink * input.Point(v) - corner) * toCell;
       std::int32_t morton = 0;
       for (int axis = 0; axis < 3; ++axis)
       {

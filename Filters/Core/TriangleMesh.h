@@ -164,7 +164,9 @@ struct CompactMesh
   VertexTriangleAdjacency Adjacency;
 
   /// The box's diagonal, also where its square would over- or underflow (coordinates beyond
-  /// about 1e150 or below 1e-150, whose normalisation would otherwise divide by inf or 0).
+  /// about 1e150 or below 1e-150, whose normalisation would otherwise divide by inf or 0). A
+  /// diagonal beyond the largest double (coordinates near ±1.8e308) is given as that largest
+  /// double: normalised by it, such a box has a diagonal of at most √3·2 rather than 1.
   double Diagonal() const
   {
     const double diagonal = (this->Upper - this->Lower).norm();
@@ -172,8 +174,11 @@ struct CompactMesh
     {
       return diagonal;
     }
-    return 2.0 * (0.5 * this->Upper - 0.5 * this->Lower).stableNorm();
+    return std::min(2.0 * (0.5 * this->Upper - 0.5 * this->Lower).stableNorm(),
+      std::numeric_limits<double>::max());
   }
+  /// The box's centre, also where Lower + Upper would overflow.
+  Eigen::Vector3d Centre() const { return 0.5 * this->Lower + 0.5 * this->Upper; }
 };
 
 CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});

@@ -924,7 +924,7 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
 
   // Normalised coordinates (box centred at the origin, diagonal 1) keep the sixth and eighth
   // powers of lengths in the costs within range.
-  this->Origin = 0.5 * (compact.Lower + compact.Upper);
+  this->Origin = compact.Centre();
   const double diagonal = compact.Diagonal();
   this->Diagonal = diagonal > 0.0 ? diagonal : 1.0;
   this->Scale = 1.0 / this->Diagonal;
@@ -1259,7 +1259,10 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
   // The surviving triangles and their points, in the compact order, back in input coordinates.
   std::vector<std::int32_t> used, kept;
   this->Mesh.Surviving(used, result.Triangles, kept);
-  const double scale8 = std::pow(this->Diagonal, 8); // error units: length⁸ (eq. 4–5)
+  // Error units: length⁸ (eq. 4–5). Beyond about 1e38 that power overflows; a zero error stays
+  // zero rather than becoming 0 · inf.
+  const double scale8 = std::pow(this->Diagonal, 8);
+  const auto inInputUnits = [scale8](double error) { return error != 0.0 ? error * scale8 : 0.0; };
   for (const std::int32_t v : used)
   {
     // Points no collapse moved keep their input coordinates bit for bit.
@@ -1267,7 +1270,7 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
                                   : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
-    result.PointError.push_back(this->VertexError[v] * scale8);
+    result.PointError.push_back(inInputUnits(this->VertexError[v]));
     if (this->BoundLimit >= 0.0)
     {
       result.PlaneDistance.push_back(this->Bound.Error(v) * this->Diagonal);
@@ -1289,7 +1292,7 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
       r = r >= 0 ? this->InputVertex[r] : -1;
     }
   }
-  result.SquareVolumeError *= scale8;
+  result.SquareVolumeError = inInputUnits(result.SquareVolumeError);
 }
 
 bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& result)

@@ -758,10 +758,12 @@ void VolumeCollapseLowersGuardRatherThanStop()
 
 void VolumeCollapseHugeAndTinyCoordinates()
 {
-  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600): the costs are
-  // computed in coordinates normalised by the box's diagonal, so the target is still met.
-  const Mesh sphere = Sphere(12);
-  for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600) })
+  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600), and coordinates
+  // up to ±2^1023 ≈ ±9e307, whose box diagonal exceeds the largest double: the costs are
+  // computed in normalised coordinates, so the target is still met, and the errors, in
+  // length⁸, are zero or positive (infinite where they overflow), never NaN.
+  const Mesh sphere = Scaled(Sphere(12), 2.0, -0.5); // centred at the origin, radius 1
+  for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600), std::ldexp(1.0, 1023) })
   {
     const Mesh scaled = Scaled(sphere, factor);
     meshsimp::VolumeCollapseOptions options;
@@ -772,6 +774,8 @@ void VolumeCollapseHugeAndTinyCoordinates()
     CHECK(std::abs(static_cast<double>(result.Triangles.size() / 3) - 0.2 * (sphere.Triangles.size() / 3)) <=
       0.01 * (sphere.Triangles.size() / 3) + 1);
     CHECK(InsideBox(result.Points, scaled));
+    CHECK(result.SquareVolumeError >= 0.0);
+    CHECK(std::all_of(result.PointError.begin(), result.PointError.end(), [](double e) { return e >= 0.0; }));
   }
 }
 

@@ -144,12 +144,13 @@ Mesh Fan(int n, bool closed = false)
   return mesh;
 }
 
-/// The mesh with every coordinate multiplied by factor (a power of two keeps them exact).
-Mesh Scaled(Mesh mesh, double factor)
+/// The mesh with every coordinate shifted, then multiplied by factor (a power of two keeps them
+/// exact).
+Mesh Scaled(Mesh mesh, double factor, double shift = 0.0)
 {
   for (double& c : mesh.Points)
   {
-    c *= factor;
+    c = (c + shift) * factor;
   }
   return mesh;
 }

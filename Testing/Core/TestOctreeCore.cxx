@@ -404,11 +404,12 @@ void SameResultForAnyThreadCount()
 
 void HugeAndTinyCoordinates()
 {
-  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600): the normalisation
-  // still gets the box's diagonal, so the same clustering comes out, scaled.
-  const Mesh sphere = Sphere(12);
+  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600), and coordinates
+  // up to ±2^1023 ≈ ±9e307, whose box diagonal exceeds the largest double: the normalisation
+  // still gets a usable diagonal, so the same clustering comes out, scaled.
+  const Mesh sphere = Scaled(Sphere(12), 2.0, -0.5); // centred at the origin, radius 1
   const OctreeClusteringResult reference = Simplify(sphere, Target(200));
-  for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600) })
+  for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600), std::ldexp(1.0, 1023) })
   {
     const Mesh scaled = Scaled(sphere, factor);
     const OctreeClusteringResult result = Simplify(scaled, Target(200));

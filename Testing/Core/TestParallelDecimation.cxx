@@ -186,10 +186,12 @@ void RoundsAreSuperIndependent()
 
 void HugeAndTinyCoordinates()
 {
-  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600), with and without
-  // a relative error bound: the mesh is scaled by a power of two, which keeps every rounding,
-  // so the result is the unscaled one's, scaled exactly.
-  const Mesh sphere = Sphere(12);
+  // Coordinates whose squares overflow (2^600 ≈ 4e180) or underflow (2^-600), and coordinates
+  // up to ±2^1023 ≈ ±9e307, whose box diagonal exceeds the largest double, with and without a
+  // relative error bound: the mesh is scaled by a power of two, which keeps every rounding, so
+  // the result is the unscaled one's, scaled exactly (importance beyond the largest double is
+  // infinite).
+  const Mesh sphere = Scaled(Sphere(12), 2.0, -0.5); // centred at the origin, radius 1
   for (const bool bound : { false, true })
   {
     ParallelDecimationOptions options = Reduction(0.8);
@@ -202,7 +204,7 @@ void HugeAndTinyCoordinates()
     ParallelDecimationResult reference;
     CHECK(meshsimp::ParallelDecimation(sphere.View(), options, reference));
     CHECK(reference.MovedPoints > 0);
-    for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600) })
+    for (const double factor : { std::ldexp(1.0, 600), std::ldexp(1.0, -600), std::ldexp(1.0, 1023) })
     {
       ParallelDecimationResult result;
       CHECK(meshsimp::ParallelDecimation(Scaled(sphere, factor).View(), options, result));

@@ -182,8 +182,9 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     CHECK(run.Warned && !run.Failed && run.Output->GetNumberOfCells() == 0);
   }
   // Tiny and huge meshes (double points scaled by 2^-600 and 2^600, beyond the range where
-  // squared lengths are finite and nonzero): simplified like the unit sphere.
-  for (const double factor : { std::ldexp(1.0, -600), std::ldexp(1.0, 600) })
+  // squared lengths are finite and nonzero, and up to ±8.5e307, where the box's diagonal
+  // exceeds the largest double): simplified like the unit sphere, to finite points.
+  for (const double factor : { std::ldexp(1.0, -600), std::ldexp(1.0, 600), std::ldexp(1.9, 1023) })
   {
     vtkSmartPointer<vtkPolyData> sphere = Sphere();
     vtkNew<vtkPoints> points;
@@ -199,6 +200,12 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     const double target = 0.5 * sphere->GetNumberOfPolys();
     CHECK(!run.Warned && !run.Failed);
     CHECK(std::abs(run.Output->GetNumberOfPolys() - target) <= countTolerance * target);
+    for (vtkIdType i = 0; i < run.Output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      run.Output->GetPoint(i, p);
+      CHECK(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    }
   }
   // A point or cell data array shorter than the points or cells it describes (copying from it
   // would read past its end) is left out with a warning; the rest is simplified as usual.
