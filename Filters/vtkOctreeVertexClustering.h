@@ -74,7 +74,9 @@ public:
   ///@{
   /**
    * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
-   * MaximumError.
+   * MaximumError. A count is met within 3 %, or as nearly as clustering can with a warning
+   * that says why (MaximumCellSize, points locked along piece borders under MPI, or no
+   * clustering near a very small count).
    */
   vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
   vtkGetMacro(TargetMode, int);

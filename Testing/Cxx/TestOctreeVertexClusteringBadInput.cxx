@@ -35,5 +35,26 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     CHECK(filter->GetOutput()->GetNumberOfPolys() > 0.9 * sphere->GetNumberOfPolys());
     CHECK(filter->GetAchievedMaximumError() < 1e-9);
   }
+  // A count the clustering cannot reach is met as nearly as it can, with a warning that says
+  // why: MaximumCellSize keeping cells small (over the target), or no count near a tiny one.
+  {
+    vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+    vtkNew<vtkOctreeVertexClustering> filter;
+    vtkNew<vtkTest::ErrorObserver> observer;
+    filter->AddObserver(vtkCommand::WarningEvent, observer);
+    filter->SetInputData(sphere);
+    filter->SetTargetReduction(0.9);
+    filter->SetMaximumCellSize(0.02);
+    filter->Update();
+    CHECK(filter->GetOutput()->GetNumberOfPolys() > 0.2 * sphere->GetNumberOfPolys());
+    CHECK(observer->GetWarning() && observer->GetWarningMessage().find("MaximumCellSize") != std::string::npos);
+    observer->Clear();
+    filter->SetMaximumCellSize(1.0);
+    filter->SetTargetModeToTriangleCount();
+    filter->SetTargetTriangleCount(2);
+    filter->Update();
+    CHECK(filter->GetOutput()->GetNumberOfPolys() < 2);
+    CHECK(observer->GetWarning() && observer->GetWarningMessage().find("nearest count") != std::string::npos);
+  }
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
