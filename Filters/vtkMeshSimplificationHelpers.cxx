@@ -321,6 +321,14 @@ bool CheckTarget(vtkAlgorithm* filter, int targetMode, double reduction, double 
   return true;
 }
 
+std::string LockedPointsNote(const std::vector<std::uint8_t>& locked, bool userArray)
+{
+  const auto count = std::count_if(locked.begin(), locked.end(), [](std::uint8_t flag) { return flag != 0; });
+  return count == 0 ? std::string()
+                    : " " + std::to_string(count) + " points are locked (shared with other pieces" +
+      (userArray ? ", or chosen by the locked-points array)." : ").");
+}
+
 bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints)
 {
   if (nonFinitePoints > 0)

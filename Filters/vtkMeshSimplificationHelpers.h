@@ -69,6 +69,10 @@ bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
 /// through): the reduction for TargetMode 0, the error bound for 2 (the filters share the modes).
 bool CheckTarget(vtkAlgorithm* filter, int targetMode, double reduction, double maximumError);
 
+/// For a warning about a target not reached: "" without locks, else how many points are locked
+/// (shared with other pieces under MPI, or, where the filter has one, chosen by the user's array).
+std::string LockedPointsNote(const std::vector<std::uint8_t>& locked, bool userArray);
+
 /// Warns about ignored non-finite points and about an abort; returns finished.
 bool ReportRun(vtkAlgorithm* filter, bool finished, std::int64_t nonFinitePoints);
 

@@ -85,11 +85,7 @@ int vtkOctreeVertexClustering::RequestData(
   else if (options.TargetTriangles >= 0 && numberOfTriangles > 1.03 * options.TargetTriangles)
   {
     std::ostringstream reasons;
-    const auto shared = std::count(locked.begin(), locked.end(), std::uint8_t(1));
-    if (shared > 0)
-    {
-      reasons << " " << shared << " points shared with other pieces stay clusters of their own.";
-    }
+    reasons << vtkMeshSimplificationHelpers::LockedPointsNote(locked, false);
     if (this->MaximumCellSize < 1.0)
     {
       reasons << " MaximumCellSize (" << this->MaximumCellSize << ") splits larger cells.";

@@ -81,7 +81,8 @@ int vtkParallelDecimation::RequestData(
   {
     vtkWarningMacro(<< "Stopped at " << numberOfTriangles << " triangles ("
                     << result.TargetTriangles
-                    << " asked for): no vertex is left that can be removed.");
+                    << " asked for): no vertex is left that can be removed."
+                    << vtkMeshSimplificationHelpers::LockedPointsNote(locked, true));
   }
   else if (result.Relaxations > 0)
   {

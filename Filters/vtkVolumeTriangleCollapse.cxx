@@ -130,7 +130,8 @@ int vtkVolumeTriangleCollapse::RequestData(
   {
     vtkWarningMacro(<< "Stopped at " << numberOfTriangles << " triangles ("
                     << result.TargetTriangles
-                    << " asked for): no collapse is left that keeps the mesh valid.");
+                    << " asked for): no collapse is left that keeps the mesh valid."
+                    << vtkMeshSimplificationHelpers::LockedPointsNote(locked, true));
   }
 
   vtkMeshSimplificationHelpers::SetOutputTriangles(input, output, triangles, result.Points,
