@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace meshsimp
 {
@@ -496,17 +497,38 @@ void CollapseMesh::SetSpan(std::int32_t v, const std::vector<std::int32_t>& tria
   this->Count[v] = size;
 }
 
-void CollapseMesh::CompactRefs()
+void CollapseMesh::CompactRefs(const ExecutionContext& context)
 {
-  std::vector<std::int32_t> refs;
-  refs.reserve(static_cast<std::size_t>(this->LiveRefs));
-  for (std::int32_t v = 0; v < this->NumberOfPoints(); ++v)
-  {
-    const std::int64_t start = static_cast<std::int64_t>(refs.size());
-    this->ForEachTriangle(v, [&](std::int32_t t) { refs.push_back(t); });
-    this->Start[v] = start;
-    this->Count[v] = static_cast<std::int32_t>(static_cast<std::int64_t>(refs.size()) - start);
-  }
+  // Each part of the vertices counts its spans' entries, then copies them from its offset.
+  const std::int64_t n = this->NumberOfPoints();
+  const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(context.Threads, n / 16384));
+  std::vector<std::int64_t> offsets(parts + 1, 0);
+  context.For(parts, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t part = begin; part < end; ++part)
+    {
+      std::int64_t entries = 0;
+      for (std::int64_t v = n * part / parts, last = n * (part + 1) / parts; v < last; ++v)
+      {
+        entries += this->Count[v];
+      }
+      offsets[part + 1] = entries;
+    }
+  }, n);
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::int32_t> refs(static_cast<std::size_t>(offsets[parts]));
+  context.For(parts, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t part = begin; part < end; ++part)
+    {
+      std::int64_t at = offsets[part];
+      for (std::int64_t v = n * part / parts, last = n * (part + 1) / parts; v < last; ++v)
+      {
+        const std::int32_t* span = this->Refs.data() + this->Start[v];
+        std::copy(span, span + this->Count[v], refs.data() + at);
+        this->Start[v] = at;
+        at += this->Count[v];
+      }
+    }
+  }, 4 * offsets[parts] + n);
   this->Refs = std::move(refs);
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
 }
@@ -719,7 +741,7 @@ std::int64_t CollapseMesh::ApplyIndependent(
   this->Undone.clear();
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {
-    this->CompactRefs();
+    this->CompactRefs(context);
   }
   return removed;
 }

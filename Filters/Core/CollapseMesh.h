@@ -272,7 +272,8 @@ private:
     std::int64_t& droppedRefs);
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
-  void CompactRefs();
+  /// Refs rewritten with only the live spans, in vertex order (by parts concurrently).
+  void CompactRefs(const ExecutionContext& context = {});
   MESHSIMP_PREFETCH_HELPER void PrefetchSpan(std::int32_t v) const { Prefetch(this->Refs.data() + this->Start[v]); }
 
   std::vector<Eigen::Vector3d> Points;

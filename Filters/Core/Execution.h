@@ -11,6 +11,7 @@
 #ifndef MeshSimplification_Execution_h
 #define MeshSimplification_Execution_h
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -49,6 +50,29 @@ struct ExecutionContext
     else
     {
       body(0, n);
+    }
+  }
+
+  /// Sorts values ascending: std::sort on parts concurrently, then merged. Values that compare
+  /// equal must be identical (as ids are) for the result not to depend on the thread count.
+  template <typename T>
+  void Sort(std::vector<T>& values) const
+  {
+    const std::int64_t n = static_cast<std::int64_t>(values.size());
+    const std::int64_t parts = std::min<std::int64_t>(this->Threads > 1 ? this->Threads : 1, n / 16384 + 1);
+    const auto at = [&](std::int64_t part) { return values.begin() + n * part / parts; };
+    this->For(parts, [&](std::int64_t first, std::int64_t last) {
+      for (std::int64_t part = first; part < last; ++part)
+      {
+        std::sort(at(part), at(part + 1));
+      }
+    }, 30 * n);
+    for (std::int64_t width = 1; width < parts; width *= 2)
+    {
+      for (std::int64_t part = 0; part + width < parts; part += 2 * width)
+      {
+        std::inplace_merge(at(part), at(part + width), at(std::min(part + 2 * width, parts)));
+      }
     }
   }
 

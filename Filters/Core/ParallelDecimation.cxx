@@ -914,7 +914,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     }
     // Removed in vertex order, which follows space (MakeCompactMesh): nearby vertices share
     // cache lines where the importance order would jump across the mesh.
-    std::sort(chosen.begin(), chosen.end());
+    this->Context.Sort(chosen);
     const std::int64_t count = static_cast<std::int64_t>(chosen.size());
     plans.resize(chosen.size());
     distances.resize(chosen.size());

@@ -148,45 +148,72 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
   });
 
   // Triangles by their lowest vertex (counting sort, input order among equals), corners kept,
-  // and each vertex's corners (counting sort by vertex) in the same two passes.
-  std::vector<std::int32_t> first(used + 1, 0);
+  // and each vertex's corners (counting sort by vertex) in the same two passes, over parts of
+  // the triangles concurrently: each part counts its own, then writes from cursors that start
+  // after the earlier parts' entries, so the result is the same for any number of parts.
+  const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(context.Threads, m / 65536));
+  std::vector<std::vector<std::int32_t>> nextTriangle(parts), nextCorner(parts);
+  auto forEachUsable = [&](std::int64_t part, auto&& f) {
+    for (std::int64_t t = m * part / parts, end = m * (part + 1) / parts; t < end; ++t)
+    {
+      if (usable[t])
+      {
+        f(t, vertexOf[input.Id(3 * t)], vertexOf[input.Id(3 * t + 1)], vertexOf[input.Id(3 * t + 2)]);
+      }
+    }
+  };
+  context.For(parts, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t part = begin; part < end; ++part)
+    {
+      std::vector<std::int32_t>& triangles = nextTriangle[part];
+      std::vector<std::int32_t>& corners = nextCorner[part];
+      triangles.assign(used, 0);
+      corners.assign(used, 0);
+      forEachUsable(part, [&](std::int64_t, std::int32_t a, std::int32_t b, std::int32_t c) {
+        ++triangles[std::min({ a, b, c })];
+        ++corners[a];
+        ++corners[b];
+        ++corners[c];
+      });
+    }
+  }, 10 * m);
+  // Counts become cursors: per vertex, the parts in order.
   VertexTriangleAdjacency& adjacency = mesh.Adjacency;
-  adjacency.Offsets.assign(used + 1, 0);
-  for (std::int64_t t = 0; t < m; ++t)
+  adjacency.Offsets.resize(used + 1);
+  std::int32_t triangleCount = 0, cornerCount = 0;
+  for (std::int64_t v = 0; v < used; ++v)
   {
-    if (usable[t])
+    adjacency.Offsets[v] = cornerCount;
+    for (std::int64_t part = 0; part < parts; ++part)
     {
-      const std::int32_t a = vertexOf[input.Id(3 * t)], b = vertexOf[input.Id(3 * t + 1)],
-                         c = vertexOf[input.Id(3 * t + 2)];
-      ++first[std::min({ a, b, c }) + 1];
-      ++adjacency.Offsets[a + 1];
-      ++adjacency.Offsets[b + 1];
-      ++adjacency.Offsets[c + 1];
+      const std::int32_t triangles = nextTriangle[part][v], corners = nextCorner[part][v];
+      nextTriangle[part][v] = triangleCount;
+      nextCorner[part][v] = cornerCount;
+      triangleCount += triangles;
+      cornerCount += corners;
     }
   }
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  std::partial_sum(adjacency.Offsets.begin(), adjacency.Offsets.end(), adjacency.Offsets.begin());
-  mesh.InputTriangle.resize(first.back());
-  mesh.Triangles.resize(3 * static_cast<std::size_t>(first.back()));
-  adjacency.Corners.resize(adjacency.Offsets.back());
-  std::vector<std::int32_t>& fill = code; // reused: the next free corner slot of each vertex
-  std::copy(adjacency.Offsets.begin(), adjacency.Offsets.end() - 1, fill.begin());
-  for (std::int64_t t = 0; t < m; ++t)
-  {
-    if (usable[t])
+  adjacency.Offsets[used] = cornerCount;
+  mesh.InputTriangle.resize(triangleCount);
+  mesh.Triangles.resize(3 * static_cast<std::size_t>(triangleCount));
+  adjacency.Corners.resize(cornerCount);
+  context.For(parts, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t part = begin; part < end; ++part)
     {
-      const std::int32_t a = vertexOf[input.Id(3 * t)], b = vertexOf[input.Id(3 * t + 1)],
-                         c = vertexOf[input.Id(3 * t + 2)];
-      const std::int32_t slot = first[std::min({ a, b, c })]++;
-      mesh.InputTriangle[slot] = static_cast<std::int32_t>(t);
-      mesh.Triangles[3 * static_cast<std::size_t>(slot)] = a;
-      mesh.Triangles[3 * static_cast<std::size_t>(slot) + 1] = b;
-      mesh.Triangles[3 * static_cast<std::size_t>(slot) + 2] = c;
-      adjacency.Corners[fill[a]++] = { slot, b, c };
-      adjacency.Corners[fill[b]++] = { slot, c, a };
-      adjacency.Corners[fill[c]++] = { slot, a, b };
+      std::vector<std::int32_t>& triangles = nextTriangle[part];
+      std::vector<std::int32_t>& corners = nextCorner[part];
+      forEachUsable(part, [&](std::int64_t t, std::int32_t a, std::int32_t b, std::int32_t c) {
+        const std::int32_t slot = triangles[std::min({ a, b, c })]++;
+        mesh.InputTriangle[slot] = static_cast<std::int32_t>(t);
+        mesh.Triangles[3 * static_cast<std::size_t>(slot)] = a;
+        mesh.Triangles[3 * static_cast<std::size_t>(slot) + 1] = b;
+        mesh.Triangles[3 * static_cast<std::size_t>(slot) + 2] = c;
+        adjacency.Corners[corners[a]++] = { slot, b, c };
+        adjacency.Corners[corners[b]++] = { slot, c, a };
+        adjacency.Corners[corners[c]++] = { slot, a, b };
+      });
     }
-  }
+  }, 30 * m);
   return mesh;
 }
 } // namespace

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace
@@ -55,18 +56,16 @@ Mesh Grid(int n)
 Mesh Cube(int n)
 {
   Mesh mesh;
-  std::vector<std::array<int, 3>> keys;
+  std::map<std::array<int, 3>, std::int32_t> ids; // grid position → point, in first-seen order
   auto point = [&](const Eigen::Vector3d& p) {
     const std::array<int, 3> key = { int(std::lround(p.x() * n)), int(std::lround(p.y() * n)),
       int(std::lround(p.z() * n)) };
-    const auto found = std::find(keys.begin(), keys.end(), key);
-    if (found != keys.end())
+    const auto inserted = ids.emplace(key, static_cast<std::int32_t>(ids.size()));
+    if (inserted.second)
     {
-      return static_cast<std::int32_t>(found - keys.begin());
+      mesh.Points.insert(mesh.Points.end(), { p.x(), p.y(), p.z() });
     }
-    keys.push_back(key);
-    mesh.Points.insert(mesh.Points.end(), { p.x(), p.y(), p.z() });
-    return static_cast<std::int32_t>(keys.size() - 1);
+    return inserted.first->second;
   };
   for (int axis = 0; axis < 3; ++axis)
   {

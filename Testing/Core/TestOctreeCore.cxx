@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <set>
 #include <thread>
 
@@ -501,6 +502,43 @@ void InvalidTrianglesAreSkipped()
   CHECK(result.VertexToPoint == std::vector<std::int32_t>(degenerate.Points.size() / 3, -1));
 }
 
+void CompactMeshAndSortSameForAnyThreadCount()
+{
+  // Over 196 608 triangles (three parts of the counting sorts) with unusable ones among them,
+  // and ids sorted in parts then merged: the serial results, whatever the thread count.
+  Mesh mesh = Sphere(130);
+  for (std::size_t t = 0; t < mesh.Triangles.size(); t += 3 * 997)
+  {
+    mesh.Triangles[t + 1] = mesh.Triangles[t]; // a repeated id
+  }
+  const meshsimp::CompactMesh serial = meshsimp::MakeCompactMesh(mesh.View());
+  CHECK(serial.InputTriangle.size() > 196608 && serial.InputTriangle.size() < mesh.Triangles.size() / 3);
+  std::vector<std::int32_t> ids(100000);
+  std::mt19937 random(5);
+  for (std::int32_t& id : ids)
+  {
+    id = static_cast<std::int32_t>(random() % 1000000);
+  }
+  std::vector<std::int32_t> sorted = ids;
+  std::sort(sorted.begin(), sorted.end());
+  for (const int threads : { 2, 3, 4 })
+  {
+    const auto context = meshsimp_test::Threaded<meshsimp::ExecutionContext>(threads);
+    const meshsimp::CompactMesh other = meshsimp::MakeCompactMesh(mesh.View(), context);
+    CHECK(other.Triangles == serial.Triangles && other.InputTriangle == serial.InputTriangle);
+    CHECK(other.InputVertex == serial.InputVertex && other.Points == serial.Points);
+    CHECK(other.Adjacency.Offsets == serial.Adjacency.Offsets);
+    CHECK(other.Adjacency.Corners.size() == serial.Adjacency.Corners.size() &&
+      std::equal(other.Adjacency.Corners.begin(), other.Adjacency.Corners.end(), serial.Adjacency.Corners.begin(),
+        [](const meshsimp::Corner& a, const meshsimp::Corner& b) {
+          return a.Triangle == b.Triangle && a.Next == b.Next && a.Previous == b.Previous;
+        }));
+    std::vector<std::int32_t> values = ids;
+    context.Sort(values);
+    CHECK(values == sorted);
+  }
+}
+
 void CompactMeshIsSpatialAndMapsBack()
 {
   // A grid with an unused point and an invalid triangle: the compact mesh keeps the usable part,
@@ -662,6 +700,7 @@ int main()
     { "LockedPointsStayTheirOwnClusters", LockedPointsStayTheirOwnClusters },
     { "AbortStopsEarly", AbortStopsEarly },
     { "CompactMeshIsSpatialAndMapsBack", CompactMeshIsSpatialAndMapsBack },
+    { "CompactMeshAndSortSameForAnyThreadCount", CompactMeshAndSortSameForAnyThreadCount },
     { "BoundaryCornersMarkEachBorderEdgeOnce", BoundaryCornersMarkEachBorderEdgeOnce },
   });
 }

@@ -259,6 +259,17 @@ void SameResultForAnyThreadCount()
     CHECK(meshsimp::ParallelDecimation(mesh->View(), Reduction(0.8), parts, noIndex));
     CHECK(serial.Points == parts.Points && serial.Triangles == parts.Triangles);
   }
+  // A mesh large enough for the set-up, the sorting of a round's set and the compaction of the
+  // adjacency to run in several parts: still the serial result.
+  const Mesh large = Sphere(84);
+  ParallelDecimationResult serial;
+  CHECK(meshsimp::ParallelDecimation(large.View(), Reduction(0.9), serial));
+  for (const int threads : { 2, 3 })
+  {
+    ParallelDecimationResult other;
+    CHECK(meshsimp::ParallelDecimation(large.View(), Reduction(0.9), other, meshsimp_test::Threaded<meshsimp::ExecutionContext>(threads)));
+    CHECK(serial.Points == other.Points && serial.Triangles == other.Triangles && serial.Importance == other.Importance);
+  }
 }
 
 void TargetsAndInputPoints()
