@@ -278,7 +278,7 @@ vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
       {
         locked.assign(static_cast<std::size_t>(numberOfPoints), 0);
       }
-      locked[border[i]] = 1;
+      locked[border[i]] = meshsimp::SharedPointLock;
       ++shared;
     }
   }
@@ -422,7 +422,10 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std:
   locked.resize(input->GetNumberOfPoints(), 0); // keeps the locks already set
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
-    locked[i] = locked[i] || array->GetComponent(i, 0) != 0.0 ? 1 : 0;
+    if (locked[i] == 0 && array->GetComponent(i, 0) != 0.0)
+    {
+      locked[i] = 1;
+    }
   }
   return true;
 }

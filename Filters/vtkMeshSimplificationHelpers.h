@@ -56,8 +56,10 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string&
  *
  * Under MPI (a global controller of several processes) also the points this piece shares with
  * other pieces: its border points whose coordinates are on another piece's border too, flagged
- * in pieceLocks (sized to the input's points when any is found). Locked, they keep the pieces'
- * common border as it is, so the simplified pieces still fit together without cracks. This is
+ * meshsimp::SharedPointLock in pieceLocks (sized to the input's points when any is found).
+ * Locked, they keep the pieces' common border as it is, so the simplified pieces still fit
+ * together without cracks; the collapse filters also join no two of them by a new edge, which
+ * another piece could make too (an edge of four triangles once the pieces are merged). This is
  * collective: every process calls it once per execution, whatever its input. Composite inputs
  * are simplified block by block, possibly a different number of blocks per process, so they are
  * not exchanged (their piece borders are not locked).

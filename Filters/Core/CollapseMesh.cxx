@@ -478,7 +478,39 @@ bool CollapseMesh::IsLegal(const CollapsePlan& plan, CheckScratch& scratch) cons
   {
     return false;
   }
+  if (this->HasSharedLocks && this->Locked[v[0]] == SharedPointLock && !this->KeepsSharedEdges(plan, scratch))
+  {
+    return false;
+  }
   return this->KeepsTrianglesValid(plan);
+}
+
+bool CollapseMesh::KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const
+{
+  // The kept vertex's neighbours are marked; a shared neighbour of a merged vertex that is not
+  // among them would be a new edge between two shared vertices.
+  const std::int32_t kept = plan.Vertices[0];
+  const std::uint32_t near = this->NewMarks(1, scratch);
+  this->ForEachTriangle(kept, [&](std::int32_t t) {
+    const std::int32_t* tri = this->Triangle(t);
+    scratch.Marks[tri[0]] = scratch.Marks[tri[1]] = scratch.Marks[tri[2]] = near;
+  });
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    scratch.Marks[plan.Vertices[i]] = near;
+  }
+  bool keeps = true;
+  for (int i = 1; i < plan.Count && keeps; ++i)
+  {
+    this->ForEachTriangle(plan.Vertices[i], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        keeps = keeps && (this->Locked[tri[k]] != SharedPointLock || scratch.Marks[tri[k]] == near);
+      }
+    });
+  }
+  return keeps;
 }
 
 void CollapseMesh::SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles)

@@ -19,6 +19,9 @@
  *
  * The checks (IsLegal) are those of the decimators built on the engine:
  * - locks: a locked vertex is never removed or moved (non-manifold vertices are always locked);
+ *   no collapse joins two vertices locked as shared with another piece of a distributed mesh by
+ *   an edge they did not have (the other piece might make the same edge, and the merged pieces
+ *   would get an edge of four triangles);
  * - the link condition, collapse by collapse: the common neighbours of the two sides are exactly
  *   the far corners of their shared triangles, so no edge gets three triangles and no "hidden
  *   cycle" (paper 004 Fig. 8) is closed; two boundary vertices are not joined across the
@@ -130,7 +133,12 @@ public:
     return this->Classes[v] == VertexClass::Boundary || this->Classes[v] == VertexClass::Corner;
   }
   bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
-  void Lock(std::int32_t v) { this->Locked[v] = 1; }
+  /// Locks v; shared: v is also in another piece of a distributed mesh (see IsLegal).
+  void Lock(std::int32_t v, bool shared = false)
+  {
+    this->Locked[v] = shared ? SharedPointLock : 1;
+    this->HasSharedLocks = this->HasSharedLocks || shared;
+  }
 
   /**
    * Memory hints for walking the triangles around each vertex of a list, in order: at position
@@ -271,6 +279,8 @@ private:
   int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo,
     std::int64_t& droppedRefs);
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
+  /// No new edge between the kept vertex and another shared one, when the kept one is shared.
+  bool KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
   /// Refs rewritten with only the live spans, in vertex order (by parts concurrently).
   void CompactRefs(const ExecutionContext& context = {});
@@ -281,7 +291,8 @@ private:
   std::vector<std::uint8_t> Alive;
   std::int64_t AliveCount = 0;
   std::vector<VertexClass> Classes;
-  std::vector<std::uint8_t> Locked;
+  std::vector<std::uint8_t> Locked; // 0, 1 or SharedPointLock
+  bool HasSharedLocks = false;
   std::vector<std::int64_t> Start; // per vertex, into Refs (which grows past 2^31 entries on
                                    // inputs of over 238 million triangles before a compaction)
   std::vector<std::int32_t> Count;

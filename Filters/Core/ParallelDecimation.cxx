@@ -808,7 +808,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     if ((this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
       (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
     {
-      this->Mesh.Lock(v);
+      this->Mesh.Lock(v, this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock);
     }
   }
 

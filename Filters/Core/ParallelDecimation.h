@@ -98,7 +98,8 @@ struct ParallelDecimationOptions
   double BoundaryCornerAngle = 60.0;
   /// Lock every boundary vertex.
   bool PreserveBoundary = false;
-  /// Optional, one flag per input point: nonzero points are never removed.
+  /// Optional, one flag per input point: nonzero points are never removed; SharedPointLock
+  /// marks points shared with another piece, never joined by a new edge.
   const std::uint8_t* LockedPoints = nullptr;
   /// Quadric by default: over the benchmark meshes its RMS distance is about half of
   /// AveragePlane's (which forgets the error of removed vertices, even accumulated).

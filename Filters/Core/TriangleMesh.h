@@ -31,6 +31,11 @@ namespace meshsimp
 /// counted in 32 bits. Callers check it; the VTK filters refuse larger inputs with an error.
 constexpr std::int64_t MaximumTriangles = std::numeric_limits<std::int32_t>::max() / 3;
 
+/// The value of a point's flag in the algorithms' LockedPoints that marks it as shared with
+/// another piece of a distributed mesh: locked, and (collapse filters) never joined to another
+/// shared point by a new edge, which the other piece could make too. Other nonzero values lock.
+constexpr std::uint8_t SharedPointLock = 2;
+
 /// A read-only view of an indexed triangle mesh: 3 coordinates per point, 3 ids per triangle.
 /// Input meshes may give single-precision points (FloatPoints instead of Points) and 64-bit ids
 /// (Triangles64 instead of Triangles), so that callers need not copy them; algorithms read an

@@ -951,7 +951,7 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
       (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
       (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
     {
-      this->Mesh.Lock(v);
+      this->Mesh.Lock(v, this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock);
     }
   }
 

@@ -107,7 +107,8 @@ struct VolumeCollapseOptions
   double FeatureCurvature = 0.3;
   /// Lock every boundary vertex (boundary corners are always locked).
   bool PreserveBoundary = false;
-  /// Optional, one flag per input point: nonzero points are locked (never removed or moved).
+  /// Optional, one flag per input point: nonzero points are locked (never removed or moved);
+  /// SharedPointLock marks points shared with another piece, never joined by a new edge.
   const std::uint8_t* LockedPoints = nullptr;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;

@@ -303,6 +303,22 @@ void LockedVerticesStay()
   CHECK(e.Mesh.IsLegal(e.Plan({ 12, 13 }, e.Point(12))));  // keeps it in place
 }
 
+void SharedVerticesGetNoNewEdge()
+{
+  // Vertices shared with another piece (12 and 14, two apart on the grid's middle row) are not
+  // joined by a new edge, which the other piece could make too: collapsing 13 into 12 would make
+  // (12, 14). A plain lock on 14 allows it, as does a collapse that brings no shared neighbour.
+  Engine shared(Grid(4));
+  shared.Mesh.Lock(shared.Id[12], true);
+  shared.Mesh.Lock(shared.Id[14], true);
+  CHECK(!shared.Mesh.IsLegal(shared.Plan({ 12, 13 }, shared.Point(12))));
+  CHECK(shared.Mesh.IsLegal(shared.Plan({ 12, 11 }, shared.Point(12))));
+  Engine plain(Grid(4));
+  plain.Mesh.Lock(plain.Id[12], true);
+  plain.Mesh.Lock(plain.Id[14]);
+  CHECK(plain.Mesh.IsLegal(plain.Plan({ 12, 13 }, plain.Point(12))));
+}
+
 void CollapseUndoRedo()
 {
   // Random legal edge and triangle collapses on a closed mesh keep it a closed 2-manifold;
@@ -870,6 +886,7 @@ int main()
     { "FoldOverAndDegenerateRejected", FoldOverAndDegenerateRejected },
     { "AngleGuardRejectsNewSlivers", AngleGuardRejectsNewSlivers },
     { "LockedVerticesStay", LockedVerticesStay },
+    { "SharedVerticesGetNoNewEdge", SharedVerticesGetNoNewEdge },
     { "CollapseUndoRedo", CollapseUndoRedo },
     { "IndependentCollapsesShareHubs", IndependentCollapsesShareHubs },
     { "AttributesFollowWeights", AttributesFollowWeights },
