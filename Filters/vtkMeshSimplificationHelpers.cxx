@@ -11,6 +11,7 @@
 #include "vtkPointData.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -20,6 +21,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolygon.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -122,6 +124,21 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
 
   // Cell ids of vtkPolyData run over verts, lines, polys, then strips.
   vtkIdType cellId = out.NumberOfVerts + out.NumberOfLines;
+  // Ghost cells (copies of another piece's cells under MPI) and hidden ones are not this
+  // piece's to simplify: they are skipped, and the border to them becomes this piece's border.
+  vtkUnsignedCharArray* ghosts = input->GetCellGhostArray();
+  const unsigned char ghostBits = vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+  const vtkIdType numberOfCells = input->GetNumberOfCells();
+  if (ghosts && ghosts->GetNumberOfValues() < numberOfCells)
+  {
+    ghosts = nullptr; // PrepareTriangles leaves out such arrays before
+  }
+  bool anyGhost = false;
+  for (vtkIdType id = cellId; ghosts && id < numberOfCells && !anyGhost; ++id)
+  {
+    anyGhost = (ghosts->GetValue(id) & ghostBits) != 0;
+  }
+  auto isGhost = [&](vtkIdType id) { return anyGhost && (ghosts->GetValue(id) & ghostBits) != 0; };
   auto add = [&](vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType source) {
     out.Triangles.push_back(static_cast<std::int32_t>(a));
     out.Triangles.push_back(static_cast<std::int32_t>(b));
@@ -129,7 +146,7 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
     out.SourceCells.push_back(source);
   };
   vtkCellArray* polyCells = input->GetPolys();
-  if (polyCells->IsHomogeneous() == 3 && input->GetNumberOfStrips() == 0)
+  if (polyCells->IsHomogeneous() == 3 && input->GetNumberOfStrips() == 0 && !anyGhost)
   {
     // Triangles only, the common case: the connectivity is viewed in place.
     const vtkIdType count = polyCells->GetNumberOfCells();
@@ -157,6 +174,10 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   {
     vtkIdType size;
     const vtkIdType* ids;
+    if (isGhost(cellId))
+    {
+      continue;
+    }
     polys->GetCurrentCell(size, ids);
     if (size == 3)
     {
@@ -188,6 +209,10 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   {
     vtkIdType size;
     const vtkIdType* ids;
+    if (isGhost(cellId))
+    {
+      continue;
+    }
     strips->GetCurrentCell(size, ids);
     for (vtkIdType k = 0; k + 2 < size; ++k)
     {

@@ -43,6 +43,8 @@ struct TriangleInput
   }
 };
 
+/// The input's triangles (polygons and strips triangulated), without ghost and hidden cells
+/// (vtkGhostType DUPLICATECELL or HIDDENCELL: another piece's copies under MPI, or blanked).
 /// False with a message in error when the input cannot be processed at all (too large).
 bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string& error);
 

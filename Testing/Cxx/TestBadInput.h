@@ -7,6 +7,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkNew.h"
@@ -16,6 +17,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSphereSource.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "TestVTKHelpers.h"
 
@@ -227,6 +229,46 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     CHECK(!run.Output->GetCellData()->GetAbstractArray("short"));
     CHECK(run.Output->GetPointData()->GetNormals() || !sphere->GetPointData()->GetNormals());
     CHECK(data->GetAbstractArray("short") == shortArray.Get()); // the input keeps it
+  }
+  // Ghost cells (another piece's, under MPI) are not simplified: the upper cap of the sphere is
+  // marked as ghosts (and one cell as hidden), so the output covers the rest only, reduced by
+  // the reduction asked for, without a warning.
+  {
+    vtkSmartPointer<vtkPolyData> sphere = Sphere();
+    vtkNew<vtkUnsignedCharArray> ghosts;
+    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    ghosts->SetNumberOfValues(sphere->GetNumberOfCells());
+    vtkIdType owned = 0;
+    double ownedTop = -1.0;
+    for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
+    {
+      double centroidZ = 0.0;
+      vtkIdType size;
+      const vtkIdType* ids;
+      sphere->GetCellPoints(c, size, ids);
+      for (vtkIdType k = 0; k < size; ++k)
+      {
+        centroidZ += sphere->GetPoint(ids[k])[2] / static_cast<double>(size);
+      }
+      const bool ghost = centroidZ > 0.2 || c == 0;
+      ghosts->SetValue(c, ghost ? (c == 0 ? vtkDataSetAttributes::HIDDENCELL : vtkDataSetAttributes::DUPLICATECELL) : 0);
+      for (vtkIdType k = 0; k < size && !ghost; ++k)
+      {
+        ownedTop = std::max(ownedTop, sphere->GetPoint(ids[k])[2]);
+      }
+      owned += ghost ? 0 : 1;
+    }
+    sphere->GetCellData()->AddArray(ghosts);
+    const Run run = Simplify(make, sphere);
+    CHECK(!run.Warned && !run.Failed);
+    CHECK(owned < 0.8 * sphere->GetNumberOfCells());
+    CHECK(std::abs(run.Output->GetNumberOfPolys() - 0.5 * owned) <= countTolerance * 0.5 * owned + 1);
+    double top = -1.0;
+    for (vtkIdType i = 0; i < run.Output->GetNumberOfPoints(); ++i)
+    {
+      top = std::max(top, run.Output->GetPoint(i)[2]);
+    }
+    CHECK(top <= ownedTop + 1e-9);
   }
   // A reduction that is not a number (vtkSetClampMacro lets NaN through): a clear error.
   {
