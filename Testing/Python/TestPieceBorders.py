@@ -12,7 +12,8 @@ unlocked: 126 in all).
 The cow is then dealt out in seven oblique stripes, alternately to the processes, so that each
 piece is several strips whose two borders a collapse could join: the collapse filters join no two
 shared points by a new edge (the other piece could make the same one), so the merged pieces have
-no edge of four triangles (3 without that rule, from the volume filter) and no open edge.
+no edge of four triangles (3 without that rule, from the volume filter) and no open edge. With a
+layer of ghost cells added to each piece the result is the same (ghost cells are not simplified).
 """
 import os
 
@@ -117,10 +118,16 @@ for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimat
     if name != "octree":
         check(not open_edges, "%s: the simplified pieces close up, %d open edges" % (name, len(open_edges)))
 stripes = cow_pieces("int((x(f) * 0.738 + y(f)) * 7) % count == piece")
+# With a layer of ghost cells (the neighbour's triangles, flagged in vtkGhostType) the filters
+# simplify each piece's own triangles only: the same closed result.
+ghosted = GhostCellsGenerator(Input=stripes, MinimumNumberOfGhosts=1, BuildIfRequired=0)
 for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation)):
     written, cells, open_edges = merged("stripes_" + name, F(Input=stripes))
     check(written == 2 and 0 < cells < 5804, "%s on stripes: 2 pieces, simplified, got %d" % (name, cells))
     check(not open_edges, "%s on stripes: the simplified pieces close up, %d open or shared edges" % (name, len(open_edges)))
+    ghost_written, ghost_cells, ghost_open = merged("ghosts_" + name, F(Input=ghosted))
+    check(ghost_cells == cells and not ghost_open,
+          "%s on stripes with ghost cells: %d triangles (%d without), %d open or shared edges" % (name, ghost_cells, cells, len(ghost_open)))
 # pvbatch ends MPI when the script returns; exiting from one process aborts the others, which
 # is only right for a failure.
 if failures:
