@@ -90,9 +90,12 @@ int vtkOctreeVertexClustering::RequestData(
     {
       reasons << " MaximumCellSize (" << this->MaximumCellSize << ") splits larger cells.";
     }
+    if (reasons.tellp() == 0)
+    {
+      reasons << " the nearest count vertex clustering gives on this input.";
+    }
     vtkWarningMacro(<< "Reached " << numberOfTriangles << " triangles, more than the "
-                    << options.TargetTriangles << " asked for:"
-                    << (reasons.tellp() > 0 ? reasons.str() : std::string(" the nearest count vertex clustering gives on this input.")));
+                    << options.TargetTriangles << " asked for:" << reasons.str());
   }
 
   vtkMeshSimplificationHelpers::SetOutputTriangles(input, output, triangles, result.Points,

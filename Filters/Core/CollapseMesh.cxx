@@ -478,7 +478,8 @@ bool CollapseMesh::IsLegal(const CollapsePlan& plan, CheckScratch& scratch) cons
   {
     return false;
   }
-  if (this->HasSharedLocks && this->Locked[v[0]] == SharedPointLock && !this->KeepsSharedEdges(plan, scratch))
+  if (this->HasSharedLocks && this->Locked[v[0]] == SharedPointLock &&
+    !this->KeepsSharedEdges(plan, scratch))
   {
     return false;
   }

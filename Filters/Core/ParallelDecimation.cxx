@@ -799,8 +799,7 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   if (this->Options.MaximumError >= 0.0)
   {
     this->Bound.Build(this->Mesh);
-    this->BoundLimit =
-      this->Options.RelativeError ? this->Options.MaximumError * meshDiagonal : this->Options.MaximumError * this->Scale;
+    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? meshDiagonal : this->Scale);
   }
   const std::int32_t n = this->Mesh.NumberOfPoints();
   for (std::int32_t v = 0; v < n; ++v)
@@ -808,7 +807,9 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
     if ((this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
       (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
     {
-      this->Mesh.Lock(v, this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock);
+      const bool shared =
+        this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock;
+      this->Mesh.Lock(v, shared);
     }
   }
 
@@ -1155,7 +1156,8 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
     result.PointSource.push_back(this->InputVertex[v]);
     const double importance = this->Importance[v] / this->Scale;
-    result.Importance.push_back(this->Importance[v] < Never ? (squared ? importance / this->Scale : importance) : -1.0);
+    result.Importance.push_back(
+      this->Importance[v] < Never ? (squared ? importance / this->Scale : importance) : -1.0);
     if (this->BoundLimit >= 0.0)
     {
       result.PlaneDistance.push_back(this->Bound.Error(v) / this->Scale);

@@ -951,7 +951,9 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
       (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
       (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
     {
-      this->Mesh.Lock(v, this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock);
+      const bool shared =
+        this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock;
+      this->Mesh.Lock(v, shared);
     }
   }
 

@@ -251,7 +251,8 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
         centroidZ += sphere->GetPoint(ids[k])[2] / static_cast<double>(size);
       }
       const bool ghost = centroidZ > 0.2 || c == 0;
-      ghosts->SetValue(c, ghost ? (c == 0 ? vtkDataSetAttributes::HIDDENCELL : vtkDataSetAttributes::DUPLICATECELL) : 0);
+      const int flag = c == 0 ? vtkDataSetAttributes::HIDDENCELL : vtkDataSetAttributes::DUPLICATECELL;
+      ghosts->SetValue(c, ghost ? flag : 0);
       for (vtkIdType k = 0; k < size && !ghost; ++k)
       {
         ownedTop = std::max(ownedTop, sphere->GetPoint(ids[k])[2]);
