@@ -46,6 +46,22 @@ def check_error_bound(simplifier, source, input_triangles):
           "bounds 0.01 and 0.002 give %d and %d triangles" % (loose, tight))
 
 
+def check_unlocked_after_octree(simplifier_class, octree_class, source, tolerance):
+    """No point is locked by default, also after a filter whose output has active point scalars
+    (the octree's ClusterError, nonzero nearly everywhere, which ParaView would pick): the
+    octree's output is reduced by 90 % within tolerance. The classes are the plugin's proxies."""
+    clustered = octree_class(Input=source, TargetReduction=0.5)
+    clustered.UpdatePipeline()  # as in the GUI, where the octree is applied first
+    chained = simplifier_class(Input=clustered)
+    locks = list(chained.LockedPoints)
+    check(locks == ["POINTS", "None"], "no locked points by default after the octree, got %s" % locks)
+    chained.UpdatePipeline()
+    target = 0.1 * clustered.GetDataInformation().GetNumberOfCells()
+    got = chained.GetDataInformation().GetNumberOfCells()
+    check(abs(got - target) <= tolerance * target + 1,
+          "after the octree: %d triangles for 90 %% reduction (%d)" % (got, round(target)))
+
+
 def finish():
     print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
     sys.exit(1 if failures else 0)
