@@ -2,8 +2,6 @@
 #include "vtkMeshSimplificationHelpers.h"
 
 #include "vtkAlgorithm.h"
-#include "vtkAlgorithmOutput.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkMultiProcessController.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -28,13 +26,14 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <limits>
 #include <atomic>
+#include <cmath>
 #include <condition_variable>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 namespace vtkMeshSimplificationHelpers
 {
@@ -236,89 +235,100 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& out, std::string& error
   return true;
 }
 
-namespace
+void LockSharedPoints(const std::vector<vtkPolyData*>& pieces, const std::vector<vtkIdType>& keys,
+  std::vector<std::vector<std::uint8_t>>& locks)
 {
-/// PrepareTriangles' exchange of piece borders under MPI (see there); triangles is null after an
-/// input error. Returns the number of points locked here.
-vtkIdType LockPieceBorders(vtkAlgorithm* filter, const TriangleInput* triangles,
-  vtkIdType numberOfPoints, std::vector<std::uint8_t>& locked)
-{
+  locks.assign(pieces.size(), std::vector<std::uint8_t>());
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (!controller || controller->GetNumberOfProcesses() < 2 || filter->GetNumberOfInputConnections(0) < 1)
+  const int processes = controller ? controller->GetNumberOfProcesses() : 1;
+  if (processes < 2 && pieces.size() < 2)
   {
-    return 0;
+    return;
   }
-  vtkAlgorithmOutput* connection = filter->GetInputConnection(0, 0);
-  if (vtkCompositeDataSet::SafeDownCast(
-        connection->GetProducer()->GetOutputDataObject(connection->GetIndex())))
+  // Each piece's border points (input ids), from its usable triangles: the vertices with a
+  // boundary edge; sent as (key, x, y, z, piece).
+  std::vector<std::vector<std::int32_t>> borders(pieces.size());
+  std::vector<double> sent;
+  for (std::size_t i = 0; i < pieces.size(); ++i)
   {
-    return 0;
-  }
-  // This piece's border points (input ids), from its usable triangles: the vertices with a
-  // boundary edge.
-  std::vector<std::int32_t> border;
-  std::vector<double> coordinates;
-  if (triangles)
-  {
-    const meshsimp::CompactMesh mesh = meshsimp::MakeCompactMesh(triangles->View);
+    TriangleInput triangles;
+    std::string problem;
+    if (!ExtractTriangles(pieces[i], triangles, problem))
+    {
+      continue; // the piece's own run reports the problem
+    }
+    const meshsimp::CompactMesh mesh = meshsimp::MakeCompactMesh(triangles.View);
     std::vector<std::uint8_t> flags;
     for (std::size_t v = 0; v < mesh.Points.size(); ++v)
     {
       flags.resize(static_cast<std::size_t>(mesh.Adjacency.Offsets[v + 1] - mesh.Adjacency.Offsets[v]));
       if (meshsimp::MarkBoundaryCorners(mesh.Adjacency, static_cast<std::int64_t>(v), flags.data()))
       {
-        border.push_back(mesh.InputVertex[v]);
-        coordinates.insert(coordinates.end(), { mesh.Points[v].x(), mesh.Points[v].y(), mesh.Points[v].z() });
+        borders[i].push_back(mesh.InputVertex[v]);
+        const Eigen::Vector3d& x = mesh.Points[v];
+        sent.insert(sent.end(), { static_cast<double>(keys[i]), x.x(), x.y(), x.z(), static_cast<double>(i) });
       }
     }
   }
-  // Every piece's border points to every process.
-  const int processes = controller->GetNumberOfProcesses();
-  const int self = controller->GetLocalProcessId();
-  vtkIdType length = static_cast<vtkIdType>(coordinates.size());
-  std::vector<vtkIdType> lengths(processes), offsets(processes + 1, 0);
-  controller->AllGather(&length, lengths.data(), 1);
+  // Every process's border points to every process (or this one's alone, without MPI).
+  const int self = processes > 1 ? controller->GetLocalProcessId() : 0;
+  std::vector<vtkIdType> lengths(processes, static_cast<vtkIdType>(sent.size())), offsets(processes + 1, 0);
+  if (processes > 1)
+  {
+    vtkIdType length = static_cast<vtkIdType>(sent.size());
+    controller->AllGather(&length, lengths.data(), 1);
+  }
   for (int i = 0; i < processes; ++i)
   {
     offsets[i + 1] = offsets[i] + lengths[i];
   }
-  std::vector<double> all(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
-  controller->AllGatherV(coordinates.data(), all.data(), length, lengths.data(), offsets.data());
-  std::vector<std::array<double, 3>> others;
-  for (int i = 0; i < processes; ++i)
+  std::vector<double> all(sent);
+  if (processes > 1)
   {
-    for (vtkIdType j = offsets[i]; i != self && j < offsets[i + 1]; j += 3)
+    all.resize(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
+    controller->AllGatherV(sent.data(), all.data(), lengths[self], lengths.data(), offsets.data());
+  }
+  // A point is shared when another piece of its key (on another process, or another piece of
+  // this one) has a border point there: (key, x, y, z) then the piece's owner, sorted.
+  using Entry = std::pair<std::array<double, 4>, std::int64_t>;
+  std::vector<Entry> entries;
+  for (int process = 0; process < processes; ++process)
+  {
+    for (vtkIdType j = offsets[process]; j < offsets[process + 1]; j += 5)
     {
-      others.push_back({ all[j], all[j + 1], all[j + 2] });
+      const std::int64_t owner = static_cast<std::int64_t>(process) << 32 | static_cast<std::int64_t>(all[j + 4]);
+      entries.push_back({ { all[j], all[j + 1], all[j + 2], all[j + 3] }, owner });
     }
   }
-  std::sort(others.begin(), others.end());
-  vtkIdType shared = 0;
-  for (std::size_t i = 0; i < border.size(); ++i)
+  std::sort(entries.begin(), entries.end());
+  const auto byPlace = [](const Entry& a, const Entry& b) { return a.first < b.first; };
+  const double* mine = sent.data();
+  for (std::size_t i = 0; i < pieces.size(); ++i)
   {
-    const std::array<double, 3> x = { coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2] };
-    if (std::binary_search(others.begin(), others.end(), x))
+    const std::int64_t me = static_cast<std::int64_t>(self) << 32 | static_cast<std::int64_t>(i);
+    for (const std::int32_t point : borders[i])
     {
-      if (locked.empty())
+      const auto same = std::equal_range(entries.begin(), entries.end(),
+        Entry{ { mine[0], mine[1], mine[2], mine[3] }, 0 }, byPlace);
+      if (std::any_of(same.first, same.second, [me](const Entry& e) { return e.second != me; }))
       {
-        locked.assign(static_cast<std::size_t>(numberOfPoints), 0);
+        if (locks[i].empty())
+        {
+          locks[i].assign(static_cast<std::size_t>(pieces[i]->GetNumberOfPoints()), 0);
+        }
+        locks[i][point] = meshsimp::SharedPointLock;
       }
-      locked[border[i]] = meshsimp::SharedPointLock;
-      ++shared;
+      mine += 5;
     }
   }
-  return shared;
-}
 }
 
-bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
-  TriangleInput& triangles, int& requestResult, std::vector<std::uint8_t>& pieceLocks)
+bool PrepareTriangles(
+  vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input, TriangleInput& triangles, int& requestResult)
 {
   input = WithUsableAttributes(filter, input);
   std::string problem;
-  const bool extracted = ExtractTriangles(input, triangles, problem);
-  LockPieceBorders(filter, extracted ? &triangles : nullptr, input->GetNumberOfPoints(), pieceLocks);
-  if (!extracted)
+  if (!ExtractTriangles(input, triangles, problem))
   {
     vtkErrorWithObjectMacro(filter, << "Cannot simplify: " << problem << ".");
     requestResult = 0;

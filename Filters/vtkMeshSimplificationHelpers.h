@@ -55,19 +55,22 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string&
  * warning: input becomes a shallow copy without them (the input itself is never changed). False
  * when there is nothing to simplify; then requestResult is what RequestData returns (0 after an
  * error, 1 for an empty input).
- *
- * Under MPI (a global controller of several processes) also the points this piece shares with
- * other pieces: its border points whose coordinates are on another piece's border too, flagged
- * meshsimp::SharedPointLock in pieceLocks (sized to the input's points when any is found).
- * Locked, they keep the pieces' common border as it is, so the simplified pieces still fit
- * together without cracks; the collapse filters also join no two of them by a new edge, which
- * another piece could make too (an edge of four triangles once the pieces are merged). This is
- * collective: every process calls it once per execution, whatever its input. Composite inputs
- * are simplified block by block, possibly a different number of blocks per process, so they are
- * not exchanged (their piece borders are not locked).
  */
-bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
-  TriangleInput& triangles, int& requestResult, std::vector<std::uint8_t>& pieceLocks);
+bool PrepareTriangles(
+  vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input, TriangleInput& triangles, int& requestResult);
+
+/**
+ * Under MPI (a global controller of several processes), the points each piece shares with the
+ * piece of the same key on another process: its border points whose coordinates are on such a
+ * piece's border too. locks[i] flags them meshsimp::SharedPointLock in pieces[i] (sized to its
+ * points when any is found, else empty). Locked, they keep the pieces' common border as it is,
+ * so the simplified pieces still fit together without cracks; the collapse filters also join no
+ * two of them by a new edge, which the other piece could make too (an edge of four triangles
+ * once the pieces are merged). Collective: every process calls it once per execution, with
+ * whatever pieces it holds (keys are the leaves' flat indices of a composite input).
+ */
+void LockSharedPoints(const std::vector<vtkPolyData*>& pieces, const std::vector<vtkIdType>& keys,
+  std::vector<std::vector<std::uint8_t>>& locks);
 
 /// False, with an error, when the target in force is not a number (vtkSetClampMacro lets NaN
 /// through): the reduction for TargetMode 0, the error bound for 2 (the filters share the modes).

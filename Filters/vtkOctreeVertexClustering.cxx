@@ -21,17 +21,15 @@ vtkStandardNewMacro(vtkOctreeVertexClustering);
 
 vtkOctreeVertexClustering::vtkOctreeVertexClustering() = default;
 
-int vtkOctreeVertexClustering::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkOctreeVertexClustering::SimplifyPiece(
+  vtkPolyData* inputPiece, vtkPolyData* output, std::vector<std::uint8_t>& locked)
 {
-  vtkSmartPointer<vtkPolyData> input = vtkPolyData::GetData(inputVector[0]); // PrepareTriangles may replace it
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkSmartPointer<vtkPolyData> input = inputPiece; // PrepareTriangles may replace it
   this->AchievedMaximumError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
-  std::vector<std::uint8_t> locked; // piece borders under MPI
-  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult, locked))
+  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
   {
     return requestResult;
   }

@@ -37,8 +37,8 @@
  *
  * Under MPI the points this piece shares with other pieces (border points whose coordinates are
  * on another piece's border, exchanged through the global controller) are clusters of their own
- * at their input coordinates, so the simplified pieces still meet along their common border;
- * not for composite inputs, whose blocks are simplified one by one.
+ * at their input coordinates, so the simplified pieces still meet along their common border,
+ * also per block of a composite input (vtkMeshSimplificationFilter).
  *
  * Every point-data array is carried to the output as the area-weighted average over each
  * cluster (normals are recomputed from the output triangles); cell data is copied from the
@@ -55,13 +55,13 @@
 #define vtkOctreeVertexClustering_h
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMeshSimplificationFilter.h"
 
-class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOctreeVertexClustering : public vtkPolyDataAlgorithm
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOctreeVertexClustering : public vtkMeshSimplificationFilter
 {
 public:
   static vtkOctreeVertexClustering* New();
-  vtkTypeMacro(vtkOctreeVertexClustering, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkOctreeVertexClustering, vtkMeshSimplificationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum TargetModes
@@ -187,7 +187,7 @@ protected:
   vtkOctreeVertexClustering();
   ~vtkOctreeVertexClustering() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int SimplifyPiece(vtkPolyData* input, vtkPolyData* output, std::vector<std::uint8_t>& pieceLocks) override;
 
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;

@@ -20,18 +20,16 @@ vtkStandardNewMacro(vtkParallelDecimation);
 
 vtkParallelDecimation::vtkParallelDecimation() = default;
 
-int vtkParallelDecimation::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkParallelDecimation::SimplifyPiece(
+  vtkPolyData* inputPiece, vtkPolyData* output, std::vector<std::uint8_t>& locked)
 {
-  vtkSmartPointer<vtkPolyData> input = vtkPolyData::GetData(inputVector[0]); // PrepareTriangles may replace it
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkSmartPointer<vtkPolyData> input = inputPiece; // PrepareTriangles may replace it
   this->Rounds = 0;
   this->AchievedMaximumError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
-  std::vector<std::uint8_t> locked; // piece borders under MPI, then the user's locks
-  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult, locked))
+  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
   {
     return requestResult;
   }

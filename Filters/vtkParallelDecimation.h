@@ -51,10 +51,10 @@
  * selected as input array 0.
  * Under MPI the points this piece shares with other pieces (border points whose coordinates are
  * on another piece's border, exchanged through the global controller) are locked too, so the
- * simplified pieces still fit together; not for composite inputs, whose blocks are simplified
- * one by one. Polygons are triangulated and strips decomposed first; vertex and line cells are
- * dropped (a warning says how many); triangles with repeated point ids or non-finite points are
- * ignored.
+ * simplified pieces still fit together, also per block of a composite input
+ * (vtkMeshSimplificationFilter). Polygons are triangulated and strips decomposed first; vertex
+ * and line cells are dropped (a warning says how many); triangles with repeated point ids or
+ * non-finite points are ignored.
  *
  * Point data is copied from each surviving point; normals are recomputed. Cell data is copied
  * from the input cell of each surviving triangle. The point array "Importance" holds each output
@@ -68,13 +68,13 @@
 #define vtkParallelDecimation_h
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMeshSimplificationFilter.h"
 
-class MESHSIMPLIFICATIONFILTERS_EXPORT vtkParallelDecimation : public vtkPolyDataAlgorithm
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkParallelDecimation : public vtkMeshSimplificationFilter
 {
 public:
   static vtkParallelDecimation* New();
-  vtkTypeMacro(vtkParallelDecimation, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkParallelDecimation, vtkMeshSimplificationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum TargetModes
@@ -247,7 +247,7 @@ protected:
   vtkParallelDecimation();
   ~vtkParallelDecimation() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int SimplifyPiece(vtkPolyData* input, vtkPolyData* output, std::vector<std::uint8_t>& pieceLocks) override;
 
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;

@@ -66,18 +66,16 @@ void InterpolatePointData(vtkPointData* inPD, vtkPointData* outPD,
 }
 }
 
-int vtkVolumeTriangleCollapse::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkVolumeTriangleCollapse::SimplifyPiece(
+  vtkPolyData* inputPiece, vtkPolyData* output, std::vector<std::uint8_t>& locked)
 {
-  vtkSmartPointer<vtkPolyData> input = vtkPolyData::GetData(inputVector[0]); // PrepareTriangles may replace it
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkSmartPointer<vtkPolyData> input = inputPiece; // PrepareTriangles may replace it
   this->SquareVolumeError = 0.0;
   this->AchievedMaximumError = 0.0;
 
   vtkMeshSimplificationHelpers::TriangleInput triangles;
   int requestResult = 1;
-  std::vector<std::uint8_t> locked; // piece borders under MPI, then the user's locks
-  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult, locked))
+  if (!vtkMeshSimplificationHelpers::PrepareTriangles(this, input, triangles, requestResult))
   {
     return requestResult;
   }

@@ -36,8 +36,8 @@
  * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked").
  * Under MPI the points this piece shares with other pieces (border points whose coordinates are
  * on another piece's border, exchanged through the global controller) are locked too, so the
- * simplified pieces still fit together; not for composite inputs, whose blocks are simplified
- * one by one.
+ * simplified pieces still fit together, also per block of a composite input
+ * (vtkMeshSimplificationFilter).
  *
  * The triangle count is met within 1 % or one triangle (TargetReduction or
  * TargetTriangleCount); the filter stops early, with a warning, only when no legal collapse is
@@ -66,13 +66,13 @@
 #define vtkVolumeTriangleCollapse_h
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMeshSimplificationFilter.h"
 
-class MESHSIMPLIFICATIONFILTERS_EXPORT vtkVolumeTriangleCollapse : public vtkPolyDataAlgorithm
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkVolumeTriangleCollapse : public vtkMeshSimplificationFilter
 {
 public:
   static vtkVolumeTriangleCollapse* New();
-  vtkTypeMacro(vtkVolumeTriangleCollapse, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkVolumeTriangleCollapse, vtkMeshSimplificationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum TargetModes
@@ -255,7 +255,7 @@ protected:
   vtkVolumeTriangleCollapse();
   ~vtkVolumeTriangleCollapse() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int SimplifyPiece(vtkPolyData* input, vtkPolyData* output, std::vector<std::uint8_t>& pieceLocks) override;
 
   int TargetMode = TARGET_REDUCTION;
   double TargetReduction = 0.9;

@@ -172,5 +172,6 @@ int TestParallelDecimation(int, char*[])
   TestLocks(cow);
   // An open mesh at a triangle count, its rim kept.
   meshsimp_test::CheckPreservedRim<vtkParallelDecimation>(0.02);
+  meshsimp_test::CheckPartitionedInput<vtkParallelDecimation>(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -3,7 +3,14 @@
 #ifndef MeshSimplification_TestVTKHelpers_h
 #define MeshSimplification_TestVTKHelpers_h
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkIdList.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPartitionedDataSet.h"
 #include "vtkMath.h"
 #include "vtkDoubleArray.h"
 #include "vtkFeatureEdges.h"
@@ -174,6 +181,76 @@ inline std::set<std::array<double, 3>> PointSet(vtkPolyData* mesh)
     points.insert(p);
   }
   return points;
+}
+
+/// The cow as a vtkPartitionedDataSet of its two halves (x < 0 and x >= 0): the partitions are
+/// simplified each, and the points they share are locked, so that the output's partitions still
+/// close up into one closed surface (merged by coordinates); a multiblock of the same halves
+/// treats them as separate datasets, which open at the cut.
+template <typename Filter>
+void CheckPartitionedInput(vtkPolyData* cow)
+{
+  vtkNew<vtkPartitionedDataSet> halves;
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (unsigned int half = 0; half < 2; ++half)
+  {
+    vtkNew<vtkIdList> keep;
+    for (vtkIdType c = 0; c < cow->GetNumberOfCells(); ++c)
+    {
+      double centre[3] = { 0.0, 0.0, 0.0 };
+      vtkIdType size;
+      const vtkIdType* ids;
+      cow->GetCellPoints(c, size, ids);
+      for (vtkIdType k = 0; k < size; ++k)
+      {
+        centre[0] += cow->GetPoint(ids[k])[0] / static_cast<double>(size);
+      }
+      if ((centre[0] < 0.0) == (half == 0))
+      {
+        keep->InsertNextId(c);
+      }
+    }
+    vtkNew<vtkPolyData> part;
+    part->SetPoints(cow->GetPoints());
+    part->AllocateExact(keep->GetNumberOfIds(), 3 * keep->GetNumberOfIds());
+    for (vtkIdType i = 0; i < keep->GetNumberOfIds(); ++i)
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      cow->GetCellPoints(keep->GetId(i), size, ids);
+      part->InsertNextCell(VTK_TRIANGLE, size, ids);
+    }
+    halves->SetPartition(half, part);
+    blocks->SetBlock(half, part);
+  }
+  const auto openEdgesOfMerged = [](vtkDataObject* output, vtkIdType& triangles) {
+    vtkNew<vtkAppendPolyData> append;
+    vtkSmartPointer<vtkCompositeDataIterator> leaf =
+      vtk::TakeSmartPointer(vtkCompositeDataSet::SafeDownCast(output)->NewIterator());
+    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+    {
+      append->AddInputData(vtkPolyData::SafeDownCast(leaf->GetCurrentDataObject()));
+    }
+    vtkNew<vtkCleanPolyData> clean;
+    clean->SetInputConnection(append->GetOutputPort());
+    clean->Update();
+    triangles = clean->GetOutput()->GetNumberOfPolys();
+    return OpenEdges(clean->GetOutput());
+  };
+  vtkNew<Filter> filter;
+  filter->SetTargetReduction(0.8);
+  filter->SetInputData(halves);
+  filter->Update();
+  auto* partitions = vtkPartitionedDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  CHECK(partitions && partitions->GetNumberOfPartitions() == 2);
+  vtkIdType triangles = 0;
+  CHECK(partitions && openEdgesOfMerged(partitions, triangles) == 0);
+  CHECK(triangles > 0.2 * cow->GetNumberOfCells() - 1 && triangles < 0.5 * cow->GetNumberOfCells());
+  filter->SetInputData(blocks);
+  filter->Update();
+  auto* separate = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  CHECK(separate && separate->GetNumberOfBlocks() == 2);
+  CHECK(separate && openEdgesOfMerged(separate, triangles) > 0);
 }
 
 /// An open mesh (a 64 × 64 hemisphere) simplified to 500 triangles with PreserveBoundary: the

@@ -133,5 +133,6 @@ int TestVolumeTriangleCollapse(int, char*[])
   // An open mesh at a triangle count, its rim kept in place.
   meshsimp_test::CheckPreservedRim<vtkVolumeTriangleCollapse>(0.01);
   TestLockedPoints(cow);
+  meshsimp_test::CheckPartitionedInput<vtkVolumeTriangleCollapse>(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
