@@ -409,6 +409,29 @@ void AddFieldValue(vtkPolyData* output, const char* name, double value)
   output->GetFieldData()->AddArray(array);
 }
 
+void CopySurvivorPointData(
+  vtkPointData* inPD, vtkPointData* outPD, const std::vector<std::int32_t>& pointSource)
+{
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(pointSource.size());
+  outPD->SetCopyAttribute(vtkDataSetAttributes::GLOBALIDS, 1, vtkDataSetAttributes::COPYTUPLE);
+  outPD->CopyAllocate(inPD, numberOfPoints);
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    outPD->CopyData(inPD, pointSource[p], p);
+  }
+}
+
+bool IsInterpolated(vtkPointData* inPD, vtkPointData* outPD, int index)
+{
+  vtkAbstractArray* array = inPD->GetAbstractArray(index);
+  if (!array || (array->GetName() && std::string(array->GetName()) == vtkDataSetAttributes::GhostArrayName()))
+  {
+    return false;
+  }
+  const int attribute = inPD->IsArrayAnAttribute(index);
+  return attribute < 0 || outPD->GetCopyAttribute(attribute, vtkDataSetAttributes::INTERPOLATE) != 0;
+}
+
 void AddPointValues(vtkPolyData* output, const char* name, const std::vector<double>& values)
 {
   vtkNew<vtkDoubleArray> array;

@@ -21,6 +21,7 @@
 class vtkAlgorithm;
 class vtkCellArray;
 class vtkDataArray;
+class vtkPointData;
 class vtkPoints;
 class vtkPolyData;
 
@@ -98,6 +99,17 @@ bool ReadLockedPoints(vtkAlgorithm* filter, vtkPolyData* input, std::vector<std:
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);
+
+/// The point data of output points that are input points (pointSource: the input point of each
+/// output point, no two alike): every array copied from its point, global ids included, which
+/// stay unique (VTK's default leaves them out, for outputs where they might not).
+void CopySurvivorPointData(
+  vtkPointData* inPD, vtkPointData* outPD, const std::vector<std::int32_t>& pointSource);
+
+/// Whether point array index of inPD is interpolated where a filter merges points, by VTK's
+/// rules (outPD's interpolate flags): not pedigree or global ids, which are labels, nor the ghost
+/// flags, which are bits.
+bool IsInterpolated(vtkPointData* inPD, vtkPointData* outPD, int index);
 
 /// Adds a point-data array of one value per output point.
 void AddPointValues(vtkPolyData* output, const char* name, const std::vector<double>& values);

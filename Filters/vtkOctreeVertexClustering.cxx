@@ -12,6 +12,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,11 +100,21 @@ int vtkOctreeVertexClustering::SimplifyPiece(
   vtkMeshSimplificationHelpers::SetOutputTriangles(input, output, triangles, result.Points,
     result.Triangles, result.SourceTriangles, this->OutputPointsPrecision);
 
-  // Point data: the area-weighted average of each cluster, for every array.
+  // Point data: the area-weighted average of each cluster, for every array VTK interpolates
+  // (not pedigree or global ids: a representative is a new point); ghost flags are bits, so a
+  // representative has those its cluster's points all have.
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
   outPD->InterpolateAllocate(inPD, numberOfPoints);
   ArrayList arrays;
+  vtkUnsignedCharArray* inGhosts = input->GetPointGhostArray();
+  vtkUnsignedCharArray* outGhosts =
+    vtkUnsignedCharArray::SafeDownCast(outPD->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  if (inGhosts && outGhosts)
+  {
+    arrays.ExcludeArray(outGhosts);
+    outGhosts->SetNumberOfValues(numberOfPoints);
+  }
   arrays.AddArrays(numberOfPoints, inPD, outPD, /*nullValue=*/0.0, /*promote=*/false);
   std::vector<vtkIdType> ids;
   for (vtkIdType p = 0; p < numberOfPoints; ++p)
@@ -111,6 +122,15 @@ int vtkOctreeVertexClustering::SimplifyPiece(
     const std::int32_t begin = result.ClusterOffsets[p], end = result.ClusterOffsets[p + 1];
     ids.assign(result.ClusterVertices.begin() + begin, result.ClusterVertices.begin() + end);
     arrays.WeightedAverage(end - begin, ids.data(), result.ClusterWeights.data() + begin, p);
+    if (inGhosts && outGhosts)
+    {
+      unsigned char common = 0xff;
+      for (const vtkIdType id : ids)
+      {
+        common &= inGhosts->GetValue(id);
+      }
+      outGhosts->SetValue(p, ids.empty() ? 0 : common);
+    }
   }
   if (vtkDataArray* normals = outPD->GetNormals())
   {

@@ -41,7 +41,9 @@
  * also per block of a composite input (vtkMeshSimplificationFilter).
  *
  * Every point-data array is carried to the output as the area-weighted average over each
- * cluster (normals are recomputed from the output triangles); cell data is copied from the
+ * cluster (normals are recomputed from the output triangles), except what VTK does not
+ * interpolate: pedigree and global ids are left out (a representative is a new point), and
+ * ghost flags are those every point of the cluster has; cell data is copied from the
  * input cell of each surviving triangle. Two point arrays are added: "ClusterSize" (the number
  * of input points merged) and "ClusterError" (the cluster error above); the field data holds
  * "MaximumClusterError" and "AchievedReduction".

@@ -95,11 +95,7 @@ int vtkParallelDecimation::SimplifyPiece(
   // Survivors keep their own point data.
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
-  outPD->CopyAllocate(inPD, numberOfPoints);
-  for (vtkIdType p = 0; p < numberOfPoints; ++p)
-  {
-    outPD->CopyData(inPD, result.PointSource[p], p);
-  }
+  vtkMeshSimplificationHelpers::CopySurvivorPointData(inPD, outPD, result.PointSource);
   if (vtkDataArray* normals = outPD->GetNormals())
   {
     vtkMeshSimplificationHelpers::ComputePointNormals(result.Points, result.Triangles, normals);

@@ -56,7 +56,8 @@
  * and line cells are dropped (a warning says how many); triangles with repeated point ids or
  * non-finite points are ignored.
  *
- * Point data is copied from each surviving point; normals are recomputed. Cell data is copied
+ * Point data is copied from each surviving point, global ids included (they stay unique);
+ * normals are recomputed. Cell data is copied
  * from the input cell of each surviving triangle. The point array "Importance" holds each output
  * point's final importance (-1 for points that are never removed) and "VertexType" its type
  * (0 simple, 1 boundary, 2 interior-edge, 3 corner, 4 complex); the field data holds

@@ -22,22 +22,19 @@ vtkVolumeTriangleCollapse::vtkVolumeTriangleCollapse() = default;
 namespace
 {
 /// Every point array of the input, replayed through the collapse records and gathered at the
-/// output points; arrays that are not numeric take the value of the surviving point.
+/// output points; arrays that are not numeric, and labels and flags that VTK does not
+/// interpolate (IsInterpolated), take the value of the surviving point.
 void InterpolatePointData(vtkPointData* inPD, vtkPointData* outPD,
   const meshsimp::VolumeCollapseResult& result)
 {
   const vtkIdType numberOfPoints = static_cast<vtkIdType>(result.PointSource.size());
-  outPD->CopyAllocate(inPD, numberOfPoints);
-  for (vtkIdType p = 0; p < numberOfPoints; ++p)
-  {
-    outPD->CopyData(inPD, result.PointSource[p], p);
-  }
+  vtkMeshSimplificationHelpers::CopySurvivorPointData(inPD, outPD, result.PointSource);
   std::vector<double> table;
   for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* in = inPD->GetArray(a);
     vtkDataArray* out = in && in->GetName() ? outPD->GetArray(in->GetName()) : nullptr;
-    if (!in || !out || in->GetNumberOfTuples() == 0)
+    if (!in || !out || in->GetNumberOfTuples() == 0 || !vtkMeshSimplificationHelpers::IsInterpolated(inPD, outPD, a))
     {
       continue;
     }

@@ -184,5 +184,6 @@ int TestOctreeVertexClustering(int, char*[])
   TestThreadsAndInput(cow);
   TestTriangleCountMode(cow);
   TestInputStorageKinds(cow);
+  meshsimp_test::CheckPointLabels<vtkOctreeVertexClustering>(cow, false);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -173,5 +173,6 @@ int TestParallelDecimation(int, char*[])
   // An open mesh at a triangle count, its rim kept.
   meshsimp_test::CheckPreservedRim<vtkParallelDecimation>(0.02);
   meshsimp_test::CheckPartitionedInput<vtkParallelDecimation>(cow);
+  meshsimp_test::CheckPointLabels<vtkParallelDecimation>(cow, true);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -253,6 +253,74 @@ void CheckPartitionedInput(vtkPolyData* cow)
   CHECK(separate && openEdgesOfMerged(separate, triangles) > 0);
 }
 
+/// Point labels and flags, which VTK does not interpolate: pedigree ids (1000 + 7 i), global ids
+/// (i) and ghost flags (HIDDENPOINT on every other point) on the cow, simplified by 90 %. Where
+/// output points are input points (survivors), each keeps all three of its own, so the global
+/// ids stay unique; a representative of vertex clustering has no ids (VTK leaves them out of
+/// interpolation) and the flags all its cluster's points have: 0 or HIDDENPOINT, never the bit
+/// an average of the two would round to.
+template <typename Filter>
+void CheckPointLabels(vtkPolyData* cow, bool survivors)
+{
+  auto labelled = vtkSmartPointer<vtkPolyData>::New();
+  labelled->ShallowCopy(cow);
+  const vtkIdType n = cow->GetNumberOfPoints();
+  vtkNew<vtkIdTypeArray> pedigree;
+  pedigree->SetName("PointLabel");
+  vtkNew<vtkIdTypeArray> global;
+  global->SetName("PointGlobalId");
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    pedigree->InsertNextValue(1000 + 7 * i);
+    global->InsertNextValue(i);
+    ghosts->InsertNextValue(i % 2 ? vtkDataSetAttributes::HIDDENPOINT : 0);
+  }
+  // A shallow copy shares the cow's point data: a new one carries the labels.
+  vtkNew<vtkPointData> pointData;
+  pointData->ShallowCopy(cow->GetPointData());
+  pointData->SetPedigreeIds(pedigree);
+  pointData->SetGlobalIds(global);
+  pointData->AddArray(ghosts);
+  labelled->GetPointData()->ShallowCopy(pointData);
+
+  vtkNew<Filter> filter;
+  filter->SetInputData(labelled);
+  filter->SetTargetReduction(0.9);
+  filter->Update();
+  vtkPointData* pd = filter->GetOutput()->GetPointData();
+  auto* outGhosts = vtkUnsignedCharArray::SafeDownCast(pd->GetArray(vtkDataSetAttributes::GhostArrayName()));
+  CHECK(outGhosts && outGhosts->GetNumberOfTuples() == filter->GetOutput()->GetNumberOfPoints());
+  CHECK(cow->GetPointData()->GetPedigreeIds() == nullptr); // the input is untouched
+  if (!survivors)
+  {
+    CHECK(!pd->GetPedigreeIds() && !pd->GetGlobalIds());
+    vtkIdType hidden = 0;
+    for (vtkIdType p = 0; outGhosts && p < outGhosts->GetNumberOfTuples(); ++p)
+    {
+      CHECK(outGhosts->GetValue(p) == 0 || outGhosts->GetValue(p) == vtkDataSetAttributes::HIDDENPOINT);
+      hidden += outGhosts->GetValue(p) ? 1 : 0;
+    }
+    CHECK(hidden < outGhosts->GetNumberOfTuples() / 2); // most clusters mix the two
+    return;
+  }
+  vtkDataArray* outPedigree = vtkArrayDownCast<vtkDataArray>(pd->GetPedigreeIds());
+  vtkDataArray* outGlobal = pd->GetGlobalIds();
+  CHECK(outPedigree && outGlobal);
+  std::set<vtkIdType> sources;
+  for (vtkIdType p = 0; outPedigree && outGlobal && outGhosts && p < outPedigree->GetNumberOfTuples(); ++p)
+  {
+    const vtkIdType label = static_cast<vtkIdType>(outPedigree->GetTuple1(p));
+    const vtkIdType i = (label - 1000) / 7;
+    CHECK((label - 1000) % 7 == 0 && i >= 0 && i < n);
+    CHECK(static_cast<vtkIdType>(outGlobal->GetTuple1(p)) == i);
+    CHECK(outGhosts->GetValue(p) == ghosts->GetValue(std::min(std::max<vtkIdType>(i, 0), n - 1)));
+    sources.insert(i);
+  }
+  CHECK(outPedigree && static_cast<vtkIdType>(sources.size()) == outPedigree->GetNumberOfTuples());
+}
+
 /// An open mesh (a 64 × 64 hemisphere) simplified to 500 triangles with PreserveBoundary: the
 /// count within countTolerance, and every rim point (z = 0) still there.
 template <typename Filter>

@@ -134,5 +134,6 @@ int TestVolumeTriangleCollapse(int, char*[])
   meshsimp_test::CheckPreservedRim<vtkVolumeTriangleCollapse>(0.01);
   TestLockedPoints(cow);
   meshsimp_test::CheckPartitionedInput<vtkVolumeTriangleCollapse>(cow);
+  meshsimp_test::CheckPointLabels<vtkVolumeTriangleCollapse>(cow, true);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
