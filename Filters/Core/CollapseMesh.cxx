@@ -132,6 +132,12 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
     }
   }, 50 * static_cast<std::int64_t>(n));
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
+  this->Indexed.clear();
+  this->Places.clear();
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    this->IndexSpan(v);
+  }
   this->Scratch.Marks.assign(n, 0);
   this->Scratch.Stamp = 0;
   this->History.clear();
@@ -528,6 +534,64 @@ void CollapseMesh::SetSpan(std::int32_t v, const std::vector<std::int32_t>& tria
     std::copy(triangles.begin(), triangles.end(), this->Refs.begin() + this->Start[v]);
   }
   this->Count[v] = size;
+  this->IndexSpan(v);
+}
+
+void CollapseMesh::IndexSpan(std::int32_t v)
+{
+  if (this->Count[v] <= IndexedSpan)
+  {
+    if (!this->Indexed.empty())
+    {
+      this->Indexed[v] = 0;
+    }
+    return;
+  }
+  if (this->Indexed.empty())
+  {
+    this->Indexed.assign(this->Points.size(), 0);
+    this->Places.assign(this->Triangles.size(), -1);
+  }
+  this->Indexed[v] = 1;
+  const std::int32_t* ids = this->Refs.data() + this->Start[v];
+  for (std::int32_t i = 0; i < this->Count[v]; ++i)
+  {
+    const std::int32_t* tri = this->Triangle(ids[i]);
+    this->Places[3 * static_cast<std::size_t>(ids[i]) + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)] = i;
+  }
+}
+
+void CollapseMesh::DropFromSpan(std::int32_t w, std::int32_t t)
+{
+  std::int32_t* first = this->Refs.data() + this->Start[w];
+  std::int32_t* last = first + this->Count[w];
+  const bool indexed = !this->Indexed.empty() && this->Indexed[w];
+  if (indexed)
+  {
+    const auto placeOf = [this, w](std::int32_t triangle) -> std::int32_t& {
+      const std::int32_t* tri = this->Triangle(triangle);
+      return this->Places[3 * static_cast<std::size_t>(triangle) + (tri[0] == w ? 0 : tri[1] == w ? 1 : 2)];
+    };
+    const std::int32_t place = placeOf(t);
+    if (place >= 0 && place < this->Count[w] && first[place] == t)
+    {
+      const std::int32_t moved = *(last - 1);
+      first[place] = moved;
+      placeOf(moved) = place;
+      --this->Count[w];
+      return;
+    }
+  }
+  std::int32_t* found = std::find(first, last, t); // a span lists a triangle once
+  if (found != last)
+  {
+    std::copy(found + 1, last, found);
+    --this->Count[w];
+    if (indexed)
+    {
+      this->IndexSpan(w);
+    }
+  }
 }
 
 void CollapseMesh::CompactRefs(const ExecutionContext& context)
@@ -572,22 +636,16 @@ int CollapseMesh::Merge(
   const std::int32_t kept = plan.Vertices[0];
   span.clear();
   int removed = 0;
-  // A removed triangle leaves the span of its corner outside the plan (order kept), so that
-  // walks around that vertex do not skip it ever after.
+  // A removed triangle leaves the span of its corner outside the plan, so that walks around
+  // that vertex do not skip it ever after.
   auto dropFromSpan = [&](std::int32_t w, std::int32_t t) {
     if (!this->Shared.empty() && this->Shared[w])
     {
       return; // ApplyIndependent drops it after the concurrent merges
     }
-    std::int32_t* first = this->Refs.data() + this->Start[w];
-    std::int32_t* last = first + this->Count[w];
-    std::int32_t* found = std::find(first, last, t); // a span lists a triangle once
-    if (found != last)
-    {
-      std::copy(found + 1, last, found);
-      ++droppedRefs;
-      --this->Count[w];
-    }
+    const std::int32_t before = this->Count[w];
+    this->DropFromSpan(w, t);
+    droppedRefs += before - this->Count[w];
   };
   for (int i = 0; i < plan.Count; ++i)
   {
@@ -677,6 +735,7 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
   {
     this->LiveRefs -= this->Count[plan.Vertices[i]];
     this->Count[plan.Vertices[i]] = 0;
+    this->IndexSpan(plan.Vertices[i]);
   }
   this->SetSpan(kept, this->Span);
   record.ChangeCount = static_cast<std::int32_t>(this->Changes.size()) / 2 - record.FirstChange / 2;
@@ -752,11 +811,13 @@ std::int64_t CollapseMesh::ApplyIndependent(
     {
       this->LiveRefs -= this->Count[plan.Vertices[j]];
       this->Count[plan.Vertices[j]] = 0;
+      this->IndexSpan(plan.Vertices[j]);
     }
     const std::int32_t kept = plan.Vertices[0];
     this->LiveRefs += sizes[i] - this->Count[kept];
     this->Start[kept] = base + offsets[i];
     this->Count[kept] = sizes[i];
+    this->IndexSpan(kept);
     this->LiveRefs -= droppedRefs[i];
     removed += removedCounts[i];
   }
@@ -770,6 +831,7 @@ std::int64_t CollapseMesh::ApplyIndependent(
     this->LiveRefs -= last - end;
     this->Count[w] = static_cast<std::int32_t>(end - first);
     this->Shared[w] = 0;
+    this->IndexSpan(w);
   }
   this->Undone.clear();
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)

@@ -8,7 +8,9 @@
  * a span {start, count} into one array of incident triangle ids. A collapse writes the merged
  * vertex's new span at the end of that array (old spans become garbage, compacted when it
  * doubles) and takes the removed triangles out of their other corners' spans, so that spans list
- * alive triangles only.
+ * alive triangles only. A span keeps its order when a triangle leaves it, except a span of more
+ * than IndexedSpan triangles (the centre of a fan): its triangles' places in it are indexed, and
+ * the last one takes the leaving one's place, so that a fan is not simplified in quadratic time.
  *
  * A collapse merges a connected set of two vertices (an edge, or a half-edge when the position is
  * one end point) or three (a triangle, paper 004) into the first of them, the kept vertex, at a
@@ -166,6 +168,9 @@ public:
     Prefetch(this->Count.data() + v);
   }
 
+  /// Spans longer than this keep an index of their triangles' places (see the top of the file).
+  static constexpr std::int32_t IndexedSpan = 256;
+
   /// The number of alive triangles around v.
   std::int32_t NumberOfTrianglesAround(std::int32_t v) const { return this->Count[v]; }
 
@@ -282,6 +287,10 @@ private:
   /// No new edge between the kept vertex and another shared one, when the kept one is shared.
   bool KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
+  /// Indexes the places in v's span when it is longer than IndexedSpan (after it was written).
+  void IndexSpan(std::int32_t v);
+  /// Takes t out of w's span (see the top of the file).
+  void DropFromSpan(std::int32_t w, std::int32_t t);
   /// Refs rewritten with only the live spans, in vertex order (by parts concurrently).
   void CompactRefs(const ExecutionContext& context = {});
   MESHSIMP_PREFETCH_HELPER void PrefetchSpan(std::int32_t v) const { Prefetch(this->Refs.data() + this->Start[v]); }
@@ -298,6 +307,10 @@ private:
   std::vector<std::int32_t> Count;
   std::vector<std::int32_t> Refs;
   std::int64_t LiveRefs = 0;
+  // Where spans are indexed (IndexSpan): per vertex whether its span is, and per triangle corner
+  // its place in the span of the corner's vertex; both empty until a span needs it.
+  std::vector<std::uint8_t> Indexed;
+  std::vector<std::int32_t> Places;
   std::vector<std::uint8_t> Shared; // ApplyIndependent: spans updated after the concurrent merges
 
   double MinimumAngleCosine = 1.0;

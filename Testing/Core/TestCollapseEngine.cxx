@@ -375,12 +375,88 @@ void CollapseUndoRedo()
   CHECK(Take(e.Mesh) == after);
 }
 
-void IndependentCollapsesShareHubs()
+/// Whether v's span lists exactly the alive triangles that hold v.
+bool SpanExact(const CollapseMesh& mesh, std::int32_t v)
 {
-  // Half-edge collapses along the rim of a closed double fan, every fourth rim vertex into its
-  // next: their stars share only the two centres. Applied concurrently with the centres shared,
-  // they give the mesh the same collapses give one by one.
-  const int n = 64;
+  std::vector<std::int32_t> holding;
+  for (std::int32_t t = 0; t < mesh.NumberOfTriangles(); ++t)
+  {
+    const std::int32_t* tri = mesh.Triangle(t);
+    if (mesh.IsAlive(t) && (tri[0] == v || tri[1] == v || tri[2] == v))
+    {
+      holding.push_back(t);
+    }
+  }
+  return mesh.SortedTrianglesAround(v) == holding &&
+    mesh.NumberOfTrianglesAround(v) == static_cast<std::int32_t>(holding.size());
+}
+
+void LongSpansStayExact()
+{
+  // A closed double fan of 600 whose top centre is merged into a rim vertex first: that vertex's
+  // new span (600 triangles) is longer than IndexedSpan, so the triangles that leave it later go
+  // by the indexed swap. Then rim vertices merge into a rim neighbour in a shuffled order until
+  // it falls below IndexedSpan. Each step leaves the long spans exact; undone and replayed, the
+  // mesh is restored bit for bit both ways.
+  const int n = 600;
+  Engine e(Fan(n, true));
+  const std::int32_t hub = e.Id[1], bottom = e.Id[n + 1];
+  const Snapshot before = Take(e.Mesh);
+  CollapsePlan plan = e.Plan({ 1, 0 }, e.Point(1));
+  CHECK(e.Mesh.IsLegal(plan));
+  e.Mesh.Apply(plan);
+  CHECK(e.Mesh.NumberOfTrianglesAround(hub) == n && SpanExact(e.Mesh, hub));
+  std::vector<int> rim(n - 1);
+  std::iota(rim.begin(), rim.end(), 2);
+  std::mt19937 random(7);
+  std::shuffle(rim.begin(), rim.end(), random);
+  int applied = 0;
+  bool exact = true;
+  for (std::size_t i = 0; i < rim.size() && e.Mesh.NumberOfTrianglesAround(hub) > 200; ++i)
+  {
+    const std::int32_t v = e.Id[rim[i]];
+    std::vector<std::int32_t> neighbours;
+    e.Mesh.Neighbours(v, neighbours);
+    neighbours.erase(std::remove_if(neighbours.begin(), neighbours.end(),
+                       [&](std::int32_t w) { return w == hub || w == bottom; }),
+      neighbours.end());
+    if (neighbours.empty())
+    {
+      continue; // merged already
+    }
+    plan.Vertices[0] = *std::min_element(neighbours.begin(), neighbours.end());
+    plan.Vertices[1] = v;
+    plan.Position = e.Mesh.Point(plan.Vertices[0]);
+    if (!e.Mesh.IsLegal(plan))
+    {
+      continue;
+    }
+    CHECK(e.Mesh.Apply(plan) == 2);
+    ++applied;
+    exact = exact && SpanExact(e.Mesh, hub) && SpanExact(e.Mesh, bottom);
+  }
+  CHECK(exact);
+  CHECK(applied > 350 && e.Mesh.NumberOfTrianglesAround(hub) <= 200);
+  CHECK(ClosedManifold(e.Mesh));
+  for (std::int32_t v = 0; v < e.Mesh.NumberOfPoints(); ++v)
+  {
+    exact = exact && SpanExact(e.Mesh, v);
+  }
+  CHECK(exact);
+  const Snapshot after = Take(e.Mesh);
+  while (!e.Mesh.Records().empty())
+  {
+    e.Mesh.Undo();
+  }
+  CHECK(Take(e.Mesh) == before);
+  while (e.Mesh.Redo())
+  {
+  }
+  CHECK(Take(e.Mesh) == after);
+}
+
+void IndependentCollapsesShareHubsOf(int n)
+{
   const Mesh fan = Fan(n, true);
   Engine concurrent(fan), serial(fan);
   std::vector<CollapsePlan> plans;
@@ -401,6 +477,18 @@ void IndependentCollapsesShareHubs()
   CHECK(concurrent.Mesh.NumberOfTrianglesAround(hubs[0]) == n - n / 4);
   CHECK(concurrent.Mesh.NumberOfTrianglesAround(hubs[1]) == n - n / 4);
   CHECK(ClosedManifold(concurrent.Mesh));
+}
+
+void IndependentCollapsesShareHubs()
+{
+  // Half-edge collapses along the rim of a closed double fan, every fourth rim vertex into its
+  // next: their stars share only the two centres. Applied concurrently with the centres shared,
+  // they give the mesh the same collapses give one by one; also where the centres' spans are
+  // long enough to be indexed.
+  for (const int n : { 64, 1200 })
+  {
+    IndependentCollapsesShareHubsOf(n);
+  }
 }
 
 void AttributesFollowWeights()
@@ -889,6 +977,7 @@ int main()
     { "SharedVerticesGetNoNewEdge", SharedVerticesGetNoNewEdge },
     { "CollapseUndoRedo", CollapseUndoRedo },
     { "IndependentCollapsesShareHubs", IndependentCollapsesShareHubs },
+    { "LongSpansStayExact", LongSpansStayExact },
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "PlaneBoundMeasuresMergedPlanes", PlaneBoundMeasuresMergedPlanes },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
