@@ -57,10 +57,10 @@
  * non-finite points are ignored.
  *
  * Point data is copied from each surviving point, global ids included (they stay unique);
- * normals are recomputed. Cell data is copied
- * from the input cell of each surviving triangle. The point array "Importance" holds each output
- * point's final importance (-1 for points that are never removed) and "VertexType" its type
- * (0 simple, 1 boundary, 2 interior-edge, 3 corner, 4 complex); the field data holds
+ * normals are recomputed. Cell data is copied from the input cell of each surviving triangle.
+ * The point array "Importance" holds each output point's final importance (-1 for points that
+ * are never removed) and "VertexType" its type (0 simple, 1 boundary, 2 interior-edge, 3 corner,
+ * 4 complex); the field data holds
  * "AchievedReduction", "Rounds" and "MovedPoints".
  *
  * @sa vtkDecimatePro vtkQuadricDecimation vtkVolumeTriangleCollapse

@@ -34,7 +34,8 @@ void InterpolatePointData(vtkPointData* inPD, vtkPointData* outPD,
   {
     vtkDataArray* in = inPD->GetArray(a);
     vtkDataArray* out = in && in->GetName() ? outPD->GetArray(in->GetName()) : nullptr;
-    if (!in || !out || in->GetNumberOfTuples() == 0 || !vtkMeshSimplificationHelpers::IsInterpolated(inPD, outPD, a))
+    if (!in || !out || in->GetNumberOfTuples() == 0 ||
+      !vtkMeshSimplificationHelpers::IsInterpolated(inPD, outPD, a))
     {
       continue;
     }

@@ -56,10 +56,10 @@
  * Every point-data array is interpolated to each new vertex with the weights of its placement
  * (barycentric, along the boundary edge, or all on the corner it collapsed onto); normals are
  * recomputed. Labels and flags that VTK does not interpolate (pedigree and global ids, ghost
- * flags) are those of the surviving point, so global ids stay unique. Cell data is copied from the input cell of each surviving triangle. The point
- * array "SquareVolumeError" holds the error accumulated at each output point; the field data
- * holds "SquareVolumeError" (the sum over all collapses, the paper's ΔV) and
- * "AchievedReduction".
+ * flags) are those of the surviving point, so global ids stay unique. Cell data is copied from
+ * the input cell of each surviving triangle. The point array "SquareVolumeError" holds the
+ * error accumulated at each output point; the field data holds "SquareVolumeError" (the sum
+ * over all collapses, the paper's ΔV) and "AchievedReduction".
  *
  * @sa vtkQuadricDecimation vtkDecimatePro vtkOctreeVertexClustering
  */

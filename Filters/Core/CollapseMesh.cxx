@@ -556,9 +556,14 @@ void CollapseMesh::IndexSpan(std::int32_t v)
   const std::int32_t* ids = this->Refs.data() + this->Start[v];
   for (std::int32_t i = 0; i < this->Count[v]; ++i)
   {
-    const std::int32_t* tri = this->Triangle(ids[i]);
-    this->Places[3 * static_cast<std::size_t>(ids[i]) + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)] = i;
+    this->PlaceIn(v, ids[i]) = i;
   }
+}
+
+std::int32_t& CollapseMesh::PlaceIn(std::int32_t v, std::int32_t t)
+{
+  const std::int32_t* tri = this->Triangle(t);
+  return this->Places[3 * static_cast<std::size_t>(t) + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
 }
 
 void CollapseMesh::DropFromSpan(std::int32_t w, std::int32_t t)
@@ -568,16 +573,12 @@ void CollapseMesh::DropFromSpan(std::int32_t w, std::int32_t t)
   const bool indexed = !this->Indexed.empty() && this->Indexed[w];
   if (indexed)
   {
-    const auto placeOf = [this, w](std::int32_t triangle) -> std::int32_t& {
-      const std::int32_t* tri = this->Triangle(triangle);
-      return this->Places[3 * static_cast<std::size_t>(triangle) + (tri[0] == w ? 0 : tri[1] == w ? 1 : 2)];
-    };
-    const std::int32_t place = placeOf(t);
+    const std::int32_t place = this->PlaceIn(w, t);
     if (place >= 0 && place < this->Count[w] && first[place] == t)
     {
       const std::int32_t moved = *(last - 1);
       first[place] = moved;
-      placeOf(moved) = place;
+      this->PlaceIn(w, moved) = place;
       --this->Count[w];
       return;
     }

@@ -289,6 +289,8 @@ private:
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
   /// Indexes the places in v's span when it is longer than IndexedSpan (after it was written).
   void IndexSpan(std::int32_t v);
+  /// The entry of Places for t's corner at v.
+  std::int32_t& PlaceIn(std::int32_t v, std::int32_t t);
   /// Takes t out of w's span (see the top of the file).
   void DropFromSpan(std::int32_t w, std::int32_t t);
   /// Refs rewritten with only the live spans, in vertex order (by parts concurrently).
