@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <random>
 #include <vector>
 
 namespace
@@ -223,6 +224,254 @@ double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   }
   const double sum = va + vb + vc;
   return (p - (a + vb / sum * ab + vc / sum * ac)).norm();
+}
+
+/// A mesh for robustness tests, drawn from random: a sphere, cube, grid, tube, fan (up to 1 250
+/// triangles around one vertex) or a triangle soup (repeated, coincident and zero points), then
+/// damaged by up to four of: holes, duplicate triangles, flipped triangles, fins on edges
+/// (non-manifold), welded vertices (pinches), a NaN or infinite coordinate, noise, coincident
+/// points, a scale far from 1, a flattened axis; and at times a bad index. closed tells whether
+/// the result is an undamaged sphere or cube (a closed 2-manifold).
+Mesh DamagedMesh(std::mt19937& random, bool& closed)
+{
+  auto pick = [&random](int n) { return static_cast<int>(random() % static_cast<unsigned>(n)); };
+  auto unit = [&random] { return std::uniform_real_distribution<double>(0.0, 1.0)(random); };
+  Mesh mesh;
+  const int kind = pick(7);
+  closed = kind < 2;
+  switch (kind)
+  {
+    case 0: mesh = Sphere(2 + pick(12)); break;
+    case 1: mesh = Cube(1 + pick(8)); break;
+    case 2: mesh = Grid(1 + pick(20)); break;
+    case 3: mesh = Tube(3 + pick(12), 2 + pick(10)); break;
+    case 4: mesh = Fan(3 + pick(80), pick(2) == 0); break;
+    case 5: mesh = Fan(250 + pick(1000), pick(2) == 0); break;
+    default:
+    {
+      const int points = 3 + pick(60), triangles = 1 + pick(200);
+      for (int i = 0; i < 3 * points; ++i)
+      {
+        mesh.Points.push_back(pick(7) == 0 ? 0.0 : 2.0 * unit() - 1.0);
+      }
+      for (int i = 0; i < 3 * triangles; ++i)
+      {
+        mesh.Triangles.push_back(pick(points));
+      }
+    }
+  }
+  for (int damage = pick(5); damage > 0; --damage)
+  {
+    closed = false;
+    const int points = static_cast<int>(mesh.Points.size() / 3);
+    const int triangles = static_cast<int>(mesh.Triangles.size() / 3);
+    if (triangles == 0)
+    {
+      break;
+    }
+    auto corner = [&](int t, int k) -> std::int32_t& { return mesh.Triangles[3 * static_cast<std::size_t>(t) + k]; };
+    switch (pick(10))
+    {
+      case 0: // holes
+        for (int k = pick(triangles / 4 + 1); k >= 0 && mesh.Triangles.size() > 3; --k)
+        {
+          const auto t = mesh.Triangles.begin() + 3 * pick(static_cast<int>(mesh.Triangles.size() / 3));
+          mesh.Triangles.erase(t, t + 3);
+        }
+        break;
+      case 1: // duplicate triangles
+        for (int k = pick(5); k >= 0; --k)
+        {
+          const int t = pick(triangles);
+          mesh.Triangles.insert(mesh.Triangles.end(), { corner(t, 0), corner(t, 1), corner(t, 2) });
+        }
+        break;
+      case 2: // flipped triangles
+        for (int k = pick(triangles / 3 + 1); k >= 0; --k)
+        {
+          const int t = pick(triangles);
+          std::swap(corner(t, 0), corner(t, 1));
+        }
+        break;
+      case 3: // fins: a third triangle on an edge, to a new point
+        for (int k = pick(5), added = points; k >= 0; --k, ++added)
+        {
+          const int t = pick(triangles);
+          mesh.Points.insert(mesh.Points.end(), { unit(), unit(), unit() });
+          mesh.Triangles.insert(mesh.Triangles.end(), { corner(t, 0), corner(t, 1), added });
+        }
+        break;
+      case 4: // welded vertices
+        for (int k = pick(4); k >= 0; --k)
+        {
+          const int from = pick(points), to = pick(points);
+          std::replace(mesh.Triangles.begin(), mesh.Triangles.end(), from, to);
+        }
+        break;
+      case 5: // a NaN or infinite coordinate
+        mesh.Points[pick(3 * points)] =
+          pick(2) == 0 ? std::numeric_limits<double>::quiet_NaN() : std::numeric_limits<double>::infinity();
+        break;
+      case 6: // noise, of 1 down to 1e-7
+      {
+        const double size = std::pow(10.0, -pick(8));
+        for (double& c : mesh.Points)
+        {
+          c += size * (unit() - 0.5);
+        }
+        break;
+      }
+      case 7: // coincident points
+        for (int k = pick(points / 3 + 1); k >= 0; --k)
+        {
+          const int a = pick(points), b = pick(points);
+          std::copy_n(mesh.Points.begin() + 3 * b, 3, mesh.Points.begin() + 3 * a);
+        }
+        break;
+      case 8: // a scale of 2^-100 to 2^100
+      {
+        const double factor = std::ldexp(pick(2) == 0 ? 1.0 : 3.3, pick(200) - 100);
+        for (double& c : mesh.Points)
+        {
+          c *= factor;
+        }
+        break;
+      }
+      default: // a flattened axis
+        for (std::size_t i = pick(3); i < mesh.Points.size(); i += 3)
+        {
+          mesh.Points[i] = 0.0;
+        }
+    }
+  }
+  if (pick(10) == 0)
+  {
+    closed = false;
+    mesh.Triangles[pick(static_cast<int>(mesh.Triangles.size()))] = pick(2) == 0 ? -1 : 1 << 20;
+  }
+  return mesh;
+}
+
+/// Whether every output triangle has three distinct corners among the output points, which are
+/// finite.
+bool ValidOutput(const std::vector<double>& points, const std::vector<std::int32_t>& triangles)
+{
+  const std::int32_t count = static_cast<std::int32_t>(points.size() / 3);
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const std::int32_t* tri = triangles.data() + t;
+    if (std::any_of(tri, tri + 3, [count](std::int32_t v) { return v < 0 || v >= count; }) ||
+      tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+    {
+      return false;
+    }
+  }
+  return std::all_of(points.begin(), points.end(), [](double c) { return std::isfinite(c); }) &&
+    triangles.size() % 3 == 0;
+}
+
+/// Whether every directed edge of the triangles is used once and its reverse once: a closed,
+/// consistently oriented 2-manifold.
+bool ClosedOriented(const std::vector<std::int32_t>& triangles)
+{
+  std::map<std::pair<std::int32_t, std::int32_t>, int> uses;
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++uses[{ triangles[t + k], triangles[t + (k + 1) % 3] }];
+    }
+  }
+  return std::all_of(uses.begin(), uses.end(), [&uses](const auto& edge) {
+    const auto reverse = uses.find({ edge.first.second, edge.first.first });
+    return edge.second == 1 && reverse != uses.end() && reverse->second == 1;
+  });
+}
+
+/// Locks for a robustness run: none a third of the time, else about one point in six, half of
+/// them shared (meshsimp::SharedPointLock, given as its value).
+std::vector<std::uint8_t> RandomLocks(std::mt19937& random, const Mesh& mesh, std::uint8_t shared)
+{
+  std::vector<std::uint8_t> locks;
+  if (random() % 3 != 0)
+  {
+    for (std::size_t i = 0; i < mesh.Points.size() / 3; ++i)
+    {
+      locks.push_back(random() % 6 != 0 ? 0 : random() % 2 == 0 ? 1 : shared);
+    }
+  }
+  return locks;
+}
+
+/// Whether each output point (source: its input point) that is locked keeps its input
+/// coordinates bit for bit; with everyUsed, also whether every locked point of the input's
+/// triangles is in the output.
+bool LockedPointsStay(const std::vector<std::uint8_t>& locks, const std::vector<std::int32_t>& source,
+  const std::vector<double>& points, const Mesh& input, bool everyUsed)
+{
+  if (locks.empty())
+  {
+    return true;
+  }
+  std::vector<std::uint8_t> present(locks.size(), 0);
+  for (std::size_t i = 0; i < source.size(); ++i)
+  {
+    present[source[i]] = 1;
+    if (locks[source[i]] && !std::equal(points.begin() + 3 * i, points.begin() + 3 * i + 3,
+                              input.Points.begin() + 3 * static_cast<std::size_t>(source[i])))
+    {
+      return false;
+    }
+  }
+  return !everyUsed || std::none_of(input.Triangles.begin(), input.Triangles.end(), [&](std::int32_t v) {
+    return v >= 0 && v < static_cast<std::int32_t>(locks.size()) && locks[v] && !present[v];
+  });
+}
+
+/// Random targets for a robustness run of a collapse filter's options: a reduction (0 or 1 a
+/// fifth of the time), at times a count of under 10 triangles, boundaries preserved or not, an
+/// error bound a quarter of the time, and the given locks.
+template <typename Options>
+void RandomTargets(std::mt19937& random, Options& options, const std::vector<std::uint8_t>& locks)
+{
+  options.TargetReduction = random() % 5 == 0 ? (random() % 2) * 1.0 : (random() % 100) / 100.0;
+  options.TargetTriangles = random() % 6 == 0 ? static_cast<std::int64_t>(random() % 10) : -1;
+  options.PreserveBoundary = random() % 2 == 0;
+  options.LockedPoints = locks.empty() ? nullptr : locks.data();
+  options.MaximumError = random() % 4 == 0 ? 0.001 * (random() % 100) : -1.0;
+  options.RelativeError = true;
+}
+
+/// The result of simplify(result, context) on one thread, checked to be a valid output and to be
+/// the same on two threads and with chunks of 5 items taken in turn by three.
+template <typename Context, typename Result, typename Simplify>
+Result SameOnAnyThreads(Simplify&& simplify)
+{
+  Result serial, threaded, turns;
+  CHECK(simplify(serial, Context()));
+  CHECK(simplify(threaded, meshsimp_test::Threaded<Context>(2)));
+  CHECK(simplify(turns, meshsimp_test::Chunked<Context>(3, 5)));
+  CHECK(ValidOutput(serial.Points, serial.Triangles));
+  CHECK(serial.Points == threaded.Points && serial.Triangles == threaded.Triangles);
+  CHECK(serial.Points == turns.Points && serial.Triangles == turns.Triangles);
+  return serial;
+}
+
+/// What a collapse filter's run on a damaged mesh must give: locked points that stay (all of
+/// them when the mesh is an undamaged closed one, which also stays closed), and a count within
+/// tolerance (a share of the usable triangles, at least 2) of the target, unless the filter
+/// stopped early or ran under an error bound.
+template <typename Result>
+void CheckCollapseRun(const Result& result, const Mesh& mesh, bool closed,
+  const std::vector<std::uint8_t>& locks, bool bounded, double tolerance)
+{
+  CHECK(result.PointSource.size() * 3 == result.Points.size());
+  CHECK(result.TriangleSource.size() * 3 == result.Triangles.size());
+  CHECK(LockedPointsStay(locks, result.PointSource, result.Points, mesh, closed));
+  CHECK(!closed || ClosedOriented(result.Triangles));
+  const double count = static_cast<double>(result.Triangles.size() / 3);
+  CHECK(result.StoppedEarly || bounded ||
+    std::abs(count - result.TargetTriangles) <= std::max(2.0, tolerance * result.UsableTriangles));
 }
 
 #ifdef MESHSIMPLIFICATION_TEST_DATA

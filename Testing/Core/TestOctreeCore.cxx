@@ -676,6 +676,43 @@ void AbortStopsEarly()
   CHECK(!meshsimp::OctreeVertexClustering(grid.View(), Target(100), result, context));
   CHECK(result.Aborted);
 }
+
+void SurvivesDamagedMeshes()
+{
+  // Damaged meshes (TestMeshes.h) under random options and locks: a valid output, the same with
+  // one thread, two, and small chunks taken in turn; locked points are their own clusters, at
+  // their input coordinates bit for bit.
+  std::mt19937 random(4);
+  for (int run = 0; run < 150; ++run)
+  {
+    bool closed = false;
+    const Mesh mesh = DamagedMesh(random, closed);
+    const std::vector<std::uint8_t> locks = RandomLocks(random, mesh, 1);
+    OctreeClusteringOptions options;
+    options.TargetTriangles = random() % 3 != 0 ? static_cast<std::int64_t>(random() % 300) : -1;
+    options.MaximumError = 0.002 * (random() % 100);
+    options.RelativeError = random() % 2 == 0;
+    options.MaximumCellSize = random() % 3 == 0 ? 0.01 * (random() % 100) : 0.0;
+    options.MaximumVerticesPerCell = random() % 3 == 0 ? static_cast<std::int64_t>(random() % 10) : 0;
+    options.ErrorIterations = static_cast<int>(random() % 4);
+    options.BoundaryPlanes = random() % 2 == 0;
+    options.PreventFlips = random() % 2 == 0;
+    options.LockedPoints = locks.empty() ? nullptr : locks.data();
+    const OctreeClusteringResult result = SameOnAnyThreads<meshsimp::ExecutionContext, OctreeClusteringResult>(
+      [&](OctreeClusteringResult& out, const meshsimp::ExecutionContext& context) {
+        return meshsimp::OctreeVertexClustering(mesh.View(), options, out, context);
+      });
+    for (std::size_t v = 0; v < result.VertexToPoint.size(); ++v)
+    {
+      if (!locks.empty() && locks[v] && result.VertexToPoint[v] >= 0)
+      {
+        const std::int32_t p = result.VertexToPoint[v];
+        CHECK(result.ClusterOffsets[p + 1] - result.ClusterOffsets[p] == 1);
+        CHECK(std::equal(mesh.Points.begin() + 3 * v, mesh.Points.begin() + 3 * v + 3, result.Points.begin() + 3 * p));
+      }
+    }
+  }
+}
 }
 
 int main()
@@ -702,5 +739,6 @@ int main()
     { "CompactMeshIsSpatialAndMapsBack", CompactMeshIsSpatialAndMapsBack },
     { "CompactMeshAndSortSameForAnyThreadCount", CompactMeshAndSortSameForAnyThreadCount },
     { "BoundaryCornersMarkEachBorderEdgeOnce", BoundaryCornersMarkEachBorderEdgeOnce },
+    { "SurvivesDamagedMeshes", SurvivesDamagedMeshes },
   });
 }
