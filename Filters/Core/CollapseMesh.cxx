@@ -579,6 +579,7 @@ void CollapseMesh::DropFromSpan(std::int32_t w, std::int32_t t)
       const std::int32_t moved = *(last - 1);
       first[place] = moved;
       this->PlaceIn(w, moved) = place;
+      *(last - 1) = -1; // a free slot for AddToIndexedSpan
       --this->Count[w];
       return;
     }
@@ -593,6 +594,27 @@ void CollapseMesh::DropFromSpan(std::int32_t w, std::int32_t t)
       this->IndexSpan(w);
     }
   }
+}
+
+void CollapseMesh::AddToIndexedSpan(std::int32_t w, std::int32_t t)
+{
+  std::int32_t& place = this->PlaceIn(w, t);
+  const std::int64_t start = this->Start[w], end = start + this->Count[w];
+  if (place >= 0 && place < this->Count[w] && this->Refs[start + place] == t)
+  {
+    return;
+  }
+  if (end == static_cast<std::int64_t>(this->Refs.size()) || this->Refs[end] != -1)
+  {
+    // No free slot after the span: it moves to the end, followed by as many free slots.
+    const std::int64_t moved = static_cast<std::int64_t>(this->Refs.size());
+    this->Refs.resize(this->Refs.size() + 2 * static_cast<std::size_t>(this->Count[w]) + 1, -1);
+    std::copy(this->Refs.begin() + start, this->Refs.begin() + end, this->Refs.begin() + moved);
+    this->Start[w] = moved;
+  }
+  place = this->Count[w]++;
+  this->Refs[this->Start[w] + place] = t;
+  ++this->LiveRefs;
 }
 
 void CollapseMesh::CompactRefs(const ExecutionContext& context)
@@ -896,6 +918,11 @@ void CollapseMesh::Undo()
       const std::int32_t w = this->Triangles[3 * t + k];
       if (w == kept || w == record.Removed[0] || w == record.Removed[1])
       {
+        continue;
+      }
+      if (!this->Indexed.empty() && this->Indexed[w])
+      {
+        this->AddToIndexedSpan(w, t);
         continue;
       }
       const std::int32_t* first = this->Refs.data() + this->Start[w];

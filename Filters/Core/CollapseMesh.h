@@ -11,6 +11,9 @@
  * alive triangles only. A span keeps its order when a triangle leaves it, except a span of more
  * than IndexedSpan triangles (the centre of a fan): its triangles' places in it are indexed, and
  * the last one takes the leaving one's place, so that a fan is not simplified in quadratic time.
+ * Undo gives such a span its triangles back at its end, into free slots (-1) that follow it: a
+ * span that has none moves to the end of the array with as many free slots as it has triangles,
+ * so that a fan is not restored in quadratic time either.
  *
  * A collapse merges a connected set of two vertices (an edge, or a half-edge when the position is
  * one end point) or three (a triangle, paper 004) into the first of them, the kept vertex, at a
@@ -293,6 +296,8 @@ private:
   std::int32_t& PlaceIn(std::int32_t v, std::int32_t t);
   /// Takes t out of w's span (see the top of the file).
   void DropFromSpan(std::int32_t w, std::int32_t t);
+  /// Adds t at the end of w's indexed span (see the top of the file), unless it is there.
+  void AddToIndexedSpan(std::int32_t w, std::int32_t t);
   /// Refs rewritten with only the live spans, in vertex order (by parts concurrently).
   void CompactRefs(const ExecutionContext& context = {});
   MESHSIMP_PREFETCH_HELPER void PrefetchSpan(std::int32_t v) const { Prefetch(this->Refs.data() + this->Start[v]); }
