@@ -60,32 +60,18 @@ Mesh Bipyramid()
   return mesh;
 }
 
-/// Edge multiplicities of the alive triangles: every edge of a closed 2-manifold twice, once
-/// per orientation.
+/// Whether the alive triangles form a closed, consistently oriented 2-manifold (ClosedOriented).
 bool ClosedManifold(const CollapseMesh& mesh)
 {
-  std::map<std::pair<int, int>, int> directed;
+  std::vector<std::int32_t> alive;
   for (std::int32_t t = 0; t < mesh.NumberOfTriangles(); ++t)
   {
-    if (!mesh.IsAlive(t))
+    if (mesh.IsAlive(t))
     {
-      continue;
-    }
-    const std::int32_t* tri = mesh.Triangle(t);
-    for (int k = 0; k < 3; ++k)
-    {
-      ++directed[{ tri[k], tri[(k + 1) % 3] }];
+      alive.insert(alive.end(), mesh.Triangle(t), mesh.Triangle(t) + 3);
     }
   }
-  for (const auto& edge : directed)
-  {
-    const auto twin = directed.find({ edge.first.second, edge.first.first });
-    if (edge.second != 1 || twin == directed.end() || twin->second != 1)
-    {
-      return false;
-    }
-  }
-  return true;
+  return ClosedOriented(alive);
 }
 
 struct Snapshot

@@ -6,7 +6,6 @@
 #include "TestHelpers.h"
 #include "TestMeshes.h"
 
-#include <map>
 #include <random>
 #include <set>
 
@@ -23,31 +22,10 @@ ParallelDecimationOptions Reduction(double reduction)
   return options;
 }
 
-/// Edge → number of triangles using it, over an output triangle list.
-std::map<std::pair<int, int>, int> EdgeCounts(const std::vector<std::int32_t>& triangles)
-{
-  std::map<std::pair<int, int>, int> counts;
-  for (std::size_t t = 0; t < triangles.size(); t += 3)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = triangles[t + k], b = triangles[t + (k + 1) % 3];
-      ++counts[{ std::min(a, b), std::max(a, b) }];
-    }
-  }
-  return counts;
-}
-
+/// Whether the output is a non-empty closed, consistently oriented 2-manifold.
 bool Closed(const ParallelDecimationResult& result)
 {
-  for (const auto& edge : EdgeCounts(result.Triangles))
-  {
-    if (edge.second != 2)
-    {
-      return false;
-    }
-  }
-  return !result.Triangles.empty();
+  return !result.Triangles.empty() && ClosedOriented(result.Triangles);
 }
 
 double Area(const ParallelDecimationResult& r)
