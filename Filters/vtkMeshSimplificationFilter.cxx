@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMeshSimplificationFilter.h"
 
-#include "vtkMeshSimplificationHelpers.h"
+#include "Simplification.h"
+#include "vtkSimplificationAttributes.h"
+#include "vtkSimplificationDeviation.h"
+#include "vtkSimplificationDistributed.h"
+#include "vtkSimplificationInput.h"
+#include "vtkSimplificationThreads.h"
 
-#include "vtkAlgorithm.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
@@ -12,10 +16,166 @@
 #include "vtkInformationVector.h"
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
 #include <functional>
+#include <sstream>
+
+/// One execution: the pieces of the input (a vtkPolyData is one, a composite input's polygonal
+/// leaves are one each), what they share, and the totals a count target is shared out by.
+struct vtkMeshSimplificationFilter::Run
+{
+  struct Piece
+  {
+    vtkSmartPointer<vtkPolyData> Input; // with the attribute arrays it can use
+    vtkPolyData* Output = nullptr;
+    vtkIdType Key = 0; // pieces of one key are parts of one surface (see LockSharedPoints)
+    vtkSimplification::TriangleInput Triangles;
+    bool Readable = false;
+    std::vector<std::uint8_t> Locks; // shared with other pieces, then the user's
+    std::int64_t SharedLocks = 0, UserLocks = 0;
+    std::string LockArray; // the user's lock array, for messages
+  };
+  std::vector<Piece> Pieces;
+  /// Several pieces, or several processes: a count is shared out and a relative bound refers
+  /// to the whole input's diagonal.
+  bool Shared = false;
+  vtkSimplification::Totals Totals;
+
+  /// The piece's name in messages ("" for a single piece).
+  std::string Name(std::size_t i) const { return this->Shared ? "Block " + std::to_string(i) + ": " : ""; }
+};
+
+namespace
+{
+using Piece = vtkMeshSimplificationFilter::Run::Piece;
+
+/// The pieces of the input, each with its output placed in the output's structure; leaves
+/// that are not polygonal data pass through unchanged. False with a message in problem when
+/// the input is neither a surface nor composite data.
+bool CollectPieces(vtkDataObject* input, vtkDataObject* output, std::vector<Piece>& pieces, std::string& problem)
+{
+  auto* compositeInput = vtkCompositeDataSet::SafeDownCast(input);
+  auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
+  const auto add = [&](vtkDataObject* block, vtkIdType key, const std::function<void(vtkDataObject*)>& place) {
+    auto* surface = vtkPolyData::SafeDownCast(block);
+    if (!surface)
+    {
+      vtkSmartPointer<vtkDataObject> copy = vtk::TakeSmartPointer(block->NewInstance());
+      copy->ShallowCopy(block);
+      place(copy);
+      return;
+    }
+    vtkNew<vtkPolyData> simplified;
+    place(simplified);
+    Piece piece;
+    piece.Input = surface;
+    piece.Output = simplified;
+    piece.Key = key;
+    pieces.push_back(std::move(piece));
+  };
+  if (!compositeInput)
+  {
+    Piece piece;
+    piece.Input = vtkSimplification::AsSurface(input, problem);
+    piece.Output = vtkPolyData::SafeDownCast(output);
+    pieces.push_back(std::move(piece));
+    return pieces.back().Input && pieces.back().Output;
+  }
+  compositeOutput->CopyStructure(compositeInput);
+  auto* collection = vtkPartitionedDataSetCollection::SafeDownCast(input);
+  auto* partitioned = vtkPartitionedDataSet::SafeDownCast(input);
+  if (collection)
+  {
+    // The partitions of one dataset are pieces of it: one key per partitioned dataset.
+    auto* out = vtkPartitionedDataSetCollection::SafeDownCast(output);
+    for (unsigned int d = 0; d < collection->GetNumberOfPartitionedDataSets(); ++d)
+    {
+      for (unsigned int p = 0; p < collection->GetNumberOfPartitions(d); ++p)
+      {
+        if (vtkDataObject* block = collection->GetPartitionAsDataObject(d, p))
+        {
+          add(block, d, [out, d, p](vtkDataObject* made) { out->SetPartition(d, p, made); });
+        }
+      }
+    }
+    return true;
+  }
+  if (partitioned)
+  {
+    auto* out = vtkPartitionedDataSet::SafeDownCast(output);
+    for (unsigned int p = 0; p < partitioned->GetNumberOfPartitions(); ++p)
+    {
+      if (vtkDataObject* block = partitioned->GetPartitionAsDataObject(p))
+      {
+        add(block, 0, [out, p](vtkDataObject* made) { out->SetPartition(p, made); });
+      }
+    }
+    return true;
+  }
+  // Other trees (multiblock): a block's pieces on the processes share its flat index.
+  vtkSmartPointer<vtkCompositeDataIterator> leaf = vtk::TakeSmartPointer(compositeInput->NewIterator());
+  for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+  {
+    add(leaf->GetCurrentDataObject(), static_cast<vtkIdType>(leaf->GetCurrentFlatIndex()),
+      [&](vtkDataObject* made) { compositeOutput->SetDataSet(leaf, made); });
+  }
+  return true;
+}
+
+/// "N of the P points are locked (by ..., ...)", for a target not reached.
+std::string LockNote(const Piece& piece, const meshsimp::Outcome& report, bool preserveBoundary)
+{
+  std::vector<std::string> causes;
+  if (piece.UserLocks > 0)
+  {
+    causes.push_back("the Locked Points array " + piece.LockArray);
+  }
+  if (piece.SharedLocks > 0)
+  {
+    causes.push_back("shared with other pieces");
+  }
+  if (preserveBoundary)
+  {
+    causes.push_back("PreserveBoundary");
+  }
+  const bool every = report.LockedPoints == report.UsablePoints;
+  std::string note = (every ? "every one of the " : std::to_string(report.LockedPoints) + " of the ") +
+    std::to_string(report.UsablePoints) + (every ? " points is locked" : " points are locked");
+  for (std::size_t i = 0; i < causes.size(); ++i)
+  {
+    note += (i == 0 ? " (" : ", ") + causes[i] + (i + 1 == causes.size() ? ")" : "");
+  }
+  return note;
+}
+
+/// A number as users typed it: no trailing zeros.
+std::string Format(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+}
+
+vtkMeshSimplificationFilter::vtkMeshSimplificationFilter() = default;
+vtkMeshSimplificationFilter::~vtkMeshSimplificationFilter() = default;
+
+void vtkMeshSimplificationFilter::SetTargetReduction(double reduction)
+{
+  // Clamped as vtkSetClampMacro would, remembering the value asked for (see CheckTarget).
+  const double clamped = reduction < 0.0 ? 0.0 : reduction > 1.0 ? 1.0 : reduction;
+  if (reduction == this->RequestedReduction && clamped == this->TargetReduction)
+  {
+    return;
+  }
+  this->RequestedReduction = reduction;
+  this->TargetReduction = clamped;
+  this->Modified();
+}
 
 vtkTypeBool vtkMeshSimplificationFilter::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -41,7 +201,7 @@ vtkTypeBool vtkMeshSimplificationFilter::ProcessRequest(
 
 int vtkMeshSimplificationFilter::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
@@ -52,98 +212,189 @@ int vtkMeshSimplificationFilter::FillOutputPortInformation(int, vtkInformation* 
   return 1;
 }
 
+bool vtkMeshSimplificationFilter::CheckTarget()
+{
+  // One line for a target that is not a number (vtkSetClampMacro lets NaN through), and a
+  // warning for a reduction outside [0, 1] that was clamped.
+  const bool bounded = this->TargetMode == TARGET_MAXIMUM_ERROR;
+  const char* name = bounded ? "MaximumError" : "TargetReduction";
+  if ((bounded && std::isnan(this->MaximumError)) || (this->TargetMode == TARGET_REDUCTION && std::isnan(this->TargetReduction)))
+  {
+    vtkErrorMacro(<< "Cannot simplify: " << name << " is not a number.");
+    return false;
+  }
+  if (this->TargetMode == TARGET_REDUCTION && this->RequestedReduction != this->TargetReduction)
+  {
+    vtkWarningMacro(<< "TargetReduction " << Format(this->RequestedReduction) << " is outside [0, 1]: "
+                    << Format(this->TargetReduction) << " is used.");
+  }
+  return true;
+}
+
 int vtkMeshSimplificationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
-  // The pieces to simplify, keyed by their flat index in a composite input (0 for a vtkPolyData).
-  std::vector<vtkPolyData*> inputs, outputs;
+  // The pieces, read once; what they share (collective under MPI, so every process gets here
+  // whatever it holds); then each piece simplified in turn.
+  this->AchievedMaximumError = 0.0;
+  Run run;
+  std::string problem;
+  if (!CollectPieces(vtkDataObject::GetData(inputVector[0], 0), vtkDataObject::GetData(outputVector, 0), run.Pieces, problem))
+  {
+    vtkErrorMacro(<< "Cannot simplify: " << problem << ".");
+    return 1;
+  }
+  if (!this->CheckTarget())
+  {
+    return 1;
+  }
+  std::vector<const vtkSimplification::TriangleInput*> triangles;
   std::vector<vtkIdType> keys;
-  auto* compositeInput = vtkCompositeDataSet::SafeDownCast(input);
-  auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
-  // A leaf to simplify, or a warning; place puts its output into the output's structure.
-  const auto add = [&](vtkDataObject* block, vtkIdType key, const std::function<void(vtkPolyData*)>& place) {
-    auto* piece = vtkPolyData::SafeDownCast(block);
-    if (!piece)
-    {
-      vtkWarningMacro(<< "Skipping a block of type " << block->GetClassName() << ": not polygonal data.");
-      return;
-    }
-    vtkNew<vtkPolyData> simplified;
-    place(simplified);
-    inputs.push_back(piece);
-    outputs.push_back(simplified);
-    keys.push_back(key);
-  };
-  auto* collection = vtkPartitionedDataSetCollection::SafeDownCast(input);
-  auto* partitioned = vtkPartitionedDataSet::SafeDownCast(input);
-  if (compositeInput && compositeOutput)
+  for (Piece& piece : run.Pieces)
   {
-    compositeOutput->CopyStructure(compositeInput);
+    piece.Readable = vtkSimplification::PrepareTriangles(this, piece.Input, piece.Triangles);
+    triangles.push_back(piece.Readable ? &piece.Triangles : nullptr);
+    keys.push_back(piece.Key);
   }
-  if (collection && vtkPartitionedDataSetCollection::SafeDownCast(output))
+  run.Shared = run.Pieces.size() > 1 || vtkSimplification::IsDistributed();
+  std::vector<std::vector<std::uint8_t>> locks;
+  vtkSimplification::LockSharedPoints(triangles, keys, locks);
+  if (run.Shared)
   {
-    // The partitions of one dataset are pieces of it: one key per partitioned dataset.
-    auto* out = vtkPartitionedDataSetCollection::SafeDownCast(output);
-    for (unsigned int d = 0; d < collection->GetNumberOfPartitionedDataSets(); ++d)
+    run.Totals = vtkSimplification::GatherTotals(triangles);
+  }
+  const double count = static_cast<double>(run.Pieces.size());
+  for (std::size_t i = 0; i < run.Pieces.size() && !this->GetAbortExecute(); ++i)
+  {
+    run.Pieces[i].Locks = std::move(locks[i]);
+    this->SetProgressShiftScale(static_cast<double>(i) / count, 1.0 / count);
+    this->SimplifyPiece(run, i);
+  }
+  this->SetProgressShiftScale(0.0, 1.0);
+  return 1;
+}
+
+bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
+{
+  Piece& piece = run.Pieces[i];
+  if (!piece.Readable)
+  {
+    return false;
+  }
+  // The common options: the target (this piece's share of a count), the locks and regions.
+  meshsimp::SimplificationOptions options;
+  meshsimp::Target& goal = options.Goal;
+  goal.Mode = static_cast<meshsimp::TargetMode>(this->TargetMode);
+  goal.Reduction = this->TargetReduction;
+  goal.TriangleCount = this->TargetTriangleCount;
+  const double triangles = static_cast<double>(piece.Triangles.View.NumberOfTriangles);
+  if (run.Shared && run.Totals.Triangles > 0.0)
+  {
+    goal.TriangleCount = std::llround(static_cast<double>(this->TargetTriangleCount) * triangles / run.Totals.Triangles);
+  }
+  goal.MaximumError = this->MaximumError;
+  goal.RelativeError = this->RelativeError;
+  goal.ReferenceLength = run.Shared ? run.Totals.Diagonal : 0.0;
+  goal.Tolerance = this->TargetTolerance;
+  options.PreserveBoundary = this->PreserveBoundary;
+  piece.SharedLocks = std::count(piece.Locks.begin(), piece.Locks.end(), meshsimp::SharedPointLock);
+  if (vtkAbstractArray* array = vtkSimplification::SelectedPointArray(this, 0, piece.Input, "Locked Points"))
+  {
+    piece.UserLocks = vtkSimplification::ReadLockedPoints(array, piece.Locks);
+    piece.LockArray = std::string("'") + (array->GetName() ? array->GetName() : "") + "'";
+  }
+  options.LockedPoints = piece.Locks.empty() ? nullptr : piece.Locks.data();
+  std::vector<std::int32_t> regions;
+  if (this->PreserveAttributeBorders)
+  {
+    vtkAbstractArray* array = vtkSimplification::SelectedPointArray(this, 1, piece.Input, "attribute borders");
+    if (array)
     {
-      for (unsigned int p = 0; p < collection->GetNumberOfPartitions(d); ++p)
-      {
-        if (vtkDataObject* block = collection->GetPartitionAsDataObject(d, p))
-        {
-          add(block, d, [out, d, p](vtkPolyData* simplified) { out->SetPartition(d, p, simplified); });
-        }
-      }
+      regions = vtkSimplification::ReadRegions(array);
+      options.Regions = regions.data();
+    }
+    else
+    {
+      vtkWarningMacro(<< run.Name(i) << "PreserveAttributeBorders is on, but no point array is chosen for it.");
     }
   }
-  else if (partitioned && vtkPartitionedDataSet::SafeDownCast(output))
+
+  meshsimp::SimplifiedMesh mesh;
+  const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, this->NumberOfThreads);
+  const bool none = (this->TargetMode == TARGET_REDUCTION && this->TargetReduction == 1.0) ||
+    (this->TargetMode == TARGET_TRIANGLE_COUNT && this->TargetTriangleCount == 0);
+  if (none)
   {
-    auto* out = vtkPartitionedDataSet::SafeDownCast(output);
-    for (unsigned int p = 0; p < partitioned->GetNumberOfPartitions(); ++p)
-    {
-      if (vtkDataObject* block = partitioned->GetPartitionAsDataObject(p))
-      {
-        add(block, 0, [out, p](vtkPolyData* simplified) { out->SetPartition(p, simplified); });
-      }
-    }
+    vtkWarningMacro(<< run.Name(i) << "The output is empty: "
+                    << (this->TargetMode == TARGET_REDUCTION ? "TargetReduction 1" : "TargetTriangleCount 0")
+                    << " asks for no triangle.");
   }
-  else if (compositeInput && compositeOutput)
+  else if (!this->RunCore(piece.Triangles.View, options, context, mesh))
   {
-    // Other trees (multiblock): a block's pieces on the processes share its flat index.
-    vtkSmartPointer<vtkCompositeDataIterator> leaf = vtk::TakeSmartPointer(compositeInput->NewIterator());
-    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
-    {
-      add(leaf->GetCurrentDataObject(), static_cast<vtkIdType>(leaf->GetCurrentFlatIndex()),
-        [&](vtkPolyData* simplified) { compositeOutput->SetDataSet(leaf, simplified); });
-    }
-  }
-  else if (vtkPolyData::SafeDownCast(input) && vtkPolyData::SafeDownCast(output))
-  {
-    inputs.push_back(vtkPolyData::SafeDownCast(input));
-    outputs.push_back(vtkPolyData::SafeDownCast(output));
-    keys.push_back(0);
+    vtkWarningMacro(<< run.Name(i) << "Aborted: the output is empty.");
+    mesh = meshsimp::SimplifiedMesh();
   }
   else
   {
-    vtkErrorMacro(<< "Cannot simplify a " << (input ? input->GetClassName() : "missing input")
-                  << ": polygonal data or composite data of it is needed.");
-    return 0;
+    this->WarnAboutOutcome(run, i, mesh);
   }
-  std::vector<std::vector<std::uint8_t>> locks;
-  vtkMeshSimplificationHelpers::LockSharedPoints(inputs, keys, locks); // collective under MPI
-  int result = 1;
-  const double count = static_cast<double>(inputs.size());
-  for (std::size_t i = 0; i < inputs.size() && !this->GetAbortExecute(); ++i)
+  vtkSimplification::SetOutput(piece.Input, piece.Triangles, mesh, this->OutputPointsPrecision, piece.Output);
+  if (mesh.Report.MaximumError >= 0.0)
   {
-    this->SetProgressShiftScale(static_cast<double>(i) / count, 1.0 / count);
-    result = this->SimplifyPiece(inputs[i], outputs[i], locks[i]) && result;
+    const double error = goal.InBoundUnits(mesh.Report.MaximumError, mesh.Report.Diagonal);
+    this->AchievedMaximumError = std::max(this->AchievedMaximumError, error);
+    vtkSimplification::AddFieldValue(piece.Output, "MaximumError", error);
   }
-  this->SetProgressShiftScale(0.0, 1.0);
-  return result;
+  if (this->ComputeDeviation)
+  {
+    vtkSimplification::AddDeviation(piece.Input->GetPoints(), piece.Triangles, piece.Output, context);
+  }
+  return true;
+}
+
+void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)
+{
+  // The count's miss first, with its reason, then what the algorithm changed to get there, then
+  // what it left out of the input.
+  const meshsimp::Outcome& report = mesh.Report;
+  const std::int64_t count = mesh.NumberOfTriangles(), target = report.TargetTriangles;
+  const std::int64_t slack = std::max<std::int64_t>(1, static_cast<std::int64_t>(this->TargetTolerance * static_cast<double>(target)));
+  const bool missed = this->TargetMode != TARGET_MAXIMUM_ERROR && std::abs(count - target) > slack;
+  if (missed || report.Stop == meshsimp::StopReason::AllLocked)
+  {
+    std::string reason = report.Stop == meshsimp::StopReason::AllLocked ? LockNote(run.Pieces[i], report, this->PreserveBoundary)
+      : !report.Reason.empty() ? report.Reason
+                               : "no change that keeps the mesh valid is left";
+    if (report.LockedPoints > 0 && report.Stop != meshsimp::StopReason::AllLocked)
+    {
+      reason += "; " + LockNote(run.Pieces[i], report, this->PreserveBoundary);
+    }
+    vtkWarningMacro(<< run.Name(i) << "Reached " << count << " triangles where " << target
+                    << " were asked for: " << reason << ".");
+  }
+  for (const std::string& note : report.Notes)
+  {
+    vtkWarningMacro(<< run.Name(i) << "To reach " << target << " triangles, " << note << ".");
+  }
+  if (report.NonFinitePoints > 0)
+  {
+    vtkWarningMacro(<< run.Name(i) << "Ignoring the triangles of " << report.NonFinitePoints
+                    << " points with NaN or infinite coordinates.");
+  }
 }
 
 void vtkMeshSimplificationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetMode: " << this->TargetMode << "\n";
+  os << indent << "TargetReduction: " << this->TargetReduction << "\n";
+  os << indent << "TargetTriangleCount: " << this->TargetTriangleCount << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "RelativeError: " << this->RelativeError << "\n";
+  os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
+  os << indent << "PreserveAttributeBorders: " << this->PreserveAttributeBorders << "\n";
+  os << indent << "ComputeDeviation: " << this->ComputeDeviation << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "AchievedMaximumError: " << this->AchievedMaximumError << "\n";
 }

@@ -1,16 +1,37 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkMeshSimplificationFilter
- * @brief   the module's filters' common base: polygonal data in, or composite data of it
+ * @brief   the front end every MeshSimplification filter shares: the target, the constraints,
+ *          the input, the output mapping and the messages
  *
- * A subclass simplifies one vtkPolyData in SimplifyPiece. This base runs it on a vtkPolyData
- * input, or on every vtkPolyData leaf of a composite input (multiblock, partitioned data) into
- * an output of the same structure. It takes composite inputs itself rather than leaving the
- * leaves to the executive, so that under MPI (a global controller of several processes) the
- * exchange of piece borders is one collective call per execution on every process, whatever
- * leaves a process holds: each piece's border points that lie on another process's piece of
- * the same leaf (same flat index) are locked, so the simplified pieces still fit together.
- * Other leaf types are skipped with a warning; progress runs over the leaves in turn.
+ * A subclass adds its algorithm's own settings and runs its core in RunCore; everything else is
+ * here, so that a target and a constraint mean the same thing in every filter:
+ *
+ * - The target (TargetMode): a reduction (the fraction of the triangles to remove), a triangle
+ *   count, or an error bound (MaximumError, relative to the bounding-box diagonal by default).
+ *   A reduction or a count means the whole input: a composite input's blocks, and the pieces of
+ *   a distributed one, share the count out by their triangles. A relative bound is relative to
+ *   the whole input's diagonal. A count is met within the filter's tolerance, or a warning says
+ *   why not; a target of no triangle gives an empty output, with a warning.
+ * - Constraints: PreserveBoundary keeps every point of an open border; a point array chosen as
+ *   input array 0 (Locked Points) locks the points where it is nonzero; with
+ *   PreserveAttributeBorders, a point array chosen as input array 1 divides the points into
+ *   regions of equal values, and no collapse or cluster joins two regions, so that a colour or
+ *   label border stays sharp. Under MPI the points a piece shares with another piece are locked,
+ *   so the simplified pieces still fit together.
+ * - Input: vtkPolyData, any other dataset whose cells are surfaces (through vtkGeometryFilter,
+ *   as Extract Surface does; one with 3-D cells is refused with a message that says to extract
+ *   its surface first), or composite data of them: polygonal leaves are simplified, other leaves
+ *   are passed through unchanged. Polygons are triangulated and strips decomposed; vertex and
+ *   line cells are dropped with a warning. The input is never modified.
+ * - Output: point data by one rule in every filter (vtkSimplificationAttributes.h: floating
+ *   arrays interpolated, unsigned-char colours averaged and rounded, other arrays from one
+ *   input point), cell data copied from the surviving triangles, the algorithm's own arrays
+ *   and, with ComputeDeviation, the point array "Deviation" (each output point's distance to
+ *   the input surface, input units) with "DeviationMaximum" and "DeviationRMS" in the field
+ *   data. AchievedMaximumError and the field value "MaximumError" give the largest error the
+ *   algorithm bounds, in MaximumError's units.
+ * - Messages: one line each; when the output misses the target, the first says why.
  */
 #ifndef vtkMeshSimplificationFilter_h
 #define vtkMeshSimplificationFilter_h
@@ -18,8 +39,15 @@
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <cstdint> // for std::uint8_t
-#include <vector>  // for std::vector
+#include <memory> // for std::unique_ptr
+
+namespace meshsimp
+{
+struct ExecutionContext;
+struct SimplificationOptions;
+struct SimplifiedMesh;
+struct TriangleMeshView;
+}
 
 class MESHSIMPLIFICATIONFILTERS_EXPORT vtkMeshSimplificationFilter : public vtkPolyDataAlgorithm
 {
@@ -30,24 +58,153 @@ public:
   /// Creates the output's data object: vtkPolyData, or the composite input's type.
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  enum TargetModes
+  {
+    TARGET_REDUCTION = 0,
+    TARGET_TRIANGLE_COUNT = 1,
+    TARGET_MAXIMUM_ERROR = 2
+  };
+
+  ///@{
+  /**
+   * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
+   * MaximumError.
+   */
+  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
+  vtkGetMacro(TargetMode, int);
+  void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
+  void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
+  void SetTargetModeToMaximumError() { this->SetTargetMode(TARGET_MAXIMUM_ERROR); }
+  ///@}
+
+  ///@{
+  /**
+   * The fraction of the input triangles to remove, in [0, 1] (default 0.9): 1 removes them all.
+   * A value outside is clamped, and the execution warns that it was.
+   */
+  void SetTargetReduction(double reduction);
+  vtkGetMacro(TargetReduction, double);
+  ///@}
+
+  ///@{
+  /**
+   * The number of triangles to keep in TargetTriangleCount mode (default 1000), over the whole
+   * input: the blocks of a composite input and the pieces of a distributed one share it out by
+   * their triangles.
+   */
+  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetTriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * The error bound of MaximumError mode (default 0.01): what it bounds is the algorithm's
+   * (see the subclass). A distance, relative to the whole input's bounding-box diagonal when
+   * RelativeError is on (default), else in input units.
+   */
+  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumError, double);
+  vtkSetMacro(RelativeError, bool);
+  vtkGetMacro(RelativeError, bool);
+  vtkBooleanMacro(RelativeError, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Keep every point of an open border where it is (default off).
+   */
+  vtkSetMacro(PreserveBoundary, bool);
+  vtkGetMacro(PreserveBoundary, bool);
+  vtkBooleanMacro(PreserveBoundary, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Keep the borders between the values of the point array chosen as input array 1 sharp
+   * (default off): no collapse or cluster joins points of different values, so colours or
+   * labels never blend across a border. Select the array with
+   * SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name).
+   */
+  vtkSetMacro(PreserveAttributeBorders, bool);
+  vtkGetMacro(PreserveAttributeBorders, bool);
+  vtkBooleanMacro(PreserveAttributeBorders, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Add the point array "Deviation": each output point's distance to the input surface, in
+   * input units, with its maximum and RMS in the field data (default off; on in ParaView).
+   */
+  vtkSetMacro(ComputeDeviation, bool);
+  vtkGetMacro(ComputeDeviation, bool);
+  vtkBooleanMacro(ComputeDeviation, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Threads; 0 (default) uses all cores. The output does not depend on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
+   * vtkAlgorithm::DEFAULT_PRECISION (default: as the input), SINGLE_PRECISION or
+   * DOUBLE_PRECISION for the output points.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  /**
+   * The largest error the algorithm bounds, after the last execution, in MaximumError's units
+   * (a fraction of the diagonal when RelativeError is on); 0 when the algorithm does not
+   * measure it in the mode used.
+   */
+  vtkGetMacro(AchievedMaximumError, double);
+
+  /// One execution's state (its pieces and what they share), private to the implementation.
+  struct Run;
+
 protected:
-  vtkMeshSimplificationFilter() = default;
-  ~vtkMeshSimplificationFilter() override = default;
+  vtkMeshSimplificationFilter();
+  ~vtkMeshSimplificationFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * Simplifies input into output. pieceLocks flags (meshsimp::SharedPointLock) the input points
-   * shared with other processes' pieces, or is empty; the subclass may add its own locks.
-   * Returns what RequestData returns (0 after an error).
+   * The subclass's algorithm on one piece: its own settings from its properties added to the
+   * common options, and its core run on the mesh into result. Returns false when aborted.
    */
-  virtual int SimplifyPiece(vtkPolyData* input, vtkPolyData* output, std::vector<std::uint8_t>& pieceLocks) = 0;
+  virtual bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
+    const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) = 0;
+
+  /// How far from a count target the subclass's algorithm may end (a fraction of the count).
+  double TargetTolerance = 0.01;
+
+  int TargetMode = TARGET_REDUCTION;
+  double TargetReduction = 0.9;
+  double RequestedReduction = 0.9; // as set, before clamping
+  vtkIdType TargetTriangleCount = 1000;
+  double MaximumError = 0.01;
+  bool RelativeError = true;
+  bool PreserveBoundary = false;
+  bool PreserveAttributeBorders = false;
+  bool ComputeDeviation = false;
+  int NumberOfThreads = 0;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
+  double AchievedMaximumError = 0.0;
 
 private:
   vtkMeshSimplificationFilter(const vtkMeshSimplificationFilter&) = delete;
   void operator=(const vtkMeshSimplificationFilter&) = delete;
+
+  bool CheckTarget();
+  bool SimplifyPiece(Run& run, std::size_t piece);
+  void WarnAboutOutcome(const Run& run, std::size_t piece, const meshsimp::SimplifiedMesh& mesh);
 };
 
 #endif

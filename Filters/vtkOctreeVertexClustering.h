@@ -4,7 +4,9 @@
  * @brief   simplify a triangle mesh by adaptive octree vertex clustering
  *
  * vtkOctreeVertexClustering implements the geometric simplification of Zhou, Zhang, Shi and
- * Pan, "A new simplification algorithm for colored or textured polygonal models" (§2–3).
+ * Pan, "A new simplification algorithm for colored or textured polygonal models" (§2–3). The
+ * target, the constraints, the input and output handling are the common ones of
+ * vtkMeshSimplificationFilter; a count is met within 3 %, or a warning says why not.
  * Like vtkQuadricClustering it replaces all vertices of a spatial cell by one representative,
  * but the cells are the leaves of an adaptive octree instead of a uniform grid:
  *
@@ -66,55 +68,6 @@ public:
   vtkTypeMacro(vtkOctreeVertexClustering, vtkMeshSimplificationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum TargetModes
-  {
-    TARGET_REDUCTION = 0,
-    TARGET_TRIANGLE_COUNT = 1,
-    TARGET_MAXIMUM_ERROR = 2
-  };
-
-  ///@{
-  /**
-   * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
-   * MaximumError. A count is met within 3 %, or as nearly as clustering can with a warning
-   * that says why (MaximumCellSize, points locked along piece borders under MPI, or no
-   * clustering near a very small count).
-   */
-  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
-  vtkGetMacro(TargetMode, int);
-  void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
-  void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
-  void SetTargetModeToMaximumError() { this->SetTargetMode(TARGET_MAXIMUM_ERROR); }
-  ///@}
-
-  ///@{
-  /**
-   * Fraction of the input triangles to remove, as in vtkQuadricDecimation (default 0.9).
-   */
-  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
-  vtkGetMacro(TargetReduction, double);
-  ///@}
-
-  ///@{
-  /**
-   * Number of output triangles wanted in TargetTriangleCount mode (default 1000).
-   */
-  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
-  vtkGetMacro(TargetTriangleCount, vtkIdType);
-  ///@}
-
-  ///@{
-  /**
-   * Error bound ε of MaximumError mode (default 0.01). A distance, relative to the input's
-   * bounding-box diagonal when RelativeError is on (default), else in input units.
-   */
-  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumError, double);
-  vtkSetMacro(RelativeError, bool);
-  vtkGetMacro(RelativeError, bool);
-  vtkBooleanMacro(RelativeError, bool);
-  ///@}
-
   ///@{
   /**
    * Leaves with a larger edge are always split (§2.4 rule a). Relative to the bounding-box
@@ -162,49 +115,19 @@ public:
   vtkBooleanMacro(PreventFlips, bool);
   ///@}
 
-  ///@{
-  /**
-   * Threads for the parallel phases; 0 (default) uses all cores. The output does not depend
-   * on it.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
-  ///@{
-  /**
-   * vtkAlgorithm::DEFAULT_PRECISION (default: as the input), SINGLE_PRECISION or
-   * DOUBLE_PRECISION for the output points.
-   */
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
-  vtkGetMacro(OutputPointsPrecision, int);
-  ///@}
-
-  /**
-   * Largest cluster error of the last execution, in input units.
-   */
-  vtkGetMacro(AchievedMaximumError, double);
-
 protected:
   vtkOctreeVertexClustering();
   ~vtkOctreeVertexClustering() override = default;
 
-  int SimplifyPiece(vtkPolyData* input, vtkPolyData* output, std::vector<std::uint8_t>& pieceLocks) override;
+  bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
+    const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
 
-  int TargetMode = TARGET_REDUCTION;
-  double TargetReduction = 0.9;
-  vtkIdType TargetTriangleCount = 1000;
-  double MaximumError = 0.01;
-  bool RelativeError = true;
   double MaximumCellSize = 1.0;
   int MaximumVerticesPerCell = 0;
   int ErrorIterations = 3;
   bool BoundaryPlanes = true;
   double BoundaryWeight = 10.0;
   bool PreventFlips = true;
-  int NumberOfThreads = 0;
-  int OutputPointsPrecision = DEFAULT_PRECISION;
-  double AchievedMaximumError = 0.0;
 
 private:
   vtkOctreeVertexClustering(const vtkOctreeVertexClustering&) = delete;

@@ -78,12 +78,6 @@ public:
   vtkTypeMacro(vtkParallelDecimation, vtkMeshSimplificationFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum TargetModes
-  {
-    TARGET_REDUCTION = 0,
-    TARGET_TRIANGLE_COUNT = 1,
-    TARGET_MAXIMUM_ERROR = 2
-  };
   enum ImportanceMeasures
   {
     AVERAGE_PLANE = 0,
@@ -97,48 +91,6 @@ public:
 
   ///@{
   /**
-   * What decides how far to simplify: TargetReduction (default), TargetTriangleCount or
-   * MaximumError.
-   */
-  vtkSetClampMacro(TargetMode, int, TARGET_REDUCTION, TARGET_MAXIMUM_ERROR);
-  vtkGetMacro(TargetMode, int);
-  void SetTargetModeToReduction() { this->SetTargetMode(TARGET_REDUCTION); }
-  void SetTargetModeToTriangleCount() { this->SetTargetMode(TARGET_TRIANGLE_COUNT); }
-  void SetTargetModeToMaximumError() { this->SetTargetMode(TARGET_MAXIMUM_ERROR); }
-  ///@}
-
-  ///@{
-  /**
-   * Fraction of the input triangles to remove, as in vtkQuadricDecimation (default 0.9).
-   */
-  vtkSetClampMacro(TargetReduction, double, 0.0, 1.0);
-  vtkGetMacro(TargetReduction, double);
-  ///@}
-
-  ///@{
-  /**
-   * Number of output triangles wanted in TargetTriangleCount mode (default 1000).
-   */
-  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
-  vtkGetMacro(TargetTriangleCount, vtkIdType);
-  ///@}
-
-  ///@{
-  /**
-   * Error bound of MaximumError mode (default 0.01): the filter simplifies as far as it can
-   * while every output point stays within it of the planes of the input triangles it stands
-   * for. A distance, relative to the input's bounding-box diagonal when RelativeError is on
-   * (default), else in input units.
-   */
-  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumError, double);
-  vtkSetMacro(RelativeError, bool);
-  vtkGetMacro(RelativeError, bool);
-  vtkBooleanMacro(RelativeError, bool);
-  ///@}
-
-  ///@{
-  /**
    * Degrees between the normals of an edge's two triangles above which the edge is sharp
    * (default 75). Lower values keep more creases and corners.
    */
@@ -148,12 +100,8 @@ public:
 
   ///@{
   /**
-   * Keep every boundary vertex (default off). Boundary corners sharper than
-   * BoundaryCornerAngle (degrees, default 60) are kept either way.
+   * Boundary corners sharper than BoundaryCornerAngle (degrees, default 60) are never removed.
    */
-  vtkSetMacro(PreserveBoundary, bool);
-  vtkGetMacro(PreserveBoundary, bool);
-  vtkBooleanMacro(PreserveBoundary, bool);
   vtkSetClampMacro(BoundaryCornerAngle, double, 0.0, 180.0);
   vtkGetMacro(BoundaryCornerAngle, double);
   ///@}
@@ -216,47 +164,14 @@ public:
   vtkGetMacro(RoundFraction, double);
   ///@}
 
-  ///@{
-  /**
-   * Threads; 0 (default) uses all cores. The output does not depend on it.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
-  ///@{
-  /**
-   * vtkAlgorithm::DEFAULT_PRECISION (default: as the input), SINGLE_PRECISION or
-   * DOUBLE_PRECISION for the output points.
-   */
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
-  vtkGetMacro(OutputPointsPrecision, int);
-  ///@}
-
-  /**
-   * Rounds of the last execution.
-   */
-  vtkGetMacro(Rounds, vtkIdType);
-
-  /**
-   * In MaximumError mode, the largest distance of an output point to the planes it stands for
-   * after the last execution, in input units (0 in the other modes).
-   */
-  vtkGetMacro(AchievedMaximumError, double);
-
 protected:
   vtkParallelDecimation();
   ~vtkParallelDecimation() override = default;
 
-  int SimplifyPiece(vtkPolyData* input, vtkPolyData* output, std::vector<std::uint8_t>& pieceLocks) override;
+  bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
+    const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
 
-  int TargetMode = TARGET_REDUCTION;
-  double TargetReduction = 0.9;
-  vtkIdType TargetTriangleCount = 1000;
-  double MaximumError = 0.01;
-  bool RelativeError = true;
   double FeatureAngle = 75.0;
-  bool PreserveBoundary = false;
   double BoundaryCornerAngle = 60.0;
   int ImportanceMeasure = QUADRIC;
   bool AccumulateError = true;
@@ -266,11 +181,6 @@ protected:
   double BucketImportance = 0.02;
   double BucketShare = 0.8;
   double RoundFraction = 0.1;
-  int NumberOfThreads = 0;
-  int OutputPointsPrecision = DEFAULT_PRECISION;
-  vtkIdType Rounds = 0;
-
-  double AchievedMaximumError = 0.0;
 
 private:
   vtkParallelDecimation(const vtkParallelDecimation&) = delete;

@@ -15,6 +15,8 @@
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
@@ -37,6 +39,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -229,8 +232,17 @@ double ParseNumber(const std::string& option, const std::string& text)
   Fail("option " + option + " needs a number, not '" + text + "'");
 }
 
-/// The --set names of each method's filter.
+/// The --set names of each method's filter, and of every filter.
 using Setters = std::map<std::string, std::function<void(double)>>;
+
+Setters CommonSetters(vtkMeshSimplificationFilter* f)
+{
+  return {
+    { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
+    { "ComputeDeviation", [f](double v) { f->SetComputeDeviation(v != 0.0); } },
+    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
+  };
+}
 
 Setters OctreeSetters(vtkOctreeVertexClustering* f)
 {
@@ -241,7 +253,6 @@ Setters OctreeSetters(vtkOctreeVertexClustering* f)
     { "BoundaryPlanes", [f](double v) { f->SetBoundaryPlanes(v != 0.0); } },
     { "BoundaryWeight", [f](double v) { f->SetBoundaryWeight(v); } },
     { "PreventFlips", [f](double v) { f->SetPreventFlips(v != 0.0); } },
-    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
 }
 
@@ -249,7 +260,6 @@ Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
 {
   return {
     { "FeatureCurvature", [f](double v) { f->SetFeatureCurvature(v); } },
-    { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
     { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
     { "UseNormalFactor", [f](double v) { f->SetUseNormalFactor(v != 0.0); } },
     { "UseShapeFactor", [f](double v) { f->SetUseShapeFactor(v != 0.0); } },
@@ -258,7 +268,6 @@ Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
     { "SurfaceErrorWeight", [f](double v) { f->SetSurfaceErrorWeight(v); } },
     { "MinimumAngle", [f](double v) { f->SetMinimumAngle(v); } },
     { "BatchSize", [f](double v) { f->SetBatchSize(static_cast<int>(v)); } },
-    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
 }
 
@@ -266,7 +275,6 @@ Setters ParallelSetters(vtkParallelDecimation* f)
 {
   return {
     { "FeatureAngle", [f](double v) { f->SetFeatureAngle(v); } },
-    { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
     { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
     { "ImportanceMeasure", [f](double v) { f->SetImportanceMeasure(static_cast<int>(v)); } },
     { "AccumulateError", [f](double v) { f->SetAccumulateError(v != 0.0); } },
@@ -276,7 +284,6 @@ Setters ParallelSetters(vtkParallelDecimation* f)
     { "BucketImportance", [f](double v) { f->SetBucketImportance(v); } },
     { "BucketShare", [f](double v) { f->SetBucketShare(v); } },
     { "RoundFraction", [f](double v) { f->SetRoundFraction(v); } },
-    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
 }
 
@@ -285,218 +292,270 @@ const char* Usage =
   "         --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]\n"
   "         [--repeat N] [--json] INPUT OUTPUT\n"
   "  --repeat N  run the filter N times; time_ms is the median\n";
+
+/// The command line.
+struct Arguments
+{
+  std::string Method, Input, Output;
+  double Reduction = 0.9, MaximumError = -1.0;
+  long long TargetTriangles = -1;
+  bool RelativeError = false, Json = false;
+  int Threads = 0, Repeat = 1;
+  std::vector<std::pair<std::string, double>> Settings;
+};
+
+/// An option's effect on the arguments; false for an unknown option.
+bool ParseOption(const std::string& arg, const std::function<std::string()>& value, Arguments& a)
+{
+  if (arg == "--method")
+    a.Method = value();
+  else if (arg == "--reduction")
+    a.Reduction = ParseNumber(arg, value());
+  else if (arg == "--target-triangles")
+    a.TargetTriangles = static_cast<long long>(ParseNumber(arg, value()));
+  else if (arg == "--max-error")
+    a.MaximumError = ParseNumber(arg, value());
+  else if (arg == "--relative-error")
+    a.RelativeError = true;
+  else if (arg == "--threads")
+    a.Threads = static_cast<int>(ParseNumber(arg, value()));
+  else if (arg == "--repeat")
+    a.Repeat = static_cast<int>(ParseNumber(arg, value()));
+  else if (arg == "--json")
+    a.Json = true;
+  else if (arg == "--set")
+  {
+    const std::string assignment = value();
+    const std::size_t equals = assignment.find('=');
+    if (equals == std::string::npos)
+    {
+      Fail("--set needs Name=Value, not '" + assignment + "'");
+    }
+    a.Settings.emplace_back(assignment.substr(0, equals), ParseNumber("--set", assignment.substr(equals + 1)));
+  }
+  else
+    return false;
+  return true;
 }
 
-int main(int argc, char* argv[])
+/// The command line, checked: an ordered list of the checks, the first that fails named.
+Arguments ParseArguments(int argc, char* argv[])
 {
-  std::string method, input, output;
-  double reduction = -1.0, maxError = -1.0;
-  long long targetTriangles = -1;
-  bool relativeError = false, json = false;
-  int threads = 0, repeat = 1;
-  std::vector<std::pair<std::string, double>> settings;
+  Arguments a;
+  bool reductionGiven = false;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
+    if (arg == "--help" || arg == "-h")
+    {
+      std::fputs(Usage, stdout);
+      std::exit(0);
+    }
+    const auto value = [&]() -> std::string {
       if (i + 1 >= argc)
       {
         Fail("option " + arg + " needs a value");
       }
       return argv[++i];
     };
-    if (arg == "--help" || arg == "-h")
-    {
-      std::fputs(Usage, stdout);
-      return 0;
-    }
-    else if (arg == "--method")
-      method = value();
-    else if (arg == "--reduction")
-      reduction = ParseNumber(arg, value());
-    else if (arg == "--target-triangles")
-      targetTriangles = static_cast<long long>(ParseNumber(arg, value()));
-    else if (arg == "--max-error")
-    {
-      maxError = ParseNumber(arg, value());
-      if (!(maxError >= 0.0))
-      {
-        Fail("--max-error must be 0 or more");
-      }
-    }
-    else if (arg == "--relative-error")
-      relativeError = true;
-    else if (arg == "--threads")
-      threads = static_cast<int>(ParseNumber(arg, value()));
-    else if (arg == "--repeat")
-      repeat = static_cast<int>(ParseNumber(arg, value()));
-    else if (arg == "--json")
-      json = true;
-    else if (arg == "--set")
-    {
-      const std::string assignment = value();
-      const std::size_t equals = assignment.find('=');
-      if (equals == std::string::npos)
-      {
-        Fail("--set needs Name=Value, not '" + assignment + "'");
-      }
-      settings.emplace_back(
-        assignment.substr(0, equals), ParseNumber("--set", assignment.substr(equals + 1)));
-    }
-    else if (!arg.empty() && arg[0] == '-')
+    reductionGiven = reductionGiven || arg == "--reduction";
+    if (ParseOption(arg, value, a))
+      continue;
+    if (!arg.empty() && arg[0] == '-')
       Fail("unknown option " + arg);
-    else if (input.empty())
-      input = arg;
-    else if (output.empty())
-      output = arg;
+    else if (a.Input.empty())
+      a.Input = arg;
+    else if (a.Output.empty())
+      a.Output = arg;
     else
       Fail("unexpected argument " + arg);
   }
-  if (input.empty() || output.empty())
-  {
-    Fail(std::string("an INPUT and an OUTPUT file are needed\n") + Usage);
-  }
-  if (method != "octree" && method != "volume" && method != "parallel")
-  {
-    Fail("unknown --method '" + method + "' (available: octree, volume, parallel)");
-  }
-  if ((reduction >= 0.0) + (targetTriangles >= 0) + (maxError >= 0.0) > 1)
-  {
-    Fail("give only one of --reduction, --target-triangles, --max-error");
-  }
-  if (reduction >= 0.0 && reduction >= 1.0)
-  {
-    Fail("--reduction must be in [0, 1)");
-  }
-  if (threads < 0)
-  {
-    Fail("--threads must be 0 (all cores) or more");
-  }
-  if (repeat < 1)
-  {
-    Fail("--repeat must be 1 or more");
-  }
-
-  vtkSmartPointer<vtkPolyData> mesh = Read(input);
-  const double reductionWanted = reduction >= 0.0 ? reduction : 0.9;
-  vtkSmartPointer<vtkPolyDataAlgorithm> filter;
-  Setters setters;
-  // The three filters share the target properties.
-  auto setTarget = [&](auto* f) {
-    f->SetNumberOfThreads(threads);
-    if (targetTriangles >= 0)
-    {
-      f->SetTargetModeToTriangleCount();
-      f->SetTargetTriangleCount(targetTriangles);
-    }
-    else if (maxError >= 0.0)
-    {
-      f->SetTargetModeToMaximumError();
-      f->SetMaximumError(maxError);
-      f->SetRelativeError(relativeError);
-    }
-    else
-    {
-      f->SetTargetModeToReduction();
-      f->SetTargetReduction(reductionWanted);
-    }
-    filter = f;
+  const std::pair<bool, const char*> checks[] = {
+    { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },
+    { a.Method != "octree" && a.Method != "volume" && a.Method != "parallel",
+      "unknown --method (available: octree, volume, parallel)" },
+    { reductionGiven + (a.TargetTriangles >= 0) + (a.MaximumError >= 0.0) > 1,
+      "give only one of --reduction, --target-triangles, --max-error" },
+    { a.MaximumError < 0.0 && a.MaximumError != -1.0, "--max-error must be 0 or more" },
+    { std::isnan(a.MaximumError), "--max-error must be a number" },
+    { a.Threads < 0, "--threads must be 0 (all cores) or more" },
+    { a.Repeat < 1, "--repeat must be 1 or more" },
   };
-  if (method == "octree")
+  for (const auto& [failed, message] : checks)
   {
-    vtkNew<vtkOctreeVertexClustering> octree;
-    setTarget(octree.Get());
-    setters = OctreeSetters(octree);
+    if (failed)
+    {
+      Fail(message);
+    }
   }
-  else if (method == "parallel")
+  return a;
+}
+
+/// The method's filter with the command line's target, threads and --set values.
+vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
+{
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter;
+  Setters setters;
+  if (a.Method == "octree")
   {
-    vtkNew<vtkParallelDecimation> parallel;
-    setTarget(parallel.Get());
+    auto octree = vtkSmartPointer<vtkOctreeVertexClustering>::New();
+    setters = OctreeSetters(octree);
+    filter = octree;
+  }
+  else if (a.Method == "parallel")
+  {
+    auto parallel = vtkSmartPointer<vtkParallelDecimation>::New();
     setters = ParallelSetters(parallel);
+    filter = parallel;
   }
   else
   {
-    vtkNew<vtkVolumeTriangleCollapse> volume;
-    setTarget(volume.Get());
+    auto volume = vtkSmartPointer<vtkVolumeTriangleCollapse>::New();
     setters = VolumeSetters(volume);
+    filter = volume;
   }
-  filter->SetInputData(mesh);
-  for (const auto& setting : settings)
+  setters.merge(CommonSetters(filter));
+  filter->SetNumberOfThreads(a.Threads);
+  filter->SetRelativeError(a.RelativeError);
+  if (a.TargetTriangles >= 0)
   {
-    const auto setter = setters.find(setting.first);
+    filter->SetTargetModeToTriangleCount();
+    filter->SetTargetTriangleCount(a.TargetTriangles);
+  }
+  else if (a.MaximumError >= 0.0)
+  {
+    filter->SetTargetModeToMaximumError();
+    filter->SetMaximumError(a.MaximumError);
+  }
+  else
+  {
+    filter->SetTargetModeToReduction();
+    filter->SetTargetReduction(a.Reduction);
+  }
+  for (const auto& [name, value] : a.Settings)
+  {
+    const auto setter = setters.find(name);
     if (setter == setters.end())
     {
-      Fail("unknown --set name '" + setting.first + "' for --method " + method);
+      Fail("unknown --set name '" + name + "' for --method " + a.Method);
     }
-    setter->second(setting.second);
+    setter->second(value);
   }
+  return filter;
+}
 
+/// The filter's messages as one line each: warnings printed (once per run), the first error
+/// kept for the failure.
+struct Messages
+{
+  std::string Error;
+  static void Receive(vtkObject*, unsigned long event, void* self, void* text)
+  {
+    // VTK's message text ends with a line break; its prefix names the object.
+    std::string line = text ? static_cast<const char*>(text) : "";
+    const std::size_t colon = line.find("): ");
+    line = colon == std::string::npos ? line : line.substr(colon + 3);
+    while (!line.empty() && (line.back() == '\n' || line.back() == ' '))
+    {
+      line.pop_back();
+    }
+    auto* messages = static_cast<Messages*>(self);
+    if (event == vtkCommand::WarningEvent)
+    {
+      std::fprintf(stderr, "meshsimplify: warning: %s\n", line.c_str());
+    }
+    else if (messages->Error.empty())
+    {
+      messages->Error = line;
+    }
+  }
+};
+
+/// Runs the filter `repeat` times; the median time of its own work in milliseconds. Fails with
+/// the filter's error.
+double RunRepeated(vtkMeshSimplificationFilter* filter, int repeat, const std::string& input)
+{
+  Messages messages;
+  vtkNew<vtkCallbackCommand> onMessage;
+  onMessage->SetClientData(&messages);
+  onMessage->SetCallback(Messages::Receive);
+  filter->AddObserver(vtkCommand::ErrorEvent, onMessage);
+  filter->AddObserver(vtkCommand::WarningEvent, onMessage);
   std::vector<double> times;
   for (int run = 0; run < repeat; ++run)
   {
     filter->Modified();
     const auto start = std::chrono::steady_clock::now();
     filter->Update();
-    times.push_back(
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (run == 0)
+    {
+      filter->RemoveObservers(vtkCommand::WarningEvent); // printed once
+      filter->AddObserver(vtkCommand::WarningEvent, vtkNew<vtkCallbackCommand>().Get());
+    }
+  }
+  if (!messages.Error.empty() || filter->GetErrorCode() != 0)
+  {
+    Fail(input + ": " + (messages.Error.empty() ? std::string("the filter failed") : messages.Error));
   }
   std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-  const double milliseconds = times[times.size() / 2];
-  if (filter->GetErrorCode() != 0)
-  {
-    Fail("the filter failed on '" + input + "'");
-  }
-  vtkPolyData* result = filter->GetOutput();
-  Write(result, output);
+  return times[times.size() / 2];
+}
 
-  if (json)
+/// The triangle count of a mesh as the filters see it (polygons and strips triangulated).
+long long CountTriangles(vtkPolyData* mesh)
+{
+  long long count = 0;
+  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips() })
   {
-    // The triangle count of the input as the filter sees it (polygons and strips triangulated).
-    vtkIdType inputTriangles = 0;
-    auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+    auto cell = vtk::TakeSmartPointer(cells->NewIterator());
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
     {
       vtkIdType size;
       const vtkIdType* ids;
-      polys->GetCurrentCell(size, ids);
-      inputTriangles += size >= 3 ? size - 2 : 0;
+      cell->GetCurrentCell(size, ids);
+      count += size >= 3 ? size - 2 : 0;
     }
-    auto strips = vtk::TakeSmartPointer(mesh->GetStrips()->NewIterator());
-    for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell())
+  }
+  return count;
+}
+
+/// The run as one JSON object: counts, time, threads, and the figures of the output's field
+/// data (max_error in MaximumError's units where the method measures it).
+void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilter* filter, double milliseconds)
+{
+  const std::pair<const char*, const char*> figures[] = { { "max_error", "MaximumError" },
+    { "square_volume_error", "SquareVolumeError" }, { "rounds", "Rounds" },
+    { "deviation_max", "DeviationMaximum" }, { "deviation_rms", "DeviationRMS" } };
+  vtkPolyData* result = filter->GetOutput();
+  std::string extra;
+  for (const auto& [key, name] : figures)
+  {
+    if (vtkDataArray* array = result->GetFieldData()->GetArray(name))
     {
-      vtkIdType size;
-      const vtkIdType* ids;
-      strips->GetCurrentCell(size, ids);
-      inputTriangles += size >= 3 ? size - 2 : 0;
-    }
-    // Each method's own figures: the largest cluster error (the octree's always, the collapse
-    // filters' with an error bound), the total squared volume, the rounds.
-    auto field = [](const char* name, double value) {
       char number[64];
-      std::snprintf(number, sizeof(number), "%.9g", value);
-      return std::string(", \"") + name + "\": " + number;
-    };
-    std::string error;
-    if (auto* octree = vtkOctreeVertexClustering::SafeDownCast(filter))
-    {
-      error = field("max_error", octree->GetAchievedMaximumError());
+      std::snprintf(number, sizeof(number), "%.9g", array->GetTuple1(0));
+      extra += std::string(", \"") + key + "\": " + number;
     }
-    else if (auto* volume = vtkVolumeTriangleCollapse::SafeDownCast(filter))
-    {
-      error = field("square_volume_error", volume->GetSquareVolumeError()) +
-        (maxError >= 0.0 ? field("max_error", volume->GetAchievedMaximumError()) : std::string());
-    }
-    else if (auto* parallel = vtkParallelDecimation::SafeDownCast(filter))
-    {
-      error = ", \"rounds\": " + std::to_string(parallel->GetRounds()) +
-        (maxError >= 0.0 ? field("max_error", parallel->GetAchievedMaximumError()) : std::string());
-    }
-    std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
-                "\"time_ms\": %.3f, \"threads\": %d%s}\n",
-      method.c_str(), static_cast<long long>(inputTriangles),
-      static_cast<long long>(result->GetNumberOfPolys()), milliseconds,
-      threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())),
-      error.c_str());
+  }
+  std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
+              "\"time_ms\": %.3f, \"threads\": %d%s}\n",
+    a.Method.c_str(), CountTriangles(mesh), static_cast<long long>(result->GetNumberOfPolys()), milliseconds,
+    a.Threads > 0 ? a.Threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), extra.c_str());
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const Arguments arguments = ParseArguments(argc, argv);
+  vtkSmartPointer<vtkPolyData> mesh = Read(arguments.Input);
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = MakeFilter(arguments);
+  filter->SetInputData(mesh);
+  const double milliseconds = RunRepeated(filter, arguments.Repeat, arguments.Input);
+  Write(filter->GetOutput(), arguments.Output);
+  if (arguments.Json)
+  {
+    PrintJson(arguments, mesh, filter, milliseconds);
   }
   return 0;
 }

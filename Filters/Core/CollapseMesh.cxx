@@ -479,6 +479,11 @@ bool CollapseMesh::IsLegal(const CollapsePlan& plan, CheckScratch& scratch) cons
   {
     return false;
   }
+  if (!this->Regions.empty() &&
+    (this->Regions[v[1]] != this->Regions[v[0]] || (plan.Count == 3 && this->Regions[v[2]] != this->Regions[v[0]])))
+  {
+    return false;
+  }
   if (!this->LinkCondition(v, 1, v[1], scratch) ||
     (plan.Count == 3 && !this->LinkCondition(v, 2, v[2], scratch)))
   {

@@ -27,6 +27,8 @@
  *   no collapse joins two vertices locked as shared with another piece of a distributed mesh by
  *   an edge they did not have (the other piece might make the same edge, and the merged pieces
  *   would get an edge of four triangles);
+ * - regions (SetRegions): no collapse merges vertices of different regions, so that the border
+ *   between two values of a label or colour array stays sharp;
  * - the link condition, collapse by collapse: the common neighbours of the two sides are exactly
  *   the far corners of their shared triangles, so no edge gets three triangles and no "hidden
  *   cycle" (paper 004 Fig. 8) is closed; two boundary vertices are not joined across the
@@ -230,6 +232,9 @@ public:
   /// The angle guard's minimum in degrees; 0 (default) turns it off.
   void SetMinimumAngle(double degrees);
 
+  /// One region id per vertex (see IsLegal), or none (empty, the default).
+  void SetRegions(std::vector<std::int32_t> regions) { this->Regions = std::move(regions); }
+
   /**
    * Applies a legal plan and appends its record. Returns the number of triangles removed.
    * With keepUndo false the record keeps only the attribute weights (no undo, less memory).
@@ -321,6 +326,7 @@ private:
   std::vector<std::uint8_t> Shared; // ApplyIndependent: spans updated after the concurrent merges
 
   double MinimumAngleCosine = 1.0;
+  std::vector<std::int32_t> Regions;
 
   std::vector<CollapseRecord> History;
   std::vector<CollapseRecord> Undone;

@@ -100,12 +100,10 @@ private:
     std::vector<std::int64_t> Neighbours; // cluster << 32 | neighbouring cluster
   };
 
-  /// ε in the normalised coordinates.
-  double Bound() const
-  {
-    return this->Options.RelativeError ? this->Options.MaximumError
-                                       : this->Options.MaximumError * this->Scale;
-  }
+  /// ε in the normalised coordinates (under an error bound).
+  double Bound() const { return this->Prepared.Bound; }
+  /// Under a count target (the octree's own convention: a negative target is a bound).
+  bool Counting() const { return !this->Options.Goal.Bounded(); }
   void PrepareGeometry();
   void PrepareQuadrics();
   Plane BoundaryPlane(std::int32_t a, std::int32_t b, std::int32_t triangle, double& weight) const;
@@ -179,18 +177,57 @@ private:
     std::array<std::int32_t, 3> Corners;
   };
   std::vector<Survivor> SurvivingTriangles() const;
+  /// The leaves to split next, best first (see Refine); empty when refinement is done.
+  std::vector<HeapEntry>& NextBatch(std::int64_t target, double bound, double wanted);
+  /// How many leaves to split together now (see Refine).
+  double BatchSize(std::int64_t target, std::int64_t splits, std::int64_t startCount) const;
+  enum class Fit : std::uint8_t
+  {
+    Kept,    // the split stays
+    Skipped, // it was undone: the leaf stays as it is
+    GiveUp   // too many splits were undone: refinement ends
+  };
+  Fit FitOvershoot(const std::vector<HeapEntry>& batch, std::int64_t ceiling,
+    std::vector<HeapEntry>& children, int& rejections);
   bool Refine(std::int64_t target, double bound);
+  /// The root and the top levels of the tree (see PlantTree's body), clustered and queued.
+  void PlantTree(std::int64_t target);
+  /// Refines to the target and returns the surviving triangles (see the body), or false when
+  /// aborted.
+  bool RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors);
+  /// The output points being made (Finalize): each one's cluster, its vertices (CSR) and the
+  /// state of its representative.
+  struct OutputPoints
+  {
+    std::vector<std::int32_t> PointOf;   // vertex → output point, −1 for none
+    std::vector<std::int32_t> ClusterOf; // output point → its cluster
+    std::vector<std::int32_t> Offsets, Members;
+    std::vector<Vec3> Position, Centre, Ring; // Ring: where a protruding one meets the rest
+    std::vector<Quadric> FaceQuadric;
+    std::vector<std::uint8_t> Folded, Protruding; // see Folded; Protruding keeps its tip
+    std::int64_t Size() const { return static_cast<std::int64_t>(this->ClusterOf.size()); }
+    const std::int32_t* MembersOf(std::int64_t p) const { return this->Members.data() + this->Offsets[p]; }
+    std::int32_t Count(std::int64_t p) const { return this->Offsets[p + 1] - this->Offsets[p]; }
+  };
+  std::vector<std::int32_t> JoinStrandedCaps(const std::vector<Survivor>& survivors) const;
+  OutputPoints NumberPoints(const std::vector<std::int32_t>& owner) const;
+  void PlaceRepresentatives(OutputPoints& points) const;
+  void IterateSecondError(const std::vector<Survivor>& survivors, OutputPoints& points) const;
+  void WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
+    OctreeClusteringResult& result) const;
   void Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result);
+  /// The outcome of the count: why it is where it is when it misses the target.
+  void JudgeCount(OctreeClusteringResult& result) const;
 
   const TriangleMeshView& Input;
   const OctreeClusteringOptions& Options;
   const ExecutionContext& Context;
-  CompactMesh Local; // the usable input, renumbered; every id below is one of its ids
-
-  // Geometry, normalised so that the bounding-box diagonal is 1 and tolerances are relative.
-  Vec3 Origin = Vec3::Zero();
-  double Scale = 1.0;
+  /// The usable input, renumbered (every id below is one of its ids) and normalised so that
+  /// the bounding-box diagonal is 1 and tolerances are relative.
+  PreparedMesh Prepared;
+  Outcome Start; // the prepared mesh's report
   std::vector<Vec3> P;
+  std::vector<HeapEntry> Batch; // NextBatch's
   VertexTriangleAdjacency Adjacency;
   // Unit normal of each triangle, zero for a zero-area one; its plane passes through each of its
   // corners, so walks around a vertex v measure distances to it from P[v].
@@ -201,7 +238,8 @@ private:
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
   std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot, empty without boundary planes
   std::vector<std::uint8_t> BoundaryVertices; // per vertex: one of its slots has a flag
-  std::vector<std::uint8_t> Locked; // per vertex: a cluster of its own (LockedPoints)
+  std::vector<std::uint8_t> Locked; // per vertex: a cluster of its own (locks of the options)
+  std::vector<std::int32_t> Regions; // per vertex: clusters never join two (empty: one region)
 
   // Octree: every node owns a contiguous range of Order (the compact mesh's vertices, in its
   // spatial order within a leaf); Position is the inverse permutation.
@@ -235,35 +273,22 @@ private:
 
 void Clusterer::PrepareGeometry()
 {
-  this->Local = MakeCompactMesh(this->Input, this->Context);
-  const std::int64_t n = static_cast<std::int64_t>(this->Local.Points.size());
-  const std::int64_t m = static_cast<std::int64_t>(this->Local.InputTriangle.size());
-  this->Adjacency = std::move(this->Local.Adjacency);
-
-  // The compact mesh's points become the normalised coordinates: its box centred at the origin,
-  // with a diagonal of 1.
-  this->Origin = this->Local.Centre();
-  const double diagonal = this->Local.Diagonal();
-  this->Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
-  this->P = std::move(this->Local.Points);
-  this->Locked.assign(n, 0);
-  for (std::int64_t v = 0; v < n && this->Options.LockedPoints; ++v)
-  {
-    this->Locked[v] = this->Options.LockedPoints[this->Local.InputVertex[v]] ? 1 : 0;
-  }
-  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t v = b; v < e; ++v)
-    {
-      this->P[v] = (this->P[v] - this->Origin) * this->Scale;
-    }
-  });
+  // The usable input in normalised coordinates: its box centred at the origin, with a diagonal
+  // of 1; its locks and regions.
+  this->Prepared = PrepareMesh(this->Input, this->Options, Normalization::CentreAndDiagonal, this->Context);
+  const std::int64_t m = static_cast<std::int64_t>(this->Prepared.Mesh.InputTriangle.size());
+  this->Start = this->Prepared.Report();
+  this->Adjacency = std::move(this->Prepared.Mesh.Adjacency);
+  this->P = std::move(this->Prepared.Mesh.Points);
+  this->Locked = std::move(this->Prepared.Locks);
+  this->Regions = std::move(this->Prepared.Regions);
 
   this->TriangleNormals.assign(m, Vec3::Zero());
   this->TriangleAreas.assign(m, 0.0);
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
-      const std::int32_t* tri = this->Local.Triangles.data() + 3 * t;
+      const std::int32_t* tri = this->Prepared.Mesh.Triangles.data() + 3 * t;
       const Vec3 cross = (this->P[tri[1]] - this->P[tri[0]]).cross(this->P[tri[2]] - this->P[tri[0]]);
       const double length = cross.norm();
       if (length > 0.0)
@@ -275,7 +300,7 @@ void Clusterer::PrepareGeometry()
   }, 8 * m);
   // From here on triangles are read at their corners in the adjacency; the list's memory
   // serves the arrays that follow.
-  std::vector<std::int32_t>().swap(this->Local.Triangles);
+  std::vector<std::int32_t>().swap(this->Prepared.Mesh.Triangles);
 }
 
 Plane Clusterer::BoundaryPlane(
@@ -544,7 +569,8 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
 
   // Clusters are the connected components of the leaf's vertices (edges inside the leaf only),
   // found by a flood fill from each unlabelled vertex in leaf order, so a cluster's number
-  // follows its first vertex. A locked vertex is a component of its own.
+  // follows its first vertex. A locked vertex is a component of its own; with regions, only
+  // vertices of one region join.
   // The pushes are branch-free: whether a neighbour is inside and new is unpredictable.
   const std::uint32_t size = static_cast<std::uint32_t>(end - begin);
   std::vector<std::int32_t>& stack = scratch.Stack;
@@ -552,6 +578,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   root.assign(size, -1);
   stack.resize(size + 1);
   std::int32_t count = 0;
+  const std::int32_t* regions = this->Regions.empty() ? nullptr : this->Regions.data();
   for (std::uint32_t first = 0; first < size; ++first)
   {
     if (root[first] >= 0)
@@ -569,7 +596,8 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
         {
           const std::uint32_t at = static_cast<std::uint32_t>(this->Position[w] - begin);
           const std::uint32_t k = at < size ? at : 0;
-          const bool fresh = (at < size) & (root[k] < 0) & (this->Locked[w] == 0);
+          const bool fresh = (at < size) & (root[k] < 0) & (this->Locked[w] == 0) &
+            (!regions || regions[w] == regions[v]);
           root[k] = fresh ? count : root[k];
           stack[top] = static_cast<std::int32_t>(k);
           top += fresh;
@@ -914,7 +942,7 @@ void Clusterer::SplitLeaves(const std::vector<HeapEntry>& leaves, std::vector<He
       if (made[k].Splittable)
       {
         children.push_back(this->MakeEntry(
-          made[k].Node, made[k].Key, made[k].Scan, this->Options.TargetTriangles >= 0));
+          made[k].Node, made[k].Key, made[k].Scan, this->Counting()));
       }
     }
   }
@@ -961,112 +989,147 @@ void Clusterer::UndoLastSplit()
   this->Nodes[record.Leaf.Node].ClusterCount = record.ClusterCount;
 }
 
+double Clusterer::BatchSize(std::int64_t target, std::int64_t splits, std::int64_t startCount) const
+{
+  // Several leaves are split together, their children clustered concurrently, when that hardly
+  // changes which leaves get split: the batch is a small share of the leaves waiting (1/16) and,
+  // with a count target, of the room left below 80 % of it (a quarter, judged by the mean gain
+  // of the splits so far). Near a count target leaves go one at a time, so that single splits
+  // can be undone and traded.
+  double wanted = std::min(static_cast<double>(MaximumBatch), this->Heap.size() / 16.0);
+  if (target >= 0)
+  {
+    const double meanGain =
+      splits > 0 ? static_cast<double>(this->SurvivingCount - startCount) / splits : 0.0;
+    const double room = 0.8 * static_cast<double>(target) - static_cast<double>(this->SurvivingCount);
+    wanted = meanGain > 0.0 ? std::min(wanted, 0.25 * room / meanGain) : 1.0;
+  }
+  return std::max(wanted, 1.0);
+}
+
+std::vector<HeapEntry>& Clusterer::NextBatch(std::int64_t target, double bound, double wanted)
+{
+  // The next leaves to split, best first: forced splits always; others while the count is
+  // below the target, or while their error is above the bound.
+  std::vector<HeapEntry>& batch = this->Batch;
+  batch.clear();
+  const bool counting = target >= 0;
+  while (static_cast<double>(batch.size()) < std::floor(wanted) && !this->Heap.empty())
+  {
+    const HeapEntry top = this->Heap.top();
+    const bool forced = top.Key == ForcedSplitKey;
+    if (!forced && counting && this->SurvivingCount >= target)
+    {
+      break;
+    }
+    if (!forced && !counting && top.Key <= bound)
+    {
+      break; // every leaf left is within the bound and flips nothing
+    }
+    this->Heap.pop();
+    if (!this->IsLeaf(top) ||
+      std::any_of(batch.begin(), batch.end(), [&](const HeapEntry& e) { return e.Node == top.Node; }))
+    {
+      continue; // its node was undone, or it is already taken
+    }
+    if (!forced && top.Vanishing > top.Error)
+    {
+      // Neighbours split since the leaf was queued may have brought its clusters back.
+      HeapEntry entry = top;
+      Scratch scratch;
+      entry.Vanishing = this->ScanLeaf(top.Node, true, 0, 0, scratch).Vanishing;
+      this->SetKey(entry, counting);
+      if (entry.Key < top.Key)
+      {
+        this->Heap.push(entry);
+        continue;
+      }
+    }
+    batch.push_back(top);
+  }
+  return batch;
+}
+
+Clusterer::Fit Clusterer::FitOvershoot(const std::vector<HeapEntry>& batch, std::int64_t ceiling,
+  std::vector<HeapEntry>& children, int& rejections)
+{
+  // A single split beyond the count's ceiling (the target's tolerance) is undone; then the
+  // latest splits of far smaller error (a third or less) are undone, last first, until it fits,
+  // and it is split again; failing that, smaller leaves are tried instead. A split of a
+  // clustering without triangles stays: no count is nearer the target than the first.
+  const HeapEntry& top = batch.back();
+  if (this->Splits.back().SurvivingCount == 0)
+  {
+    return Fit::Kept;
+  }
+  const std::int64_t gain = this->SurvivingCount - this->Splits.back().SurvivingCount;
+  this->UndoLastSplit();
+  if (++rejections > 64)
+  {
+    return Fit::GiveUp;
+  }
+  const OctreeNode& cell = this->Nodes[top.Node];
+  std::size_t undo = this->Splits.size();
+  std::int64_t count = this->SurvivingCount;
+  while (undo > 0 && count + gain > ceiling)
+  {
+    const SplitRecord& record = this->Splits[undo - 1];
+    const OctreeNode& other = this->Nodes[record.Leaf.Node];
+    const bool ancestor = other.Begin <= cell.Begin && cell.End <= other.End;
+    if (ancestor || record.Leaf.Key == ForcedSplitKey || record.Leaf.Key * 3.0 > top.Key)
+    {
+      break;
+    }
+    count = record.SurvivingCount;
+    --undo;
+  }
+  if (count + gain > ceiling)
+  {
+    return Fit::Skipped; // the leaf stays as it is
+  }
+  while (this->Splits.size() > undo)
+  {
+    const HeapEntry undone = this->Splits.back().Leaf;
+    this->UndoLastSplit();
+    this->Heap.push(undone);
+  }
+  this->SplitLeaves(batch, children);
+  if (this->SurvivingCount > ceiling)
+  {
+    this->UndoLastSplit();
+    return Fit::Skipped;
+  }
+  return Fit::Kept;
+}
+
 bool Clusterer::Refine(std::int64_t target, double bound)
 {
-  std::vector<HeapEntry> children, batch;
+  // Leaves are split in decreasing order of their key until the count reaches the target
+  // (target >= 0) or every leaf is within the bound.
+  std::vector<HeapEntry> children;
   int rejections = 0;
   std::int64_t splits = 0, reported = 0;
   const std::int64_t startCount = this->SurvivingCount;
   const double firstKey = this->Heap.empty() ? 0.0 : this->Heap.top().Key;
-  const bool counting = target >= 0;
+  const std::int64_t ceiling = target + this->Options.Goal.Slack(target);
   while (!this->Heap.empty())
   {
-    // The next leaves to split, best first. Several are split together, their children
-    // clustered concurrently, when that hardly changes which leaves get split: the batch is a
-    // small share of the leaves waiting (1/16) and, with a count target, of the room left below
-    // 80 % of it (a quarter, judged by the mean gain of the splits so far). Near a count target
-    // leaves go one at a time, so that single splits can be undone and traded.
-    double wanted = std::min(static_cast<double>(MaximumBatch), this->Heap.size() / 16.0);
-    if (counting)
-    {
-      const double meanGain =
-        splits > 0 ? static_cast<double>(this->SurvivingCount - startCount) / splits : 0.0;
-      const double room = 0.8 * static_cast<double>(target) - static_cast<double>(this->SurvivingCount);
-      wanted = meanGain > 0.0 ? std::min(wanted, 0.25 * room / meanGain) : 1.0;
-    }
-    wanted = std::max(wanted, 1.0);
-    batch.clear();
-    while (static_cast<double>(batch.size()) < std::floor(wanted) && !this->Heap.empty())
-    {
-      const HeapEntry top = this->Heap.top();
-      const bool forced = top.Key == ForcedSplitKey;
-      if (!forced && counting && this->SurvivingCount >= target)
-      {
-        break;
-      }
-      if (!forced && !counting && top.Key <= bound)
-      {
-        break; // every leaf left is within the bound and flips nothing
-      }
-      this->Heap.pop();
-      if (!this->IsLeaf(top) ||
-        std::any_of(batch.begin(), batch.end(), [&](const HeapEntry& e) { return e.Node == top.Node; }))
-      {
-        continue; // its node was undone, or it is already taken
-      }
-      if (!forced && top.Vanishing > top.Error)
-      {
-        // Neighbours split since the leaf was queued may have brought its clusters back.
-        HeapEntry entry = top;
-        Scratch scratch;
-        entry.Vanishing = this->ScanLeaf(top.Node, true, 0, 0, scratch).Vanishing;
-        this->SetKey(entry, counting);
-        if (entry.Key < top.Key)
-        {
-          this->Heap.push(entry);
-          continue;
-        }
-      }
-      batch.push_back(top);
-    }
+    const std::vector<HeapEntry>& batch = this->NextBatch(target, bound, this->BatchSize(target, splits, startCount));
     if (batch.empty())
     {
       break;
     }
     const HeapEntry top = batch.back();
-    const bool forced = top.Key == ForcedSplitKey;
     this->SplitLeaves(batch, children);
-    // With a count target, a split may overshoot by 2 %. One that overshoots further is undone;
-    // then the latest splits of far smaller error (a third or less) are undone, last first,
-    // until it fits, and it is split again; failing that, smaller leaves are tried instead.
-    const std::int64_t ceiling = target + 3 * target / 100;
-    if (batch.size() == 1 && counting && !forced && this->SurvivingCount > ceiling)
+    if (batch.size() == 1 && target >= 0 && top.Key != ForcedSplitKey && this->SurvivingCount > ceiling)
     {
-      const std::int64_t gain = this->SurvivingCount - this->Splits.back().SurvivingCount;
-      this->UndoLastSplit();
-      if (++rejections > 64)
+      const Fit fit = this->FitOvershoot(batch, ceiling, children, rejections);
+      if (fit == Fit::GiveUp)
       {
         break;
       }
-      const OctreeNode& cell = this->Nodes[top.Node];
-      std::size_t undo = this->Splits.size();
-      std::int64_t count = this->SurvivingCount;
-      while (undo > 0 && count + gain > ceiling)
+      if (fit == Fit::Skipped)
       {
-        const SplitRecord& record = this->Splits[undo - 1];
-        const OctreeNode& other = this->Nodes[record.Leaf.Node];
-        const bool ancestor = other.Begin <= cell.Begin && cell.End <= other.End;
-        if (ancestor || record.Leaf.Key == ForcedSplitKey || record.Leaf.Key * 3.0 > top.Key)
-        {
-          break;
-        }
-        count = record.SurvivingCount;
-        --undo;
-      }
-      if (count + gain > ceiling)
-      {
-        continue; // the leaf stays as it is
-      }
-      while (this->Splits.size() > undo)
-      {
-        const HeapEntry undone = this->Splits.back().Leaf;
-        this->UndoLastSplit();
-        this->Heap.push(undone);
-      }
-      this->SplitLeaves(batch, children);
-      if (this->SurvivingCount > ceiling)
-      {
-        this->UndoLastSplit();
         continue;
       }
     }
@@ -1075,22 +1138,24 @@ bool Clusterer::Refine(std::int64_t target, double bound)
       this->Heap.push(child);
     }
     splits += static_cast<std::int64_t>(batch.size());
-    if (splits - reported >= 256)
+    if (splits - reported < 256)
     {
-      reported = splits;
-      double done = 0.0;
-      if (target > 0)
-      {
-        done = static_cast<double>(this->SurvivingCount) / target;
-      }
-      else if (top.Key < FlipSplitKey && firstKey < FlipSplitKey && top.Key > bound && firstKey > bound)
-      {
-        done = std::log(firstKey / top.Key) / std::log(firstKey / bound);
-      }
-      if (!this->Context.Report(0.15 + 0.7 * std::min(std::max(done, 0.0), 1.0)))
-      {
-        return false;
-      }
+      continue;
+    }
+    reported = splits;
+    double done = 0.0;
+    if (target > 0)
+    {
+      done = static_cast<double>(this->SurvivingCount) / target;
+    }
+    else if (target < 0 && top.Key < FlipSplitKey && firstKey < FlipSplitKey && top.Key > bound &&
+      firstKey > bound)
+    {
+      done = std::log(firstKey / top.Key) / std::log(firstKey / bound);
+    }
+    if (!this->Context.Report(0.15 + 0.7 * std::min(std::max(done, 0.0), 1.0)))
+    {
+      return false;
     }
   }
   return true;
@@ -1133,7 +1198,7 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
           if (lowest & (c[0] != c[1]) & (c[1] != c[2]) & (c[0] != c[2]))
           {
             std::sort(c.begin(), c.end());
-            chunks[chunk].push_back({ c, this->Local.InputTriangle[corner->Triangle],
+            chunks[chunk].push_back({ c, this->Prepared.Mesh.InputTriangle[corner->Triangle],
               { corner->Triangle, { v, corner->Next, corner->Previous } } });
           }
         }
@@ -1155,45 +1220,44 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
     }
   }
   std::sort(survivors.begin(), survivors.end(), [this](const Survivor& a, const Survivor& b) {
-    return this->Local.InputTriangle[a.Triangle] < this->Local.InputTriangle[b.Triangle];
+    return this->Prepared.Mesh.InputTriangle[a.Triangle] < this->Prepared.Mesh.InputTriangle[b.Triangle];
   });
   return survivors;
 }
 
-void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result)
+std::vector<std::int32_t> Clusterer::JoinStrandedCaps(const std::vector<Survivor>& survivors) const
 {
+  // The surviving cluster each cluster's vertices go to: its own when it keeps a triangle. With
+  // a count target, a cluster that lost every triangle and touches a single surviving cluster
+  // (a cap on a thin part: a trunk's or a finger's end) has its vertices represented by that
+  // cluster's point, so they join it: its point then accounts for them, and the protruding-tip
+  // rule can put it at the part's end instead of leaving the part cut off. Repeated, so chains
+  // of such caps join too. (Under an error bound every such cap is within ε of its neighbours
+  // already, and a joined point's error is not bounded.) Locked vertices neither join nor are
+  // joined, and a cap joins no cluster of another region.
   const std::int64_t n = static_cast<std::int64_t>(this->P.size());
-  // Output points: clusters with a surviving triangle, in the order of their first vertex.
-  std::vector<std::uint8_t> referenced(this->ClusterPositions.size(), 0);
+  const std::size_t clusters = this->ClusterPositions.size();
+  std::vector<std::int32_t> owner(clusters, -1);
   for (const Survivor& survivor : survivors)
   {
     for (const std::int32_t v : survivor.Corners)
     {
-      referenced[this->VertexCluster[v]] = 1;
+      owner[this->VertexCluster[v]] = this->VertexCluster[v];
     }
-  }
-  // With a count target, a cluster that lost every triangle and touches a single surviving
-  // cluster (a cap on a thin part: a trunk's or a finger's end) has its vertices represented by
-  // that cluster's point, so they join it: its point then accounts for them, and the
-  // protruding-tip rule can put it at the part's end instead of leaving the part cut off.
-  // Repeated, so chains of such caps join too. (Under an error bound every such cap is within
-  // ε of its neighbours already, and a joined point's error is not bounded.)
-  const std::size_t clusters = this->ClusterPositions.size();
-  std::vector<std::int32_t> owner(clusters, -1); // the surviving cluster each cluster joins
-  for (std::size_t c = 0; c < clusters; ++c)
-  {
-    owner[c] = referenced[c] ? static_cast<std::int32_t>(c) : -1;
   }
   constexpr std::int32_t Several = -2;
   std::vector<std::int32_t> candidate(clusters, -1);
   std::vector<std::int32_t> stranded; // the vertices of clusters without an owner yet
-  for (std::int64_t v = 0; v < n && this->Options.TargetTriangles >= 0; ++v)
+  for (std::int64_t v = 0; v < n && this->Counting(); ++v)
   {
     if (owner[this->VertexCluster[v]] < 0)
     {
       stranded.push_back(static_cast<std::int32_t>(v));
     }
   }
+  const auto sameRegion = [this](std::int32_t v, std::int32_t w) {
+    return this->Regions.empty() || this->Regions[v] == this->Regions[w];
+  };
   for (bool joined = true; joined && !stranded.empty();)
   {
     for (const std::int32_t v : stranded)
@@ -1203,13 +1267,12 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
     for (const std::int32_t v : stranded)
     {
       const std::int32_t c = this->VertexCluster[v];
-      // A locked vertex neither joins another cluster nor is joined.
       for (const Corner* k = this->Adjacency.Begin(v); k != this->Adjacency.End(v) && !this->Locked[v]; ++k)
       {
         for (const std::int32_t w : { k->Next, k->Previous })
         {
           const std::int32_t o = owner[this->VertexCluster[w]];
-          if (o >= 0 && !this->Locked[w] && candidate[c] != o) // nothing joins a locked vertex
+          if (o >= 0 && !this->Locked[w] && sameRegion(v, w) && candidate[c] != o)
           {
             candidate[c] = candidate[c] == -1 ? o : Several;
           }
@@ -1230,9 +1293,17 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
                      [&](std::int32_t v) { return owner[this->VertexCluster[v]] >= 0; }),
       stranded.end());
   }
-  std::vector<std::int32_t> pointOfCluster(clusters, -1);
-  std::vector<std::int32_t> clusterOfPoint;
-  std::vector<std::int32_t> pointOf(n, -1); // vertex → output point
+  return owner;
+}
+
+Clusterer::OutputPoints Clusterer::NumberPoints(const std::vector<std::int32_t>& owner) const
+{
+  // Output points: owning clusters, in the order of their first vertex; their vertices by a
+  // counting sort.
+  const std::int64_t n = static_cast<std::int64_t>(this->P.size());
+  OutputPoints points;
+  std::vector<std::int32_t> pointOfCluster(owner.size(), -1);
+  points.PointOf.assign(n, -1);
   for (std::int64_t v = 0; v < n; ++v)
   {
     const std::int32_t c = owner[this->VertexCluster[v]];
@@ -1242,111 +1313,120 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
     }
     if (pointOfCluster[c] < 0)
     {
-      pointOfCluster[c] = static_cast<std::int32_t>(clusterOfPoint.size());
-      clusterOfPoint.push_back(c);
+      pointOfCluster[c] = static_cast<std::int32_t>(points.ClusterOf.size());
+      points.ClusterOf.push_back(c);
     }
-    pointOf[v] = pointOfCluster[c];
+    points.PointOf[v] = pointOfCluster[c];
   }
-  const std::int64_t numberOfPoints = static_cast<std::int64_t>(clusterOfPoint.size());
-  result.ClusterOffsets.assign(numberOfPoints + 1, 0);
+  points.Offsets.assign(points.ClusterOf.size() + 1, 0);
   for (std::int64_t v = 0; v < n; ++v)
   {
-    if (pointOf[v] >= 0)
+    if (points.PointOf[v] >= 0)
     {
-      ++result.ClusterOffsets[pointOf[v] + 1];
+      ++points.Offsets[points.PointOf[v] + 1];
     }
   }
-  std::partial_sum(
-    result.ClusterOffsets.begin(), result.ClusterOffsets.end(), result.ClusterOffsets.begin());
-  std::vector<std::int32_t> clusterVertices(result.ClusterOffsets.back());
-  std::vector<std::int32_t> fill(result.ClusterOffsets.begin(), result.ClusterOffsets.end() - 1);
+  std::partial_sum(points.Offsets.begin(), points.Offsets.end(), points.Offsets.begin());
+  points.Members.resize(points.Offsets.back());
+  std::vector<std::int32_t> fill(points.Offsets.begin(), points.Offsets.end() - 1);
   for (std::int64_t v = 0; v < n; ++v)
   {
-    if (pointOf[v] >= 0)
+    if (points.PointOf[v] >= 0)
     {
-      clusterVertices[fill[pointOf[v]]++] = static_cast<std::int32_t>(v);
+      points.Members[fill[points.PointOf[v]]++] = static_cast<std::int32_t>(v);
     }
   }
-  auto members = [&](std::int64_t p) { return clusterVertices.data() + result.ClusterOffsets[p]; };
-  auto size = [&](std::int64_t p) { return result.ClusterOffsets[p + 1] - result.ClusterOffsets[p]; };
+  return points;
+}
 
+void Clusterer::PlaceRepresentatives(OutputPoints& points) const
+{
   // Protruding clusters take their tip again (the clusters around them may have changed
   // since); the others start from their refinement point. A point with joined caps takes
   // whichever of its own cluster's point and the whole set's point represents the whole set
   // better (the cluster error with the members' distances, see ClusterError).
-  std::vector<Vec3> position(numberOfPoints), centre(numberOfPoints);
-  std::vector<Quadric> faceQuadric(numberOfPoints);
-  std::vector<std::uint8_t> folded(numberOfPoints, 0);     // see Folded
-  std::vector<std::uint8_t> protruding(numberOfPoints, 0); // keeps its tip
-  std::vector<Vec3> ring(numberOfPoints);                  // where a protruding one meets the rest
-  this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+  const std::int64_t count = points.Size();
+  points.Position.resize(count);
+  points.Centre.resize(count);
+  points.Ring.resize(count);
+  points.FaceQuadric.resize(count);
+  points.Folded.assign(count, 0);
+  points.Protruding.assign(count, 0);
+  this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
     std::vector<std::int32_t> own;
     for (std::int64_t p = b; p < e; ++p)
     {
-      const std::int32_t cluster = clusterOfPoint[p];
-      centre[p] = this->ClusterCentre(members(p), size(p));
-      faceQuadric[p] = this->ClusterQuadric(members(p), size(p));
-      folded[p] = this->Folded(members(p), size(p)) ? 1 : 0;
+      const std::int32_t cluster = points.ClusterOf[p];
+      const std::int32_t* members = points.MembersOf(p);
+      const std::int32_t size = points.Count(p);
+      points.Centre[p] = this->ClusterCentre(members, size);
+      points.FaceQuadric[p] = this->ClusterQuadric(members, size);
+      points.Folded[p] = this->Folded(members, size) ? 1 : 0;
       // The point of the given members: their tip when they protrude, else the cluster's.
-      const auto place = [&](const std::int32_t* set, std::int32_t count, bool isFolded,
+      const auto place = [&](const std::int32_t* set, std::int32_t setSize, bool isFolded,
                            const auto& member, Vec3& x, Vec3& setRing) {
         std::int32_t tip;
         x = this->ClusterPositions[cluster];
-        if (isFolded && this->ProtrudingTip(member, set, count, tip, setRing))
+        if (isFolded && this->ProtrudingTip(member, set, setSize, tip, setRing))
         {
           x = this->P[tip];
           return true;
         }
         return false;
       };
-      const auto inPoint = [&pointOf, p](std::int32_t v) { return pointOf[v] == p; };
-      protruding[p] = place(members(p), size(p), folded[p], inPoint, position[p], ring[p]) ? 1 : 0;
+      const auto inPoint = [&points, p](std::int32_t v) { return points.PointOf[v] == p; };
+      points.Protruding[p] =
+        place(members, size, points.Folded[p], inPoint, points.Position[p], points.Ring[p]) ? 1 : 0;
       const auto inCluster = [&](std::int32_t v) { return this->VertexCluster[v] == cluster; };
       own.clear();
-      std::copy_if(members(p), members(p) + size(p), std::back_inserter(own), inCluster);
-      if (static_cast<std::int32_t>(own.size()) == size(p))
+      std::copy_if(members, members + size, std::back_inserter(own), inCluster);
+      if (static_cast<std::int32_t>(own.size()) == size)
       {
         continue; // nothing joined
       }
       Vec3 x, ownRing;
-      const bool ownTip = place(own.data(), static_cast<std::int32_t>(own.size()),
-        this->Folded(own.data(), static_cast<std::int32_t>(own.size())), inCluster, x, ownRing);
-      if (this->ClusterError(x, members(p), size(p), true, ownTip ? &ownRing : nullptr) <
-        this->ClusterError(position[p], members(p), size(p), true, protruding[p] ? &ring[p] : nullptr))
+      const std::int32_t ownSize = static_cast<std::int32_t>(own.size());
+      const bool ownTip = place(own.data(), ownSize, this->Folded(own.data(), ownSize), inCluster, x, ownRing);
+      if (this->ClusterError(x, members, size, true, ownTip ? &ownRing : nullptr) <
+        this->ClusterError(points.Position[p], members, size, true, points.Protruding[p] ? &points.Ring[p] : nullptr))
       {
-        position[p] = x;
-        protruding[p] = ownTip ? 1 : 0;
-        ring[p] = ownRing;
+        points.Position[p] = x;
+        points.Protruding[p] = ownTip ? 1 : 0;
+        points.Ring[p] = ownRing;
       }
     }
-  }, 64 * static_cast<std::int64_t>(clusterVertices.size()));
+  }, 64 * static_cast<std::int64_t>(points.Members.size()));
+}
 
+void Clusterer::IterateSecondError(const std::vector<Survivor>& survivors, OutputPoints& points) const
+{
   // e2 by the paper's iteration (eq. 8–11): with the representatives of the previous iterate,
   // the squared distance of a cluster vertex a to a new triangle (v0, b', c') is the squared
   // distance of v0 to the plane through (a, b', c') scaled by (area(a,b',c') / area(v0,b',c'))².
-  const bool bounded = this->Options.TargetTriangles < 0;
+  const std::int64_t count = points.Size();
+  const bool bounded = !this->Counting();
   const double bound = this->Bound();
-  std::vector<Quadric> quadric(numberOfPoints);
-  std::vector<Vec3> next(numberOfPoints);
+  std::vector<Quadric> quadric(count);
+  std::vector<Vec3> next(count);
   for (int iteration = 0; iteration < this->Options.ErrorIterations; ++iteration)
   {
-    quadric = faceQuadric;
+    quadric = points.FaceQuadric;
     for (const Survivor& survivor : survivors)
     {
       const std::array<std::int32_t, 3>& tri = survivor.Corners;
       for (int k = 0; k < 3; ++k)
       {
         const std::int32_t a = tri[k];
-        const std::int32_t pa = pointOf[a];
-        if (size(pa) == 1)
+        const std::int32_t pa = points.PointOf[a];
+        if (points.Count(pa) == 1)
         {
           continue; // a lone vertex is its own representative
         }
-        const Vec3& xb = position[pointOf[tri[(k + 1) % 3]]];
-        const Vec3& xc = position[pointOf[tri[(k + 2) % 3]]];
+        const Vec3& xb = points.Position[points.PointOf[tri[(k + 1) % 3]]];
+        const Vec3& xc = points.Position[points.PointOf[tri[(k + 2) % 3]]];
         const Vec3 through = (xb - this->P[a]).cross(xc - this->P[a]);
         const double areaThrough = through.norm();
-        const double areaNew = (xb - position[pa]).cross(xc - position[pa]).norm();
+        const double areaNew = (xb - points.Position[pa]).cross(xc - points.Position[pa]).norm();
         if (areaThrough <= 0.0)
         {
           continue;
@@ -1357,117 +1437,141 @@ void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusterin
         quadric[pa] += Quadric::FromPlane(normal, -normal.dot(this->P[a]), 0.5 * areaThrough * ratio * ratio);
       }
     }
-    this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+    this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
       for (std::int64_t p = b; p < e; ++p)
       {
-        next[p] = position[p];
-        if (size(p) == 1 || protruding[p])
+        next[p] = points.Position[p];
+        if (points.Count(p) == 1 || points.Protruding[p])
         {
           continue;
         }
-        const OctreeNode& cell = this->Nodes[this->ClusterNodes[clusterOfPoint[p]]];
-        const Vec3 x = this->PlaceRepresentative(quadric[p], centre[p], cell, members(p), size(p));
-        if (!bounded || this->ClusterError(x, members(p), size(p), folded[p], nullptr) <= bound)
+        const OctreeNode& cell = this->Nodes[this->ClusterNodes[points.ClusterOf[p]]];
+        const Vec3 x =
+          this->PlaceRepresentative(quadric[p], points.Centre[p], cell, points.MembersOf(p), points.Count(p));
+        if (!bounded || this->ClusterError(x, points.MembersOf(p), points.Count(p), points.Folded[p], nullptr) <= bound)
         {
           next[p] = x;
         }
       }
-    }, 64 * static_cast<std::int64_t>(clusterVertices.size()));
-    position.swap(next);
+    }, 64 * static_cast<std::int64_t>(points.Members.size()));
+    points.Position.swap(next);
   }
+}
 
-  result.Points.resize(3 * numberOfPoints);
-  result.ClusterErrors.resize(numberOfPoints);
-  result.ClusterWeights.resize(clusterVertices.size());
-  this->Context.For(numberOfPoints, [&](std::int64_t b, std::int64_t e) {
+void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
+  OctreeClusteringResult& result) const
+{
+  // Points in input coordinates (locked ones exactly as they were), their cluster errors, and
+  // their sources: the cluster's input points by area weight, the heaviest first.
+  const std::int64_t count = points.Size();
+  const std::vector<std::int32_t>& inputVertex = this->Prepared.Mesh.InputVertex;
+  result.Points.resize(3 * count);
+  result.SourceOffsets = points.Offsets;
+  result.SourcePoints.resize(points.Members.size());
+  result.SourceWeights.resize(points.Members.size());
+  std::vector<double> clusterSize(count), clusterError(count);
+  this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t p = b; p < e; ++p)
     {
-      const std::int32_t first = members(p)[0];
-      const Vec3 x = this->Locked[first] ? this->Input.Point(this->Local.InputVertex[first])
-                                         : Vec3(position[p] / this->Scale + this->Origin);
+      const std::int32_t* members = points.MembersOf(p);
+      const std::int32_t size = points.Count(p);
+      const Vec3 x = this->Locked[members[0]] ? this->Input.Point(inputVertex[members[0]])
+                                               : this->Prepared.ToInput(points.Position[p]);
       for (int k = 0; k < 3; ++k)
       {
         result.Points[3 * p + k] = x[k];
       }
-      result.ClusterErrors[p] =
-        this->ClusterError(position[p], members(p), size(p), folded[p], protruding[p] ? &ring[p] : nullptr) /
-        this->Scale;
+      clusterSize[p] = size;
+      clusterError[p] = this->ClusterError(points.Position[p], members, size, points.Folded[p],
+                          points.Protruding[p] ? &points.Ring[p] : nullptr) / this->Prepared.Scale;
       double total = 0.0;
-      for (std::int32_t i = 0; i < size(p); ++i)
+      std::int32_t heaviest = 0;
+      for (std::int32_t i = 0; i < size; ++i)
       {
-        total += this->VertexWeights[members(p)[i]];
+        total += this->VertexWeights[members[i]];
+        heaviest = this->VertexWeights[members[i]] > this->VertexWeights[members[heaviest]] ? i : heaviest;
       }
-      for (std::int32_t i = 0; i < size(p); ++i)
+      for (std::int32_t i = 0; i < size; ++i)
       {
-        result.ClusterWeights[result.ClusterOffsets[p] + i] =
-          total > 0.0 ? this->VertexWeights[members(p)[i]] / total : 1.0 / size(p);
+        const std::int32_t slot = i == 0 ? heaviest : i == heaviest ? 0 : i;
+        result.SourcePoints[points.Offsets[p] + i] = inputVertex[members[slot]];
+        result.SourceWeights[points.Offsets[p] + i] =
+          total > 0.0 ? this->VertexWeights[members[slot]] / total : 1.0 / size;
       }
     }
-  }, 64 * static_cast<std::int64_t>(clusterVertices.size()));
-  result.MaximumClusterError =
-    result.ClusterErrors.empty() ? 0.0 : *std::max_element(result.ClusterErrors.begin(), result.ClusterErrors.end());
+  }, 64 * static_cast<std::int64_t>(points.Members.size()));
+  result.Report.MaximumError = clusterError.empty() ? 0.0 : *std::max_element(clusterError.begin(), clusterError.end());
+  result.FieldValues.emplace_back("MaximumClusterError", result.Report.MaximumError);
+  result.AddPointArray("ClusterSize", std::move(clusterSize), NamedArray::Kind::Integer);
+  result.AddPointArray("ClusterError", std::move(clusterError));
 
   result.Triangles.resize(3 * survivors.size());
-  result.SourceTriangles.resize(survivors.size());
+  result.TriangleSource.resize(survivors.size());
   for (std::size_t i = 0; i < survivors.size(); ++i)
   {
-    result.SourceTriangles[i] = this->Local.InputTriangle[survivors[i].Triangle];
+    result.TriangleSource[i] = this->Prepared.Mesh.InputTriangle[survivors[i].Triangle];
     for (int k = 0; k < 3; ++k)
     {
-      result.Triangles[3 * i + k] = pointOf[survivors[i].Corners[k]];
+      result.Triangles[3 * i + k] = points.PointOf[survivors[i].Corners[k]];
     }
   }
-  // Back to input ids.
   result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
-  for (std::int64_t v = 0; v < n; ++v)
+  for (std::size_t v = 0; v < inputVertex.size(); ++v)
   {
-    result.VertexToPoint[this->Local.InputVertex[v]] = pointOf[v];
-  }
-  result.ClusterVertices.resize(clusterVertices.size());
-  for (std::size_t i = 0; i < clusterVertices.size(); ++i)
-  {
-    result.ClusterVertices[i] = this->Local.InputVertex[clusterVertices[i]];
+    result.VertexToPoint[inputVertex[v]] = points.PointOf[v];
   }
 }
 
-bool Clusterer::Run(OctreeClusteringResult& result)
+void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result)
 {
-  result = OctreeClusteringResult();
-  this->PrepareGeometry();
-  if (!this->Context.Report(0.05))
-  {
-    return false;
-  }
-  this->PrepareQuadrics();
-  if (!this->Context.Report(0.15))
-  {
-    return false;
-  }
+  OutputPoints points = this->NumberPoints(this->JoinStrandedCaps(survivors));
+  this->PlaceRepresentatives(points);
+  this->IterateSecondError(survivors, points);
+  this->WriteResult(survivors, points, result);
+}
 
+void Clusterer::JudgeCount(OctreeClusteringResult& result) const
+{
+  Outcome& report = result.Report;
+  const std::int64_t count = result.NumberOfTriangles(), target = report.TargetTriangles;
+  if (!this->Counting() || std::abs(count - target) <= this->Options.Goal.Slack(target) ||
+    report.Stop == StopReason::AllLocked)
+  {
+    return;
+  }
+  report.Stop = StopReason::NearestCount;
+  if (count > target && this->Options.MaximumCellSize > 0.0 && this->Options.MaximumCellSize < 1.0)
+  {
+    report.Reason = "MaximumCellSize (" + std::to_string(this->Options.MaximumCellSize) + ") splits larger cells";
+  }
+  else if (count > target && report.LockedPoints > 0)
+  {
+    report.Reason = "locked points are clusters of their own";
+  }
+  else
+  {
+    report.Reason = "the nearest count vertex clustering gives on this input";
+  }
+}
+
+void Clusterer::PlantTree(std::int64_t target)
+{
   // Every vertex of the compact mesh is used; its order is already spatial.
   const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   this->Order.resize(n);
   std::iota(this->Order.begin(), this->Order.end(), 0);
   this->Position = this->Order;
-  result.UsableInputTriangles = static_cast<std::int64_t>(this->Local.InputTriangle.size());
-  result.NonFinitePoints = this->Local.NonFinitePoints;
-  if (this->Order.empty())
-  {
-    // No usable triangle: an empty result, its maps still well formed.
-    result.ClusterOffsets.assign(1, 0);
-    result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
-    return this->Context.Report(1.0);
-  }
   this->VertexCluster.assign(n, -1);
-  this->Reordered.resize(this->Order.size());
-  this->Octants.resize(this->Order.size());
+  this->Reordered.resize(n);
+  this->Octants.resize(n);
 
   OctreeNode root;
   // The bounding cube of the normalised points (a margin covers their rounding).
+  const CompactMesh& mesh = this->Prepared.Mesh;
   root.Center = Vec3::Zero();
-  root.Half = (0.5 * this->Local.Upper - 0.5 * this->Local.Lower).maxCoeff() * this->Scale * (1.0 + 1e-9) + 1e-12;
+  root.Half = (0.5 * mesh.Upper - 0.5 * mesh.Lower).maxCoeff() * this->Prepared.Scale * (1.0 + 1e-9) + 1e-12;
   root.Begin = 0;
-  root.End = static_cast<std::int32_t>(this->Order.size());
+  root.End = static_cast<std::int32_t>(n);
   root.Depth = 0;
   root.FirstCluster = root.ClusterCount = 0;
   this->AddNode(root);
@@ -1476,7 +1580,6 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   // far fewer cells than the target needs clusters (about target / 2): the error-ordered
   // refinement would split each of them anyway, so only their leaves are evaluated.
   std::vector<std::int32_t> frontier = { 0 };
-  const std::int64_t target = this->Options.TargetTriangles;
   while (target >= 0)
   {
     const std::size_t mark = this->Nodes.size();
@@ -1506,7 +1609,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   // from its first corner.
   std::sort(frontier.begin(), frontier.end(),
     [this](std::int32_t a, std::int32_t b) { return this->Nodes[a].Begin < this->Nodes[b].Begin; });
-  const std::int32_t all = static_cast<std::int32_t>(this->Order.size());
+  const std::int32_t all = static_cast<std::int32_t>(n);
   this->ClusterPositions.resize(all);
   this->ClusterNodes.resize(all);
   std::vector<NewLeaf> leaves(frontier.size());
@@ -1528,50 +1631,80 @@ bool Clusterer::Run(OctreeClusteringResult& result)
       this->Heap.push(this->MakeEntry(leaf.Node, leaf.Key, leaf.Scan, target >= 0));
     }
   }
+}
 
+bool Clusterer::RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors)
+{
   // A count target is approached on the estimate (triangles with three distinct clusters).
   // Duplicates removed at the end make the real count lower, so the estimate's target is
   // corrected and refinement resumes, or the latest splits are undone, until the real count is
-  // within 2 % of the target (at most 6 rounds).
+  // within 2 % of the target (at most 6 rounds). The first split of a clustering without
+  // triangles is never undone: no count is nearer the target.
   std::int64_t internalTarget = target;
-  std::vector<Survivor> survivors;
   for (int round = 0;; ++round)
   {
     if (!this->Refine(internalTarget, this->Bound()))
     {
-      result.Aborted = true;
       return false;
     }
     survivors = this->SurvivingTriangles();
     const std::int64_t excess = static_cast<std::int64_t>(survivors.size()) - target;
     if (target < 0 || round == 5 || std::abs(excess) <= target / 50)
     {
-      break;
+      return true;
     }
+    internalTarget = this->SurvivingCount - excess;
     if (excess < 0)
     {
       if (this->Heap.empty())
       {
-        break;
+        return true;
       }
-      internalTarget = this->SurvivingCount - excess;
       continue;
     }
-    internalTarget = this->SurvivingCount - excess;
-    while (!this->Splits.empty() && this->SurvivingCount > internalTarget)
+    const std::size_t splits = this->Splits.size();
+    while (!this->Splits.empty() && this->SurvivingCount > internalTarget && this->Splits.back().SurvivingCount > 0)
     {
       const HeapEntry undone = this->Splits.back().Leaf;
       this->UndoLastSplit();
       this->Heap.push(undone);
     }
+    if (this->Splits.size() == splits)
+    {
+      return true; // nothing to undo: refining again would change nothing
+    }
   }
-  if (!this->Context.Report(0.85))
+}
+
+bool Clusterer::Run(OctreeClusteringResult& result)
+{
+  result = OctreeClusteringResult();
+  this->PrepareGeometry();
+  if (!this->Context.Report(0.05))
   {
-    result.Aborted = true;
     return false;
   }
-
+  this->PrepareQuadrics();
+  if (!this->Context.Report(0.15))
+  {
+    return false;
+  }
+  const std::int64_t target = this->Counting() ? this->Prepared.TargetTriangles : -1;
+  result.Report = this->Start;
+  if (this->P.empty())
+  {
+    // No usable triangle: an empty result, its maps still well formed.
+    result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
+    return this->Context.Report(1.0);
+  }
+  this->PlantTree(target);
+  std::vector<Survivor> survivors;
+  if (!this->RefineToTarget(target, survivors) || !this->Context.Report(0.85))
+  {
+    return false;
+  }
   this->Finalize(survivors, result);
+  this->JudgeCount(result);
   std::vector<std::uint8_t> isLeaf(this->Nodes.size(), 0);
   for (const std::int32_t v : this->Order)
   {
@@ -1595,7 +1728,10 @@ bool OctreeVertexClustering(const TriangleMeshView& mesh, const OctreeClustering
 {
   Clusterer clusterer(mesh, options, context);
   const bool finished = clusterer.Run(result);
-  result.Aborted = !finished;
+  if (!finished)
+  {
+    result.Report.Stop = StopReason::Aborted;
+  }
   return finished;
 }
 

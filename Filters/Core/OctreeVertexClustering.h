@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file OctreeVertexClustering.h
- * @brief Adaptive octree vertex clustering with quadric-optimal representatives (paper 000, §2–3).
+ * @brief Adaptive octree vertex clustering with quadric-optimal representatives (Zhou et al., §2–3).
  *
  * Zhou, Zhang, Shi and Pan, "A new simplification algorithm for colored or textured polygonal
  * models". The bounding cube is refined as an octree (vertices are inserted in the spatial order
@@ -43,24 +43,20 @@
 #ifndef MeshSimplification_OctreeVertexClustering_h
 #define MeshSimplification_OctreeVertexClustering_h
 
-#include "Execution.h"
-#include "TriangleMesh.h"
+#include "Simplification.h"
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace meshsimp
 {
 
-struct OctreeClusteringOptions
+/// The octree's own settings; the target, locks, open borders and regions are the common ones
+/// (SimplificationOptions). A count is met within the target's Tolerance (3 % by default here)
+/// unless clustering has no count nearer it (the Outcome says so).
+struct OctreeClusteringOptions : SimplificationOptions
 {
-  /// Wanted number of output triangles; < 0 selects the error-bound mode.
-  std::int64_t TargetTriangles = -1;
-  /// ε, a distance used when TargetTriangles < 0: absolute, or relative to the bounding-box
-  /// diagonal of the used points when RelativeError is set.
-  double MaximumError = 0.0;
-  bool RelativeError = false;
+  OctreeClusteringOptions() { this->Goal.Tolerance = 0.03; }
   /// Leaves with a larger edge, relative to the bounding-box diagonal, are always split;
   /// <= 0 or >= 1: no limit.
   double MaximumCellSize = 0.0;
@@ -73,33 +69,22 @@ struct OctreeClusteringOptions
   double BoundaryWeight = 10.0;
   /// Split leaves whose clustering would flip a related triangle (§2.4).
   bool PreventFlips = true;
-  /// Optional, one flag per input point: nonzero points are clusters of their own, kept at
-  /// their input coordinates bit for bit, and no cluster joins them (e.g. the points a piece
-  /// shares with other pieces under MPI, so that the simplified pieces still fit together).
-  const std::uint8_t* LockedPoints = nullptr;
 };
 
-struct OctreeClusteringResult
+/**
+ * The clustering's output (SimplifiedMesh): each output point's sources are its cluster's
+ * input points with area weights, the heaviest first; point arrays "ClusterSize" (points
+ * merged) and "ClusterError" (the bounded cluster error above, input units); Report's
+ * MaximumError is the largest cluster error. Locked points are clusters of their own at their
+ * input coordinates, bit for bit, and no cluster joins them.
+ */
+struct OctreeClusteringResult : SimplifiedMesh
 {
-  std::vector<double> Points;                // 3 per output point
-  std::vector<std::int32_t> Triangles;       // 3 per output triangle
-  std::vector<std::int32_t> SourceTriangles; // input triangle each output triangle comes from
-  /// Cluster membership of each output point (CSR): input vertices and normalised weights.
-  std::vector<std::int32_t> ClusterOffsets;
-  std::vector<std::int32_t> ClusterVertices;
-  std::vector<double> ClusterWeights;
-  /// Per output point: the bounded cluster error (a distance in input units), see above.
-  std::vector<double> ClusterErrors;
   /// Input vertex → output point, −1 for vertices whose cluster has no surviving triangle and
   /// joined none (see above).
   std::vector<std::int32_t> VertexToPoint;
-  double MaximumClusterError = 0.0;
-  std::int64_t UsableInputTriangles = 0;
-  /// Input points with a NaN or infinite coordinate (their triangles are skipped).
-  std::int64_t NonFinitePoints = 0;
   std::int64_t NumberOfLeaves = 0;
   int Depth = 0;
-  bool Aborted = false;
 };
 
 /// Runs the clustering. Invalid triangles (bad index, repeated index, non-finite corner) are

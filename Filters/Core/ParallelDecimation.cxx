@@ -151,8 +151,6 @@ constexpr std::int64_t RingBlock = 16384;
 /// round's vertices may share it (only it: no edge), and it survives no collapse, so that a
 /// round is not limited to one vertex around it.
 constexpr std::int32_t HubTriangles = 32;
-/// Meshes whose bounding-box diagonal lies outside this range are scaled (Run).
-constexpr double MinimumDiagonal = 0x1p-64, MaximumDiagonal = 0x1p64;
 
 /// One edge (v, W) around a vertex v: the triangle where W follows v and the one where W precedes
 /// it (-1 when missing: a boundary edge).
@@ -247,6 +245,30 @@ private:
   bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double& distance) const;
   /// Fills chosen with the round's set; true when the window covered every candidate.
   bool SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen);
+  /// SelectRound's stages: the live vertices and the candidates among them (returns their
+  /// largest importance); a block of candidates' rings; the free ones of the block taken.
+  double GatherCandidates();
+  void GatherRings(std::int64_t first, std::int64_t count);
+  void TakeFree(std::int64_t first, std::int64_t count, std::int64_t need, std::int64_t& expected,
+    std::vector<std::int32_t>& chosen);
+  /// The prepared mesh in the engine with its locks and bound; returns the count.
+  std::int64_t Prepare(const TriangleMeshView& input, ParallelDecimationResult& result);
+  /// Step 1–2 of §5.5: every vertex's type and importance (MeasureAll), or the listed ones'
+  /// (nullptr: all; -1 entries are skipped); Measure writes one vertex's.
+  void MeasureAll();
+  void MeasureList(const std::int32_t* vertices, std::int64_t count);
+  void Measure(std::int32_t v, Workspace& work, bool starCollected);
+  /// The listed vertices after a round (see the body).
+  void Reevaluate(const std::int32_t* vertices, std::int64_t count);
+  /// Steps 3–7 of §5.5; false when aborted. A round's stages: its plans, the changes listed
+  /// (with what a survivor inherits), and what to do when it removed nothing.
+  bool RemoveToTarget(std::int64_t target, ParallelDecimationResult& result);
+  void PlanRound();
+  void ListChanges();
+  void Inherit(std::int32_t v, std::int64_t i);
+  bool Unstick(bool all, double& fraction, ParallelDecimationResult& result);
+  /// The outcome: why it stopped where it did, and the relaxations' note.
+  void Judge(ParallelDecimationResult& result) const;
   /// MoveSurvivors: each survivor to its quadric's point of least error, where that turns no
   /// triangle too far. Returns the number moved.
   std::int64_t MoveSurvivors();
@@ -297,6 +319,14 @@ private:
   std::vector<std::uint8_t> Gone; // removed by a collapse
   std::vector<std::uint8_t> Moved; // moved by MoveSurvivors
   std::vector<Workspace> Workspaces; // one per thread
+  // A round's lists: the chosen vertices, their plans (and bound distances) where they have
+  // one, the plans applied, the changed vertices by removal (Slices into Neighbours).
+  std::vector<std::int32_t> Chosen, Neighbours;
+  std::vector<std::int64_t> Slices;
+  std::vector<double> Distances;
+  std::vector<CollapsePlan> Plans, Applied;
+  std::vector<std::uint8_t> Planned;
+  bool StoppedEarly = false; // no removable vertex was left before the target
 };
 
 void Decimator::CollectStar(std::int32_t v, Workspace& work) const
@@ -585,12 +615,11 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double
   return false;
 }
 
-bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen)
+double Decimator::GatherCandidates()
 {
-  // §5.6: bucket the removable vertices by eq. (5.6) of their importance, in O(N) by counting;
-  // then §5.5: take them greedily in that order while their neighbourhoods stay disjoint.
-  // The vertices still in the mesh, compacted, and of them the removable ones: counted per part,
-  // then written in order, concurrently.
+  // The vertices still in the mesh, compacted into Live, and of them the removable ones into
+  // Order: counted per part, then written in order, concurrently. Returns the largest
+  // importance among the candidates.
   const std::int64_t size = static_cast<std::int64_t>(this->Live.size());
   const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(this->Context.Threads, size / 4096));
   std::vector<std::int64_t> liveAt(parts + 1, 0), candidateAt(parts + 1, 0);
@@ -640,96 +669,116 @@ bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std:
     }
   }, 4 * size);
   this->Live.swap(this->NextLive);
-  const double largest = *std::max_element(largestOf.begin(), largestOf.end());
+  return *std::max_element(largestOf.begin(), largestOf.end());
+}
+
+void Decimator::GatherRings(std::int64_t first, std::int64_t count)
+{
+  // The other two corners of each candidate's triangles, gathered concurrently a block at a
+  // time, so the greedy pass (TakeFree), serial, reads flat lists instead of walking the mesh;
+  // hubs as ~w. None for a candidate already near a vertex taken in an earlier block.
+  const std::vector<std::int32_t>& sorted = this->Sorted;
+  const std::uint8_t round = this->RoundStamp();
+  this->RingStart.resize(static_cast<std::size_t>(count) + 1);
+  this->RingStart[0] = 0;
+  this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
+    for (std::int64_t i = begin; i < last; ++i)
+    {
+      if (i + CollapseMesh::PrefetchDistance < last)
+      {
+        const std::int32_t ahead = sorted[first + i + CollapseMesh::PrefetchDistance];
+        this->Mesh.PrefetchPlace(ahead); // the ring gathering below prefetches the spans
+        Prefetch(this->Owner.data() + ahead);
+      }
+      const std::int32_t v = sorted[first + i];
+      this->RingStart[i + 1] = this->Owner[v] == round ? 0 : 2 * this->Mesh.NumberOfTrianglesAround(v);
+    }
+  }, 5 * count);
+  std::partial_sum(this->RingStart.begin(), this->RingStart.end(), this->RingStart.begin());
+  this->Rings.resize(static_cast<std::size_t>(this->RingStart[count]));
+  this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
+    for (std::int64_t i = begin; i < last; ++i)
+    {
+      this->Mesh.PrefetchStars(sorted.data() + first, i, last);
+      if (this->RingStart[i + 1] == this->RingStart[i])
+      {
+        continue;
+      }
+      std::int32_t* out = this->Rings.data() + this->RingStart[i];
+      this->Mesh.ForEachCorner(sorted[first + i], [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+        *out++ = this->IsHub(next) ? ~next : next;
+        *out++ = this->IsHub(previous) ? ~previous : previous;
+      });
+    }
+  }, 20 * count);
+}
+
+void Decimator::TakeFree(std::int64_t first, std::int64_t count, std::int64_t need, std::int64_t& expected,
+  std::vector<std::int32_t>& chosen)
+{
+  // A candidate is free when no vertex of its triangles is near a vertex taken before (a hub
+  // may be, unless it is taken itself); then its triangles' vertices are marked as near it,
+  // hubs as touched.
+  const std::uint8_t round = this->RoundStamp();
+  for (std::int64_t i = 0; i < count && expected < need; ++i)
+  {
+    const std::int32_t v = this->Sorted[first + i];
+    const std::int32_t* ring = this->Rings.data() + this->RingStart[i];
+    const std::int32_t* ringEnd = this->Rings.data() + this->RingStart[i + 1];
+    bool free = this->Owner[v] != round && !(ringEnd - ring >= 2 * HubTriangles && this->Touched[v] == round);
+    for (const std::int32_t* w = ring; free && w != ringEnd; ++w)
+    {
+      free = this->Owner[*w >= 0 ? *w : ~*w] != round;
+    }
+    if (!free)
+    {
+      continue;
+    }
+    chosen.push_back(v);
+    this->Owner[v] = round;
+    for (const std::int32_t* w = ring; w != ringEnd; ++w)
+    {
+      if (*w >= 0)
+      {
+        this->Owner[*w] = round;
+      }
+      else if (this->Touched[~*w] != round)
+      {
+        this->Touched[~*w] = round;
+        this->SharedHubs.push_back(~*w);
+      }
+    }
+    expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
+  }
+}
+
+bool Decimator::SelectRound(std::int64_t need, double fraction, std::vector<std::int32_t>& chosen)
+{
+  // §5.6: bucket the removable vertices by eq. (5.6) of their importance, in O(N) by counting;
+  // then §5.5: take them greedily in that order while their neighbourhoods stay disjoint.
+  const double largest = this->GatherCandidates();
   const std::int64_t candidates = static_cast<std::int64_t>(this->Order.size());
   const std::int64_t window =
     std::max<std::int64_t>(16, static_cast<std::int64_t>(std::ceil(fraction * static_cast<double>(candidates))));
-  std::vector<std::int32_t>& sorted = this->Sorted;
   BucketOrder(this->Importance.data(), this->Order, largest, this->Options.BucketImportance,
-    this->Options.BucketShare, sorted, this->Buckets, static_cast<std::size_t>(window), this->Context);
+    this->Options.BucketShare, this->Sorted, this->Buckets, static_cast<std::size_t>(window), this->Context);
 
   ++this->Round;
   chosen.clear();
-  std::int64_t expected = 0;
   // Owner holds byte stamps (1–255), so that it stays in cache; cleared when they wrap.
-  const std::uint8_t round = this->RoundStamp();
-  if (round == 1)
+  if (this->RoundStamp() == 1)
   {
     std::fill(this->Owner.begin(), this->Owner.end(), std::uint8_t(0));
     std::fill(this->Touched.begin(), this->Touched.end(), std::uint8_t(0));
   }
   this->SharedHubs.clear();
-  const std::int64_t end = std::min<std::int64_t>(window, static_cast<std::int64_t>(sorted.size()));
+  std::int64_t expected = 0;
+  const std::int64_t end = std::min<std::int64_t>(window, static_cast<std::int64_t>(this->Sorted.size()));
   for (std::int64_t first = 0; first < end && expected < need; first += RingBlock)
   {
-    // The other two corners of each candidate's triangles, gathered concurrently a block at a
-    // time, so the greedy pass below, serial, reads flat lists instead of walking the mesh;
-    // hubs as ~w. None for a candidate already near a vertex taken in an earlier block.
     const std::int64_t count = std::min(RingBlock, end - first);
-    this->RingStart.resize(static_cast<std::size_t>(count) + 1);
-    this->RingStart[0] = 0;
-    this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
-      for (std::int64_t i = begin; i < last; ++i)
-      {
-        if (i + CollapseMesh::PrefetchDistance < last)
-        {
-          const std::int32_t ahead = sorted[first + i + CollapseMesh::PrefetchDistance];
-          this->Mesh.PrefetchPlace(ahead); // the ring gathering below prefetches the spans
-          Prefetch(this->Owner.data() + ahead);
-        }
-        const std::int32_t v = sorted[first + i];
-        this->RingStart[i + 1] = this->Owner[v] == round ? 0 : 2 * this->Mesh.NumberOfTrianglesAround(v);
-      }
-    }, 5 * count);
-    std::partial_sum(this->RingStart.begin(), this->RingStart.end(), this->RingStart.begin());
-    this->Rings.resize(static_cast<std::size_t>(this->RingStart[count]));
-    this->Context.For(count, [&](std::int64_t begin, std::int64_t last) {
-      for (std::int64_t i = begin; i < last; ++i)
-      {
-        this->Mesh.PrefetchStars(sorted.data() + first, i, last);
-        if (this->RingStart[i + 1] == this->RingStart[i])
-        {
-          continue;
-        }
-        std::int32_t* out = this->Rings.data() + this->RingStart[i];
-        this->Mesh.ForEachCorner(sorted[first + i], [&](std::int32_t, std::int32_t next, std::int32_t previous) {
-          *out++ = this->IsHub(next) ? ~next : next;
-          *out++ = this->IsHub(previous) ? ~previous : previous;
-        });
-      }
-    }, 20 * count);
-    // Free when no vertex of its triangles is near a vertex taken before (a hub may be, unless
-    // it is taken itself); then its triangles' vertices are marked as near it, hubs as touched.
-    for (std::int64_t i = 0; i < count && expected < need; ++i)
-    {
-      const std::int32_t v = sorted[first + i];
-      const std::int32_t* ring = this->Rings.data() + this->RingStart[i];
-      const std::int32_t* ringEnd = this->Rings.data() + this->RingStart[i + 1];
-      bool free = this->Owner[v] != round && !(ringEnd - ring >= 2 * HubTriangles && this->Touched[v] == round);
-      for (const std::int32_t* w = ring; free && w != ringEnd; ++w)
-      {
-        free = this->Owner[*w >= 0 ? *w : ~*w] != round;
-      }
-      if (!free)
-      {
-        continue;
-      }
-      chosen.push_back(v);
-      this->Owner[v] = round;
-      for (const std::int32_t* w = ring; w != ringEnd; ++w)
-      {
-        if (*w >= 0)
-        {
-          this->Owner[*w] = round;
-        }
-        else if (this->Touched[~*w] != round)
-        {
-          this->Touched[~*w] = round;
-          this->SharedHubs.push_back(~*w);
-        }
-      }
-      expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
-    }
+    this->GatherRings(first, count);
+    this->TakeFree(first, count, need, expected, chosen);
   }
   return window >= candidates;
 }
@@ -767,53 +816,30 @@ void Decimator::InitializeQuadric(std::int32_t v, const Workspace& work)
   }
 }
 
-bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& result)
+std::int64_t Decimator::Prepare(const TriangleMeshView& input, ParallelDecimationResult& result)
 {
-  result = ParallelDecimationResult();
-  CompactMesh compact = MakeCompactMesh(input, this->Context);
-  result.NonFinitePoints = compact.NonFinitePoints;
-  this->InputVertex = std::move(compact.InputVertex);
-  this->InputTriangle = std::move(compact.InputTriangle);
-  const std::int64_t usable = static_cast<std::int64_t>(this->InputTriangle.size());
-  result.UsableTriangles = usable;
-  const std::int64_t target = this->Options.TargetTriangles >= 0
-    ? std::min(this->Options.TargetTriangles, usable)
-    : static_cast<std::int64_t>(std::llround(
-        static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
-  result.TargetTriangles = target;
-  const double diagonal = compact.Diagonal();
-  if (diagonal > 0.0 && (diagonal < MinimumDiagonal || diagonal > MaximumDiagonal))
-  {
-    // Quadric errors grow with the fourth power of lengths: coordinates far from 1 are scaled
-    // by a power of two, which keeps every rounding, so that the result is the one of a mesh
-    // of diagonal about 1, scaled back exactly.
-    this->Scale = std::ldexp(1.0, -std::ilogb(diagonal));
-    for (Vec3& p : compact.Points)
-    {
-      p *= this->Scale;
-    }
-  }
-  // The diagonal in mesh coordinates (also where the input's exceeds the largest double).
-  const double meshDiagonal = (this->Scale * compact.Upper - this->Scale * compact.Lower).norm();
-  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
-  if (this->Options.MaximumError >= 0.0)
+  // The usable input, scaled by a power of two where its size is extreme (quadric errors grow
+  // with the fourth power of lengths), in the engine with its locks and bound.
+  PreparedMesh prepared = PrepareMesh(input, this->Options, Normalization::PowerOfTwo, this->Context);
+  result.Report = prepared.Report();
+  this->InputVertex = std::move(prepared.Mesh.InputVertex);
+  this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
+  this->Scale = prepared.Scale;
+  this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
+  this->Mesh.SetRegions(std::move(prepared.Regions));
+  if (prepared.Bound >= 0.0)
   {
     this->Bound.Build(this->Mesh);
-    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? meshDiagonal : this->Scale);
+    this->BoundLimit = prepared.Bound;
   }
   const std::int32_t n = this->Mesh.NumberOfPoints();
   for (std::int32_t v = 0; v < n; ++v)
   {
-    if ((this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
-      (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
+    if (prepared.Locks[v])
     {
-      const bool shared =
-        this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock;
-      this->Mesh.Lock(v, shared);
+      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock);
     }
   }
-
-  // Step 1–2 of §5.5: every vertex's type and importance, concurrently.
   this->Importance.assign(n, Never);
   this->Types.assign(n, DecimationVertexType::Complex);
   this->Owner.assign(n, 0);
@@ -825,61 +851,38 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
   this->Stuck.assign(n, 0);
   this->Gone.assign(n, 0);
   this->Live.resize(n);
-  for (std::int32_t v = 0; v < n; ++v)
-  {
-    this->Live[v] = v;
-  }
+  std::iota(this->Live.begin(), this->Live.end(), 0);
   this->Accumulated.assign(n, 0.0);
-  auto measure = [&](std::int32_t v, Workspace& work, bool starCollected) {
-    const VertexState state = this->Evaluate(v, work, starCollected);
-    this->Types[v] = state.Type;
-    this->Importance[v] = state.Importance;
-    this->BestTarget[v] = state.Best;
-    this->Stuck[v] = 0;
-    this->Updated[v] = 0;
-  };
-  auto evaluate = [&](const std::int32_t* vertices, std::int64_t count) {
-    this->ForEachInParts(count, 500, [&](std::int64_t i, Workspace& work) {
-      const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
-      if (v >= 0) // -1: a repeat in the list
-      {
-        measure(v, work, false);
-      }
-    });
-  };
-  // After a round, Quadric: a simple vertex whose least-error neighbour is still there and
-  // absorbed nothing keeps that error as its least among its old neighbours (their errors can
-  // only grow: Q_w and the points stay, a neighbour's own error grows when it absorbs); its one
-  // new neighbour, the survivor, is the only new option. Other vertices are evaluated in full.
-  auto reevaluate = [&](const std::int32_t* vertices, std::int64_t count) {
-    this->ForEachInParts(count, 300, [&](std::int64_t i, Workspace& work) {
-      this->PrefetchAhead(vertices, i, count);
-      const std::int32_t w = vertices[i];
-      if (w < 0)
-      {
-        return;
-      }
-      const std::int32_t into = this->Into[w], best = this->BestTarget[w];
-      const bool absorbed = best >= 0 && this->Listed[best] == this->Round && this->Into[best] == best;
-      if (this->Options.Measure == ImportanceMeasure::Quadric && into != w && best >= 0 &&
-        this->Types[w] == DecimationVertexType::Simple && this->Importance[w] < Never && !this->Gone[best] &&
-        !absorbed)
-      {
-        const double error = std::sqrt(this->HalfEdgeError(w, into));
-        if (error < this->Importance[w])
-        {
-          this->Importance[w] = error;
-          this->BestTarget[w] = into;
-        }
-        this->Stuck[w] = 0;
-        this->Updated[w] = 1;
-        return;
-      }
-      measure(w, work, false);
-    });
-  };
-  // The first time under Quadric, each star serves both the vertex's quadric (the only one its
-  // evaluation reads; the others' own errors are still 0) and its evaluation.
+  return prepared.TargetTriangles;
+}
+
+void Decimator::Measure(std::int32_t v, Workspace& work, bool starCollected)
+{
+  const VertexState state = this->Evaluate(v, work, starCollected);
+  this->Types[v] = state.Type;
+  this->Importance[v] = state.Importance;
+  this->BestTarget[v] = state.Best;
+  this->Stuck[v] = 0;
+  this->Updated[v] = 0;
+}
+
+void Decimator::MeasureList(const std::int32_t* vertices, std::int64_t count)
+{
+  this->ForEachInParts(count, 500, [&](std::int64_t i, Workspace& work) {
+    const std::int32_t v = vertices ? vertices[i] : static_cast<std::int32_t>(i);
+    if (v >= 0) // -1: a repeat in the list
+    {
+      this->Measure(v, work, false);
+    }
+  });
+}
+
+void Decimator::MeasureAll()
+{
+  // Step 1–2 of §5.5: every vertex's type and importance, concurrently. Under Quadric each star
+  // serves both the vertex's quadric (the only one its evaluation reads; the others' own errors
+  // are still 0) and its evaluation.
+  const std::int32_t n = this->Mesh.NumberOfPoints();
   const bool quadric = this->Options.Measure == ImportanceMeasure::Quadric;
   this->Quadrics.assign(quadric ? n : 0, Quadric());
   this->OwnError.assign(quadric ? n : 0, 0.0);
@@ -890,136 +893,194 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       this->CollectStar(v, work);
       this->InitializeQuadric(v, work);
     }
-    measure(v, work, quadric);
+    this->Measure(v, work, quadric);
   });
-  if (!this->Context.Report(0.05))
+}
+
+void Decimator::Reevaluate(const std::int32_t* vertices, std::int64_t count)
+{
+  // After a round, Quadric: a simple vertex whose least-error neighbour is still there and
+  // absorbed nothing keeps that error as its least among its old neighbours (their errors can
+  // only grow: Q_w and the points stay, a neighbour's own error grows when it absorbs); its one
+  // new neighbour, the survivor, is the only new option. Other vertices are evaluated in full.
+  this->ForEachInParts(count, 300, [&](std::int64_t i, Workspace& work) {
+    this->PrefetchAhead(vertices, i, count);
+    const std::int32_t w = vertices[i];
+    if (w < 0)
+    {
+      return;
+    }
+    const std::int32_t into = this->Into[w], best = this->BestTarget[w];
+    const bool absorbed = best >= 0 && this->Listed[best] == this->Round && this->Into[best] == best;
+    if (this->Options.Measure == ImportanceMeasure::Quadric && into != w && best >= 0 &&
+      this->Types[w] == DecimationVertexType::Simple && this->Importance[w] < Never && !this->Gone[best] &&
+      !absorbed)
+    {
+      const double error = std::sqrt(this->HalfEdgeError(w, into));
+      if (error < this->Importance[w])
+      {
+        this->Importance[w] = error;
+        this->BestTarget[w] = into;
+      }
+      this->Stuck[w] = 0;
+      this->Updated[w] = 1;
+      return;
+    }
+    this->Measure(w, work, false);
+  });
+}
+
+void Decimator::PlanRound()
+{
+  // Every chosen vertex's half-edge, concurrently; those without one are stuck until a change
+  // nearby re-evaluates them. The others' plans go to Applied, in order.
+  const std::int64_t count = static_cast<std::int64_t>(this->Chosen.size());
+  this->Plans.resize(this->Chosen.size());
+  this->Distances.resize(this->Chosen.size());
+  this->Planned.assign(this->Chosen.size(), 0);
+  this->ForEachInParts(count, 2000, [&](std::int64_t i, Workspace& work) {
+    this->PrefetchAhead(this->Chosen.data(), i, count);
+    this->Planned[i] = this->Plan(this->Chosen[i], work, this->Plans[i], this->Distances[i]) ? 1 : 0;
+  });
+  this->Applied.clear();
+  this->Slices.assign(this->Chosen.size() + 1, 0);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    if (!this->Planned[i])
+    {
+      this->Stuck[this->Chosen[i]] = 1;
+    }
+    else
+    {
+      this->Applied.push_back(this->Plans[i]);
+    }
+    this->Slices[i + 1] =
+      this->Slices[i] + (this->Planned[i] ? 2 * this->Mesh.NumberOfTrianglesAround(this->Chosen[i]) : 0);
+  }
+}
+
+void Decimator::ListChanges()
+{
+  // The neighbours of each removed vertex are the vertices whose triangles change: listed per
+  // removal in its own slice (two per triangle around it, each vertex once, the repeats -1),
+  // concurrently, while the survivor inherits what the removed vertex measured. The stars of a
+  // round's vertices share no vertex but hubs, so survivors are distinct and no other vertex is
+  // listed in two slices; the hubs are listed after the slices, once each.
+  const std::int64_t count = static_cast<std::int64_t>(this->Chosen.size());
+  this->Neighbours.resize(static_cast<std::size_t>(this->Slices[count]));
+  const std::uint8_t stamp = this->RoundStamp();
+  this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i)
+    {
+      this->Mesh.PrefetchStars(this->Chosen.data(), i, end);
+      if (!this->Planned[i])
+      {
+        continue;
+      }
+      const std::int32_t v = this->Chosen[i];
+      const std::int32_t kept = this->Plans[i].Vertices[0];
+      std::int32_t* out = this->Neighbours.data() + this->Slices[i];
+      auto list = [&](std::int32_t w) {
+        if (this->Touched[w] == stamp)
+        {
+          *out++ = -1;
+          return;
+        }
+        *out++ = this->Listed[w] != this->Round ? w : -1;
+        this->Listed[w] = this->Round;
+        this->Into[w] = kept;
+      };
+      this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+        list(next);
+        list(previous);
+      });
+      this->Inherit(v, i);
+    }
+  }, 40 * count);
+  for (const std::int32_t hub : this->SharedHubs)
+  {
+    this->Neighbours.push_back(hub);
+    this->Listed[hub] = this->Round;
+    this->Into[hub] = hub; // evaluated in full
+  }
+}
+
+void Decimator::Inherit(std::int32_t v, std::int64_t i)
+{
+  // The survivor of the round's removal i takes v's planes (Quadric) or importance
+  // (AveragePlane with AccumulateError), and v's bound planes; v is gone.
+  const std::int32_t kept = this->Plans[i].Vertices[0];
+  if (this->Options.Measure == ImportanceMeasure::Quadric)
+  {
+    this->Quadrics[kept] += this->Quadrics[v];
+    this->OwnError[kept] = this->Quadrics[kept].Evaluate(this->Mesh.Point(kept));
+  }
+  else if (this->Options.AccumulateError)
+  {
+    this->Accumulated[kept] += this->Importance[v];
+  }
+  if (this->BoundLimit >= 0.0)
+  {
+    this->Bound.Merge(this->Plans[i], this->Distances[i]); // the sets of a round are disjoint
+  }
+  this->Importance[v] = Never;
+  this->Gone[v] = 1;
+}
+
+bool Decimator::Unstick(bool all, double& fraction, ParallelDecimationResult& result)
+{
+  // A round removed nothing: widen the window when it did not cover every candidate (every
+  // vertex in it is stuck); try again when stuck vertices kept others out of the set (on a
+  // small mesh one star can cover most of it); else relax the angles a step and start over.
+  // False when nothing is left to try (at 180°, or under an error bound).
+  if (!all)
+  {
+    fraction = std::min(1.0, 2.0 * fraction);
+    return true;
+  }
+  if (this->Chosen.size() < this->Order.size())
+  {
+    return true;
+  }
+  if ((this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0) || this->BoundLimit >= 0.0)
   {
     return false;
   }
+  this->SetAngles(this->FeatureAngle + RelaxationStep, this->DeviationAngle + RelaxationStep);
+  ++result.Relaxations;
+  this->MeasureList(nullptr, this->Mesh.NumberOfPoints());
+  return true;
+}
 
-  // Steps 3–7: rounds of super-independent sets until the target.
+bool Decimator::RemoveToTarget(std::int64_t target, ParallelDecimationResult& result)
+{
+  // Steps 3–7 of §5.5: rounds of super-independent sets until the target.
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
-  std::vector<std::int32_t> chosen, neighbours;
-  std::vector<std::int64_t> slices;
-  std::vector<double> distances;
-  std::vector<CollapsePlan> plans, applied;
-  std::vector<std::uint8_t> planned;
   double fraction = std::min(1.0, std::max(1e-3, this->Options.RoundFraction));
   while (this->Mesh.NumberOfAliveTriangles() > target)
   {
-    const std::int64_t need = this->Mesh.NumberOfAliveTriangles() - target;
-    const bool all = this->SelectRound(need, fraction, chosen);
+    const bool all = this->SelectRound(this->Mesh.NumberOfAliveTriangles() - target, fraction, this->Chosen);
     if (this->Options.RoundObserver)
     {
-      this->Options.RoundObserver(this->Mesh, chosen);
+      this->Options.RoundObserver(this->Mesh, this->Chosen);
     }
     // Removed in vertex order, which follows space (MakeCompactMesh): nearby vertices share
     // cache lines where the importance order would jump across the mesh.
-    this->Context.Sort(chosen);
-    const std::int64_t count = static_cast<std::int64_t>(chosen.size());
-    plans.resize(chosen.size());
-    distances.resize(chosen.size());
-    planned.assign(chosen.size(), 0);
-    this->ForEachInParts(count, 2000, [&](std::int64_t i, Workspace& work) {
-      this->PrefetchAhead(chosen.data(), i, count);
-      planned[i] = this->Plan(chosen[i], work, plans[i], distances[i]) ? 1 : 0;
-    });
-    // The neighbours of each removed vertex are the vertices whose triangles change: listed per
-    // removal in its own slice (two per triangle around it, each vertex once, the repeats -1),
-    // concurrently, while the survivor inherits what the removed vertex measured. The stars of a
-    // round's vertices share no vertex but hubs, so survivors are distinct and no other vertex is
-    // listed in two slices; the hubs are listed after the slices, once each.
-    applied.clear();
-    slices.assign(chosen.size() + 1, 0);
-    for (std::int64_t i = 0; i < count; ++i)
-    {
-      if (!planned[i])
-      {
-        this->Stuck[chosen[i]] = 1; // until a change nearby re-evaluates it
-      }
-      else
-      {
-        applied.push_back(plans[i]);
-      }
-      slices[i + 1] = slices[i] + (planned[i] ? 2 * this->Mesh.NumberOfTrianglesAround(chosen[i]) : 0);
-    }
-    neighbours.resize(static_cast<std::size_t>(slices[count]));
-    const std::uint8_t stamp = this->RoundStamp();
-    this->Context.For(count, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t i = begin; i < end; ++i)
-      {
-        this->Mesh.PrefetchStars(chosen.data(), i, end);
-        if (!planned[i])
-        {
-          continue;
-        }
-        const std::int32_t v = chosen[i];
-        const std::int32_t kept = plans[i].Vertices[0];
-        std::int32_t* out = neighbours.data() + slices[i];
-        auto list = [&](std::int32_t w) {
-          if (this->Touched[w] == stamp)
-          {
-            *out++ = -1;
-            return;
-          }
-          *out++ = this->Listed[w] != this->Round ? w : -1;
-          this->Listed[w] = this->Round;
-          this->Into[w] = kept;
-        };
-        this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
-          list(next);
-          list(previous);
-        });
-        if (this->Options.Measure == ImportanceMeasure::Quadric)
-        {
-          this->Quadrics[kept] += this->Quadrics[v];
-          this->OwnError[kept] = this->Quadrics[kept].Evaluate(this->Mesh.Point(kept));
-        }
-        else if (this->Options.AccumulateError)
-        {
-          this->Accumulated[kept] += this->Importance[v];
-        }
-        if (this->BoundLimit >= 0.0)
-        {
-          this->Bound.Merge(plans[i], distances[i]); // the sets of a round are disjoint
-        }
-        this->Importance[v] = Never;
-        this->Gone[v] = 1;
-      }
-    }, 40 * count);
-    for (const std::int32_t hub : this->SharedHubs)
-    {
-      neighbours.push_back(hub);
-      this->Listed[hub] = this->Round;
-      this->Into[hub] = hub; // evaluated in full
-    }
+    this->Context.Sort(this->Chosen);
+    this->PlanRound();
+    this->ListChanges();
     ++result.Rounds;
-    if (applied.empty())
+    if (this->Applied.empty())
     {
-      if (!all)
+      if (!this->Unstick(all, fraction, result))
       {
-        fraction = std::min(1.0, 2.0 * fraction); // every vertex in the window is stuck
-        continue;
-      }
-      if (chosen.size() < this->Order.size())
-      {
-        // The stuck vertices kept others out of the set (on a small mesh one star can cover
-        // most of it); those are tried next, the stuck ones being no candidates now.
-        continue;
-      }
-      if ((this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0) || this->BoundLimit >= 0.0)
-      {
-        result.StoppedEarly = true;
+        this->StoppedEarly = true;
         break;
       }
-      // Nothing is removable under the angles: relax them a step and start over.
-      this->SetAngles(this->FeatureAngle + RelaxationStep, this->DeviationAngle + RelaxationStep);
-      ++result.Relaxations;
-      evaluate(nullptr, n);
       continue;
     }
-    this->Mesh.ApplyIndependent(applied, this->Context, this->SharedHubs);
-    reevaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
+    this->Mesh.ApplyIndependent(this->Applied, this->Context, this->SharedHubs);
+    this->Reevaluate(this->Neighbours.data(), static_cast<std::int64_t>(this->Neighbours.size()));
     const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
       static_cast<double>(std::max<std::int64_t>(1, start - target));
     if (!this->Context.Report(0.05 + 0.9 * std::min(1.0, done)))
@@ -1027,21 +1088,52 @@ bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& res
       return false;
     }
   }
+  return true;
+}
+
+void Decimator::Judge(ParallelDecimationResult& result) const
+{
+  // Why the count is where it is: the reason first, then what was changed to get there.
+  Outcome& report = result.Report;
+  if (this->StoppedEarly && this->BoundLimit < 0.0 && report.Stop == StopReason::TargetMet)
+  {
+    report.Stop = StopReason::NothingRemovable;
+    report.Reason = "no vertex is left that can be removed";
+  }
+  if (result.Relaxations > 0)
+  {
+    report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were raised by " +
+      std::to_string(static_cast<std::int64_t>(RelaxationStep) * result.Relaxations) + " degrees to go on");
+  }
+}
+
+bool Decimator::Run(const TriangleMeshView& input, ParallelDecimationResult& result)
+{
+  result = ParallelDecimationResult();
+  const std::int64_t target = this->Prepare(input, result);
+  this->MeasureAll();
+  const bool removing = result.Report.Stop != StopReason::AllLocked;
+  if (!this->Context.Report(0.05) || (removing && !this->RemoveToTarget(target, result)))
+  {
+    result.Report.Stop = StopReason::Aborted;
+    return false;
+  }
   // The survivors' importance and type in full where they were only updated.
-  neighbours.clear();
+  this->Neighbours.clear();
   for (const std::int32_t v : this->Live)
   {
     if (!this->Gone[v] && this->Updated[v])
     {
-      neighbours.push_back(v);
+      this->Neighbours.push_back(v);
     }
   }
-  evaluate(neighbours.data(), static_cast<std::int64_t>(neighbours.size()));
+  this->MeasureList(this->Neighbours.data(), static_cast<std::int64_t>(this->Neighbours.size()));
   if (this->Options.MoveSurvivors && this->Options.Measure == ImportanceMeasure::Quadric)
   {
     result.MovedPoints = this->MoveSurvivors();
   }
   this->Output(input, result);
+  this->Judge(result);
   return this->Context.Report(1.0);
 }
 
@@ -1145,30 +1237,44 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
   // The surviving triangles and their points, with their importance and type.
   std::vector<std::int32_t> used, kept;
   this->Mesh.Surviving(used, result.Triangles, kept);
-  // A distance (AveragePlane), or the square root of an area-weighted squared distance: divided
-  // by Scale once or twice (Scale² underflows for the largest meshes).
-  const bool squared = this->Options.Measure == ImportanceMeasure::Quadric;
   for (const std::int32_t v : used)
   {
     // Points MoveSurvivors left in place keep their input coordinates bit for bit.
     const Vec3 p = !this->Moved.empty() && this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale)
                                                           : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
-    result.PointSource.push_back(this->InputVertex[v]);
-    const double importance = this->Importance[v] / this->Scale;
-    result.Importance.push_back(
-      this->Importance[v] < Never ? (squared ? importance / this->Scale : importance) : -1.0);
-    if (this->BoundLimit >= 0.0)
+  }
+  // A distance (AveragePlane), or the square root of an area-weighted squared distance: divided
+  // by Scale once or twice (Scale² underflows for the largest meshes).
+  const bool squared = this->Options.Measure == ImportanceMeasure::Quadric;
+  const bool bounded = this->BoundLimit >= 0.0;
+  std::vector<double> importance(used.size()), types(used.size()), distance(bounded ? used.size() : 0);
+  result.Report.MaximumError = bounded ? 0.0 : -1.0;
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    const std::int32_t v = used[i];
+    const double scaled = this->Importance[v] / this->Scale;
+    importance[i] = this->Importance[v] < Never ? (squared ? scaled / this->Scale : scaled) : -1.0;
+    types[i] = static_cast<double>(this->Types[v]);
+    if (bounded)
     {
-      result.PlaneDistance.push_back(this->Bound.Error(v) / this->Scale);
-      result.AchievedMaximumError = std::max(result.AchievedMaximumError, result.PlaneDistance.back());
+      distance[i] = this->Bound.Error(v) / this->Scale;
+      result.Report.MaximumError = std::max(result.Report.MaximumError, distance[i]);
     }
-    result.Types.push_back(this->Types[v]);
+  }
+  result.AddPointArray("Importance", std::move(importance));
+  result.AddPointArray("VertexType", std::move(types), NamedArray::Kind::Byte);
+  if (bounded)
+  {
+    result.AddPointArray("PlaneDistance", std::move(distance));
   }
   for (const std::int32_t t : kept)
   {
     result.TriangleSource.push_back(this->InputTriangle[t]);
   }
+  AddSurvivorSources(used, this->InputVertex, result);
+  result.FieldValues.emplace_back("Rounds", static_cast<double>(result.Rounds));
+  result.FieldValues.emplace_back("MovedPoints", static_cast<double>(result.MovedPoints));
 }
 
 } // namespace

@@ -2,7 +2,8 @@
 /**
  * @file ParallelDecimation.h
  * @brief Schroeder-style vertex decimation by half-edge collapse in rounds of super-independent
- * vertex sets (paper 001, Franc, ch. 5–6), on the shared collapse engine.
+ * vertex sets (Franc, "Methods for Polygonal Mesh Simplification", ch. 5–6), on the shared
+ * collapse engine.
  *
  * - Classification (§5.2): a vertex is simple (a closed fan, no sharp edge), boundary (an open
  *   fan), interior-edge (exactly two sharp edges), corner (one or three and more sharp edges, or a
@@ -51,8 +52,7 @@
 #ifndef MeshSimplification_ParallelDecimation_h
 #define MeshSimplification_ParallelDecimation_h
 
-#include "Execution.h"
-#include "TriangleMesh.h"
+#include "Simplification.h"
 
 #include <cstdint>
 #include <functional>
@@ -84,23 +84,17 @@ enum class ImportanceMeasure : std::uint8_t
   Quadric       // accumulated plane quadrics: the least error of the vertex's own half-edges
 };
 
-struct ParallelDecimationOptions
+/// The decimation's own settings; the target, locks, open borders and regions are the common
+/// ones (SimplificationOptions). A count is met within the target's Tolerance (2 % by default).
+struct ParallelDecimationOptions : SimplificationOptions
 {
-  /// Fraction of the usable triangles to remove; used when TargetTriangles < 0.
-  double TargetReduction = 0.9;
-  /// Number of triangles to keep; overrides TargetReduction when >= 0.
-  std::int64_t TargetTriangles = -1;
+  ParallelDecimationOptions() { this->Goal.Tolerance = 0.02; }
   /// An edge whose two triangles' normals differ by more than this (degrees) is sharp. 75 by
   /// default: at 60 the benchmark's RMS distance is 4 % (Quadric) and 3 % (AveragePlane) larger,
   /// at 90 the CAD fandisk loses creases under AveragePlane.
   double FeatureAngle = 75.0;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
-  /// Lock every boundary vertex.
-  bool PreserveBoundary = false;
-  /// Optional, one flag per input point: nonzero points are never removed; SharedPointLock
-  /// marks points shared with another piece, never joined by a new edge.
-  const std::uint8_t* LockedPoints = nullptr;
   /// Quadric by default: over the benchmark meshes its RMS distance is about half of
   /// AveragePlane's (which forgets the error of removed vertices, even accumulated).
   ImportanceMeasure Measure = ImportanceMeasure::Quadric;
@@ -123,38 +117,25 @@ struct ParallelDecimationOptions
   double BucketShare = 0.8;
   /// The share of the candidates, least important first, that one round considers.
   double RoundFraction = 0.1;
-  /// Error bound (< 0: none): no removal (or survivor move) puts a survivor farther than this
-  /// from the planes of the input triangles it stands for (PlaneDistanceBound); relative to the
-  /// bounding-box diagonal of the used points when RelativeError is set. With a bound the
-  /// filter stops, without raising its angles, when no removal within it is left.
-  double MaximumError = -1.0;
-  bool RelativeError = false;
   /// Called with the mesh and the vertices taken for each round before they are removed (for
   /// tests and diagnostics); may be empty.
   std::function<void(const CollapseMesh&, const std::vector<std::int32_t>&)> RoundObserver;
 };
 
-struct ParallelDecimationResult
+/**
+ * The decimation's output (SimplifiedMesh): each output point's source is its own input point
+ * (survivors keep their data); point arrays "Importance" (the final importance, -1 where the
+ * point can never be removed), "VertexType" (DecimationVertexType) and, under an error bound,
+ * "PlaneDistance" (the point's distance to its planes, input units; Report's MaximumError is the
+ * largest); field values "Rounds" and "MovedPoints".
+ */
+struct ParallelDecimationResult : SimplifiedMesh
 {
-  std::vector<double> Points;               // 3 per output point
-  std::vector<std::int32_t> Triangles;      // 3 per output triangle
-  std::vector<std::int32_t> PointSource;    // input point of each output point
-  std::vector<std::int32_t> TriangleSource; // input triangle of each output triangle
-  std::vector<double> Importance;           // per output point; -1 where it can never be removed
-  std::vector<DecimationVertexType> Types;  // per output point
-  std::int64_t UsableTriangles = 0;
-  std::int64_t TargetTriangles = 0;
-  std::int64_t NonFinitePoints = 0;
   std::int64_t Rounds = 0;
   /// Times FeatureAngle and MaximumNormalDeviation were raised by 15° because no vertex was
   /// removable under them before the target.
   std::int64_t Relaxations = 0;
-  bool StoppedEarly = false; // no removable vertex was left before the target
   std::int64_t MovedPoints = 0; // survivors MoveSurvivors moved
-  /// With MaximumError: each output point's distance to its planes, and the largest (input
-  /// units).
-  std::vector<double> PlaneDistance;
-  double AchievedMaximumError = 0.0;
 };
 
 /// Runs the decimation; the context's ParallelFor carries the threads. Returns false when

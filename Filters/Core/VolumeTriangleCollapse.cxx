@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace meshsimp
 {
@@ -134,6 +135,13 @@ private:
   void UpdateFanSums(const std::int32_t* vertices, int count, double sign);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
+  /// Evaluate's placements of a triangle's plan (v: its corners): onto corner k; along its
+  /// boundary edge (returns the edge's first corner); the strong-feature corner (-1: none); the
+  /// free placement of eq. (5)/(8).
+  void OntoCorner(const std::int32_t* v, int k, CollapsePlan& plan) const;
+  int OntoBoundaryEdge(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const;
+  int StrongFeatureCorner(const std::int32_t* v) const;
+  void PlaceFreely(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const;
   /// Per thread: the checks' marks and the updates' ring.
   struct Scratch
   {
@@ -180,7 +188,10 @@ private:
   /// the heap's rule, listing their kept vertices in Applied; those passed over are queued again.
   void CollapseBatch(std::int64_t target, std::int64_t tolerance, VolumeCollapseResult& result);
   int CountRemoved(const CollapsePlan& plan) const;
+  /// The prepared mesh in the engine with its locks, measured and queued; returns the count.
   std::int64_t Prepare(const TriangleMeshView& input, VolumeCollapseResult& result);
+  void MeasureAll();
+  void GatherInputPlanes();
   void QueueAll();
   bool CollapseToTarget(std::int64_t target, VolumeCollapseResult& result);
   /// Applies the plan (legal), with its eq. (5) cost; the updates around the kept vertex follow
@@ -192,6 +203,8 @@ private:
   /// first, while at least floor triangles stay. Returns whether any was made.
   bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
+  /// The outcome: why it stopped where it did, and the angle guard's note.
+  void Judge(VolumeCollapseResult& result) const;
 
   const VolumeCollapseOptions& Options;
   const ExecutionContext& Context;
@@ -216,6 +229,7 @@ private:
   CollapseHeap Heap;
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0; // MaximumError in normalised units; < 0: no bound
+  bool StoppedEarly = false; // no legal collapse was left before the target
   std::int64_t BatchLimit = 1;            // Options.BatchSize, at most BatchShare of the mesh
   std::vector<std::uint32_t> VertexMarks; // ClaimNeighbourhood's stamps
   std::uint32_t Stamp = 0;
@@ -395,11 +409,117 @@ void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbo
   }
 }
 
+void VolumeCollapser::OntoCorner(const std::int32_t* v, int k, CollapsePlan& plan) const
+{
+  // The kept corner goes first in the plan; weights follow the plan's vertex order.
+  plan.Vertices[0] = v[k];
+  plan.Vertices[1] = v[(k + 1) % 3];
+  plan.Vertices[2] = v[(k + 2) % 3];
+  plan.Position = this->Mesh.Point(v[k]);
+  plan.Weights[0] = 1.0;
+  plan.Weights[1] = plan.Weights[2] = 0.0;
+}
+
+int VolumeCollapser::OntoBoundaryEdge(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const
+{
+  // §3.5: an edge-boundary triangle collapses to ω v_i + (1 − ω) v_j minimising eq. (1).
+  // Returns i, the corner its boundary edge starts from.
+  const int interior = !this->Mesh.OnBoundary(v[0]) ? 0 : !this->Mesh.OnBoundary(v[1]) ? 1 : 2;
+  const int i = (interior + 1) % 3, j = (interior + 2) % 3;
+  const Vec3& pi = this->Mesh.Point(v[i]);
+  const Vec3& pj = this->Mesh.Point(v[j]);
+  const double omega = SegmentMinimum(q, pi, pj);
+  const int kept = omega >= 0.5 ? i : j;
+  this->OntoCorner(v, kept, plan);
+  plan.Position = pj + omega * (pi - pj);
+  plan.Weights[0] = kept == i ? omega : 1.0 - omega;
+  // The plan lists (kept, next, next-next); the other boundary vertex takes the rest.
+  const int other = kept == i ? j : i;
+  const int slot = v[(kept + 1) % 3] == v[other] ? 1 : 2;
+  plan.Weights[slot] = 1.0 - plan.Weights[0];
+  plan.Weights[3 - slot] = 0.0;
+  return i;
+}
+
+int VolumeCollapser::StrongFeatureCorner(const std::int32_t* v) const
+{
+  // Eq. (6)–(7): the corner of largest |K_v| when the triangle is a strong feature, else -1.
+  if (!(this->Options.FeatureCurvature > 0.0))
+  {
+    return -1;
+  }
+  const double areas = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
+  const double deficits = std::abs(this->Deficit[v[0]]) + std::abs(this->Deficit[v[1]]) + std::abs(this->Deficit[v[2]]);
+  const double meanArea = this->TotalArea / static_cast<double>(this->Mesh.NumberOfAliveTriangles());
+  if (!(areas > 0.0 && deficits / areas * meanArea > this->Options.FeatureCurvature))
+  {
+    return -1;
+  }
+  int strongest = 0;
+  double best = -1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double curvature = this->VertexArea[v[k]] > 0.0 ? std::abs(this->Deficit[v[k]]) / this->VertexArea[v[k]] : 0.0;
+    if (curvature > best)
+    {
+      best = curvature;
+      strongest = k;
+    }
+  }
+  return strongest;
+}
+
+void VolumeCollapser::PlaceFreely(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const
+{
+  // Eq. (8): the blend weighted by the corners' adjacent areas; eq. (5)'s minimiser where Q̄ is
+  // well conditioned, and along its well-conditioned directions only where it is not (a flat
+  // region keeps the blend, a crease keeps the blend's place along it).
+  Vec3 x;
+  const Vec3& p0 = this->Mesh.Point(v[0]);
+  const Vec3& p1 = this->Mesh.Point(v[1]);
+  const Vec3& p2 = this->Mesh.Point(v[2]);
+  const double longest = std::max({ (p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm() });
+  const Vec3 centroid = (p0 + p1 + p2) / 3.0;
+  const double sum = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
+  const Vec3 blend = sum > 0.0
+    ? Vec3((this->VertexArea[v[0]] * p0 + this->VertexArea[v[1]] * p1 + this->VertexArea[v[2]] * p2) / sum)
+    : centroid;
+  MinimizeQuadricNear(q, blend, x);
+  if ((x - centroid).norm() > 2.0 * longest)
+  {
+    x = blend; // a far minimiser of a barely conditioned Q̄ would make a spike
+  }
+  // Attribute weights: barycentric coordinates of x projected onto the triangle, clamped.
+  const Vec3 n = (p1 - p0).cross(p2 - p0);
+  const double n2 = n.squaredNorm();
+  double w[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+  if (n2 > 0.0)
+  {
+    w[0] = std::max(0.0, n.dot((p1 - x).cross(p2 - x)) / n2);
+    w[1] = std::max(0.0, n.dot((p2 - x).cross(p0 - x)) / n2);
+    w[2] = std::max(0.0, n.dot((p0 - x).cross(p1 - x)) / n2);
+    const double total = w[0] + w[1] + w[2];
+    for (double& wk : w)
+    {
+      wk = total > 0.0 ? wk / total : 1.0 / 3.0;
+    }
+  }
+  const int kept = w[0] >= w[1] && w[0] >= w[2] ? 0 : w[1] >= w[2] ? 1 : 2;
+  this->OntoCorner(v, kept, plan);
+  plan.Position = x;
+  for (int i = 0; i < 3; ++i)
+  {
+    plan.Weights[i] = w[(kept + i) % 3];
+  }
+}
+
 VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
 {
+  // The plan of triangle t by the paper's rules, in order: onto its one locked corner, onto its
+  // one boundary corner, along its boundary edge, onto its strongest feature corner, else the
+  // free placement; then a cheaper edge instead where one is (EdgeCollapses).
   Candidate candidate;
-  const std::int32_t* tri = this->Mesh.Triangle(t);
-  const std::int32_t v[3] = { tri[0], tri[1], tri[2] };
+  const std::int32_t* v = this->Mesh.Triangle(t);
   int boundaryCount = 0, lockedCount = 0, locked = -1;
   for (int k = 0; k < 3; ++k)
   {
@@ -418,122 +538,31 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   Quadric q;
   EdgeNeighbours across;
   this->ConstrictionMatrix(t, q, this->Options.EdgeCollapses ? &across : nullptr);
-
-  // The kept corner goes first in the plan; weights follow the plan's vertex order.
-  auto ontoCorner = [&](int k) {
-    CollapsePlan& plan = candidate.Plan;
-    plan.Vertices[0] = v[k];
-    plan.Vertices[1] = v[(k + 1) % 3];
-    plan.Vertices[2] = v[(k + 2) % 3];
-    plan.Position = this->Mesh.Point(v[k]);
-    plan.Weights[0] = 1.0;
-    plan.Weights[1] = plan.Weights[2] = 0.0;
-  };
   CollapsePlan& plan = candidate.Plan;
   plan.Count = 3;
   int boundaryEdge = -1; // an edge-boundary triangle's edge between its boundary corners
+  const int feature = lockedCount == 0 && boundaryCount == 0 ? this->StrongFeatureCorner(v) : -1;
   if (lockedCount == 1)
   {
-    ontoCorner(locked);
+    this->OntoCorner(v, locked, plan);
   }
   else if (boundaryCount == 1)
   {
     // §3.5: a vertex-boundary triangle collapses onto its boundary vertex.
-    const int k = this->Mesh.OnBoundary(v[0]) ? 0 : this->Mesh.OnBoundary(v[1]) ? 1 : 2;
-    ontoCorner(k);
+    this->OntoCorner(v, this->Mesh.OnBoundary(v[0]) ? 0 : this->Mesh.OnBoundary(v[1]) ? 1 : 2, plan);
   }
   else if (boundaryCount == 2)
   {
-    // §3.5: an edge-boundary triangle collapses to ω v_i + (1 − ω) v_j minimising eq. (1).
-    const int interior = !this->Mesh.OnBoundary(v[0]) ? 0 : !this->Mesh.OnBoundary(v[1]) ? 1 : 2;
-    const int i = (interior + 1) % 3, j = (interior + 2) % 3;
-    boundaryEdge = i;
-    const Vec3& pi = this->Mesh.Point(v[i]);
-    const Vec3& pj = this->Mesh.Point(v[j]);
-    const double omega = SegmentMinimum(q, pi, pj);
-    const int kept = omega >= 0.5 ? i : j;
-    ontoCorner(kept);
-    plan.Position = pj + omega * (pi - pj);
-    plan.Weights[0] = kept == i ? omega : 1.0 - omega;
-    // The plan lists (kept, next, next-next); the other boundary vertex takes the rest.
-    const int other = kept == i ? j : i;
-    const int slot = v[(kept + 1) % 3] == v[other] ? 1 : 2;
-    plan.Weights[slot] = 1.0 - plan.Weights[0];
-    plan.Weights[3 - slot] = 0.0;
+    boundaryEdge = this->OntoBoundaryEdge(v, q, plan);
+  }
+  else if (feature >= 0)
+  {
+    this->OntoCorner(v, feature, plan);
   }
   else
   {
-    // Eq. (6)–(7): a strong feature collapses onto its corner of largest |K_v|.
-    bool feature = false;
-    if (this->Options.FeatureCurvature > 0.0)
-    {
-      const double areas = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
-      const double deficits =
-        std::abs(this->Deficit[v[0]]) + std::abs(this->Deficit[v[1]]) + std::abs(this->Deficit[v[2]]);
-      const double meanArea = this->TotalArea / static_cast<double>(this->Mesh.NumberOfAliveTriangles());
-      feature = areas > 0.0 && deficits / areas * meanArea > this->Options.FeatureCurvature;
-    }
-    if (feature)
-    {
-      int strongest = 0;
-      double best = -1.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        const double curvature = this->VertexArea[v[k]] > 0.0
-          ? std::abs(this->Deficit[v[k]]) / this->VertexArea[v[k]]
-          : 0.0;
-        if (curvature > best)
-        {
-          best = curvature;
-          strongest = k;
-        }
-      }
-      ontoCorner(strongest);
-    }
-    else
-    {
-      Vec3 x;
-      const Vec3& p0 = this->Mesh.Point(v[0]);
-      const Vec3& p1 = this->Mesh.Point(v[1]);
-      const Vec3& p2 = this->Mesh.Point(v[2]);
-      const double longest = std::max({ (p1 - p0).norm(), (p2 - p1).norm(), (p0 - p2).norm() });
-      const Vec3 centroid = (p0 + p1 + p2) / 3.0;
-      // Eq. (8): the blend weighted by the corners' adjacent areas; eq. (5)'s minimiser where
-      // Q̄ is well conditioned, and along its well-conditioned directions only where it is not
-      // (a flat region keeps the blend, a crease keeps the blend's place along it).
-      const double sum = this->VertexArea[v[0]] + this->VertexArea[v[1]] + this->VertexArea[v[2]];
-      const Vec3 blend = sum > 0.0
-        ? Vec3((this->VertexArea[v[0]] * p0 + this->VertexArea[v[1]] * p1 + this->VertexArea[v[2]] * p2) / sum)
-        : centroid;
-      MinimizeQuadricNear(q, blend, x);
-      if ((x - centroid).norm() > 2.0 * longest)
-      {
-        x = blend; // a far minimiser of a barely conditioned Q̄ would make a spike
-      }
-      // Attribute weights: barycentric coordinates of x projected onto the triangle, clamped.
-      const Vec3 n = (p1 - p0).cross(p2 - p0);
-      const double n2 = n.squaredNorm();
-      double w[3] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
-      if (n2 > 0.0)
-      {
-        w[0] = std::max(0.0, n.dot((p1 - x).cross(p2 - x)) / n2);
-        w[1] = std::max(0.0, n.dot((p2 - x).cross(p0 - x)) / n2);
-        w[2] = std::max(0.0, n.dot((p0 - x).cross(p1 - x)) / n2);
-        const double sum = w[0] + w[1] + w[2];
-        for (double& wk : w)
-        {
-          wk = sum > 0.0 ? wk / sum : 1.0 / 3.0;
-        }
-      }
-      const int kept = w[0] >= w[1] && w[0] >= w[2] ? 0 : w[1] >= w[2] ? 1 : 2;
-      ontoCorner(kept);
-      candidate.FreePlacement = true;
-      plan.Position = x;
-      for (int i = 0; i < 3; ++i)
-      {
-        plan.Weights[i] = w[(kept + i) % 3];
-      }
-    }
+    this->PlaceFreely(v, q, plan);
+    candidate.FreePlacement = true;
   }
   candidate.Q = q;
   candidate.Cost = q.Evaluate(plan.Position); // eq. (5)
@@ -908,55 +937,46 @@ int VolumeCollapser::CountRemoved(const CollapsePlan& plan) const
 
 std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeCollapseResult& result)
 {
-  // The compact copy of the usable input, in normalised coordinates, with its locks, geometry,
-  // quadrics and first costs.
-  CompactMesh compact = MakeCompactMesh(input, this->Context);
-  result.NonFinitePoints = compact.NonFinitePoints;
-  this->InputVertex = std::move(compact.InputVertex);
-  this->InputTriangle = std::move(compact.InputTriangle);
-  const std::int64_t usable = static_cast<std::int64_t>(this->InputTriangle.size());
-  result.UsableTriangles = usable;
-  const std::int64_t target = this->Options.TargetTriangles >= 0
-    ? std::min(this->Options.TargetTriangles, usable)
-    : static_cast<std::int64_t>(
-        std::llround(static_cast<double>(usable) * (1.0 - std::min(1.0, std::max(0.0, this->Options.TargetReduction)))));
-  result.TargetTriangles = target;
-
-  // Normalised coordinates (box centred at the origin, diagonal 1) keep the sixth and eighth
-  // powers of lengths in the costs within range.
-  this->Origin = compact.Centre();
-  const double diagonal = compact.Diagonal();
-  this->Diagonal = diagonal > 0.0 ? diagonal : 1.0;
-  this->Scale = 1.0 / this->Diagonal;
-  for (Vec3& p : compact.Points)
-  {
-    p = (p - this->Origin) * this->Scale;
-  }
-  this->Mesh.Build(std::move(compact), this->Options.BoundaryCornerAngle, this->Context);
-  if (this->Options.MaximumError >= 0.0)
+  // The usable input in normalised coordinates (box centred at the origin, diagonal 1, which
+  // keeps the sixth and eighth powers of lengths in the costs within range), in the engine with
+  // its locks; then its geometry, quadrics and first costs.
+  PreparedMesh prepared = PrepareMesh(input, this->Options, Normalization::CentreAndDiagonal, this->Context);
+  result.Report = prepared.Report();
+  this->InputVertex = std::move(prepared.Mesh.InputVertex);
+  this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
+  this->Origin = prepared.Origin;
+  this->Diagonal = prepared.Diagonal > 0.0 ? prepared.Diagonal : 1.0;
+  this->Scale = prepared.Scale;
+  this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
+  this->Mesh.SetRegions(std::move(prepared.Regions));
+  if (prepared.Bound >= 0.0)
   {
     this->Bound.Build(this->Mesh);
-    this->BoundLimit = this->Options.MaximumError * (this->Options.RelativeError ? 1.0 : this->Scale);
+    this->BoundLimit = prepared.Bound;
   }
   // No triangle's smallest angle exceeds 60°: a larger guard (or an infinite one, which
   // halving never lowers) would only refuse every collapse.
   this->GuardAngle = std::min(60.0, std::max(0.0, this->Options.MinimumAngle));
   result.FinalMinimumAngle = this->GuardAngle;
   this->Mesh.SetMinimumAngle(this->GuardAngle);
-  const std::int32_t n = this->Mesh.NumberOfPoints();
-  const std::int32_t m = this->Mesh.NumberOfTriangles();
-  for (std::int32_t v = 0; v < n; ++v)
+  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
   {
-    if (this->Mesh.Class(v) == VertexClass::Corner ||
-      (this->Options.PreserveBoundary && this->Mesh.OnBoundary(v)) ||
-      (this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]]))
+    if (prepared.Locks[v] || this->Mesh.Class(v) == VertexClass::Corner)
     {
-      const bool shared =
-        this->Options.LockedPoints && this->Options.LockedPoints[this->InputVertex[v]] == SharedPointLock;
-      this->Mesh.Lock(v, shared);
+      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock);
     }
   }
+  this->MeasureAll();
+  this->QueueAll();
+  return prepared.TargetTriangles;
+}
 
+void VolumeCollapser::MeasureAll()
+{
+  // Every triangle's geometry and quadric, every vertex's sums, and the input planes of the
+  // surface term: concurrently, with work estimates in nanoseconds (ExecutionContext), measured.
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
   this->Normals.resize(m);
   this->Areas.resize(m);
   this->Angles.resize(3 * static_cast<std::size_t>(m));
@@ -974,7 +994,7 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
     {
       this->UpdateGeometry(static_cast<std::int32_t>(t));
     }
-  }, 150 * static_cast<std::int64_t>(m)); // work in nanoseconds (ExecutionContext), measured
+  }, 150 * static_cast<std::int64_t>(m));
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
@@ -997,27 +1017,31 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   }
   if (this->Options.SurfaceErrorWeight > 0.0)
   {
-    // Garland–Heckbert quadrics: each vertex starts with the planes of its input triangles,
-    // weighted by area. The mean area squared gives the term the volume error's units (length⁸).
-    const double meanArea = this->TotalArea / static_cast<double>(std::max<std::int32_t>(1, m));
-    this->SurfaceScale = this->Options.SurfaceErrorWeight * meanArea * meanArea;
-    this->InputPlanes.assign(n, Quadric());
-    for (std::int32_t t = 0; t < m; ++t)
+    this->GatherInputPlanes();
+  }
+}
+
+void VolumeCollapser::GatherInputPlanes()
+{
+  // Garland–Heckbert quadrics: each vertex starts with the planes of its input triangles,
+  // weighted by area. The mean area squared gives the term the volume error's units (length⁸).
+  const std::int32_t m = this->Mesh.NumberOfTriangles();
+  const double meanArea = this->TotalArea / static_cast<double>(std::max<std::int32_t>(1, m));
+  this->SurfaceScale = this->Options.SurfaceErrorWeight * meanArea * meanArea;
+  this->InputPlanes.assign(this->Mesh.NumberOfPoints(), Quadric());
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    if (this->Areas[t] > 0.0)
     {
-      if (this->Areas[t] > 0.0)
+      const Vec3& normal = this->Normals[t];
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), this->Areas[t]);
+      for (int k = 0; k < 3; ++k)
       {
-        const Vec3& normal = this->Normals[t];
-        const std::int32_t* tri = this->Mesh.Triangle(t);
-        const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), this->Areas[t]);
-        for (int k = 0; k < 3; ++k)
-        {
-          this->InputPlanes[tri[k]] += plane;
-        }
+        this->InputPlanes[tri[k]] += plane;
       }
     }
   }
-  this->QueueAll();
-  return target;
 }
 
 void VolumeCollapser::QueueAll()
@@ -1063,7 +1087,7 @@ void VolumeCollapser::Apply(const CollapsePlan& plan, double cost, VolumeCollaps
     this->InputPlanes[kept] += this->InputPlanes[plan.Vertices[i]];
   }
   this->UpdateFanSums(plan.Vertices, plan.Count, -1.0);
-  this->Mesh.Apply(plan, this->Options.KeepUndo);
+  this->Mesh.Apply(plan, false);
   this->VertexError[kept] = error;
   result.SquareVolumeError += cost;
 }
@@ -1205,7 +1229,8 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
 bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult& result)
 {
   // Step 5–6 of §3.6: collapse the cheapest triangle until the target is met.
-  const std::int64_t tolerance = std::max<std::int64_t>(1, target / 100); // a closed mesh has an even count
+  // A closed mesh has an even count: one triangle of slack at least.
+  const std::int64_t tolerance = std::max<std::int64_t>(1, this->Options.Goal.Slack(target));
   const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
   std::int64_t steps = 0;
   while (this->Mesh.NumberOfAliveTriangles() > target)
@@ -1228,7 +1253,7 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
       {
         continue; // their neighbourhoods are queued again
       }
-      result.StoppedEarly = true; // with a bound, simply the end
+      this->StoppedEarly = true; // with a bound, simply the end
       break;
     }
     // A batch of the cheapest triangles whose neighbourhoods are disjoint: evaluated and checked
@@ -1258,7 +1283,8 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
 
 void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult& result) const
 {
-  // The surviving triangles and their points, in the compact order, back in input coordinates.
+  // The surviving triangles and their points, in the compact order, back in input coordinates;
+  // each point's sources from the collapse records.
   std::vector<std::int32_t> used, kept;
   this->Mesh.Surviving(used, result.Triangles, kept);
   // Error units: length⁸ (eq. 4–5). Beyond about 1e38 that power overflows; a zero error stays
@@ -1271,41 +1297,63 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
     const Vec3 p = this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale + this->Origin)
                                   : input.Point(this->InputVertex[v]);
     result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
-    result.PointSource.push_back(this->InputVertex[v]);
-    result.PointError.push_back(inInputUnits(this->VertexError[v]));
-    if (this->BoundLimit >= 0.0)
+  }
+  std::vector<double> pointError(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    pointError[i] = inInputUnits(this->VertexError[used[i]]);
+  }
+  result.AddPointArray("SquareVolumeError", std::move(pointError));
+  if (this->BoundLimit >= 0.0)
+  {
+    std::vector<double> distance(used.size());
+    result.Report.MaximumError = 0.0;
+    for (std::size_t i = 0; i < used.size(); ++i)
     {
-      result.PlaneDistance.push_back(this->Bound.Error(v) * this->Diagonal);
-      result.AchievedMaximumError = std::max(result.AchievedMaximumError, result.PlaneDistance.back());
+      distance[i] = this->Bound.Error(used[i]) * this->Diagonal;
+      result.Report.MaximumError = std::max(result.Report.MaximumError, distance[i]);
     }
+    result.AddPointArray("PlaneDistance", std::move(distance));
   }
   for (const std::int32_t t : kept)
   {
     result.TriangleSource.push_back(this->InputTriangle[t]);
   }
-  result.Records = this->Mesh.Records();
-  for (CollapseRecord& record : result.Records)
-  {
-    record.Kept = this->InputVertex[record.Kept];
-    record.KeptPosition = record.KeptPosition / this->Scale + this->Origin;
-    record.NewPosition = record.NewPosition / this->Scale + this->Origin;
-    for (std::int32_t& r : record.Removed)
-    {
-      r = r >= 0 ? this->InputVertex[r] : -1;
-    }
-  }
+  AddCollapseSources(this->Mesh.Records(), used, this->InputVertex, result);
   result.SquareVolumeError = inInputUnits(result.SquareVolumeError);
+  result.FieldValues.emplace_back("SquareVolumeError", result.SquareVolumeError);
+}
+
+void VolumeCollapser::Judge(VolumeCollapseResult& result) const
+{
+  // Why the count is where it is: the reason first, then what was changed to get there.
+  Outcome& report = result.Report;
+  if (this->StoppedEarly && report.Stop == StopReason::TargetMet && this->BoundLimit < 0.0)
+  {
+    report.Stop = StopReason::NothingRemovable;
+    report.Reason = "no collapse is left that keeps the mesh valid";
+  }
+  if (result.FinalMinimumAngle < this->Options.MinimumAngle)
+  {
+    std::ostringstream note;
+    note << "the angle guard refused every collapse left before the target: lowered from "
+         << this->Options.MinimumAngle << " to " << result.FinalMinimumAngle << " degrees";
+    report.Notes.push_back(note.str());
+  }
 }
 
 bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& result)
 {
   result = VolumeCollapseResult();
   const std::int64_t target = this->Prepare(input, result);
-  if (!this->Context.Report(0.1) || !this->CollapseToTarget(target, result))
+  const bool collapsing = result.Report.Stop != StopReason::AllLocked;
+  if (!this->Context.Report(0.1) || (collapsing && !this->CollapseToTarget(target, result)))
   {
+    result.Report.Stop = StopReason::Aborted;
     return false;
   }
   this->Output(input, result);
+  this->Judge(result);
   return this->Context.Report(1.0);
 }
 

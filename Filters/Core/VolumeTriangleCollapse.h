@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file VolumeTriangleCollapse.h
- * @brief Triangle-collapse simplification ordered by the squared volume error of paper 004
- * (Zhou, Zhang, Cheng: "Mesh simplification by volume variation with feature preserving").
+ * @brief Triangle-collapse simplification ordered by the squared volume error of Zhou, Zhang
+ * and Cheng, "Mesh simplification by volume variation with feature preserving".
  *
  * Each step collapses the triangle of least constriction error into one vertex, removing it and
  * its (up to three) edge neighbours, on the shared collapse engine (CollapseMesh) and its checks.
@@ -86,9 +86,7 @@
 #ifndef MeshSimplification_VolumeTriangleCollapse_h
 #define MeshSimplification_VolumeTriangleCollapse_h
 
-#include "CollapseMesh.h"
-#include "Execution.h"
-#include "TriangleMesh.h"
+#include "Simplification.h"
 
 #include <cstdint>
 #include <vector>
@@ -96,20 +94,14 @@
 namespace meshsimp
 {
 
-struct VolumeCollapseOptions
+/// The volume collapse's own settings; the target, locks, open borders and regions are the
+/// common ones (SimplificationOptions). A count is met within the target's Tolerance (1 % by
+/// default, or one triangle).
+struct VolumeCollapseOptions : SimplificationOptions
 {
-  /// Fraction of the usable triangles to remove; used when TargetTriangles < 0.
-  double TargetReduction = 0.9;
-  /// Number of triangles to keep; overrides TargetReduction when >= 0.
-  std::int64_t TargetTriangles = -1;
   /// Threshold of the dimensionless Gauss curvature K_t · (mean triangle area); <= 0 disables
   /// the feature rule.
   double FeatureCurvature = 0.3;
-  /// Lock every boundary vertex (boundary corners are always locked).
-  bool PreserveBoundary = false;
-  /// Optional, one flag per input point: nonzero points are locked (never removed or moved);
-  /// SharedPointLock marks points shared with another piece, never joined by a new edge.
-  const std::uint8_t* LockedPoints = nullptr;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
   /// The engine's angle guard (degrees, at most 60; 0 turns it off): no collapse makes a new
@@ -130,38 +122,21 @@ struct VolumeCollapseOptions
   /// and, once collapsed in key order, updated on the context's threads. 1 keeps the strict heap
   /// order. The result depends on this, never on the thread count.
   int BatchSize = 64;
-  /// Keep what undoing each collapse needs in the result's records (progressive meshes).
-  bool KeepUndo = false;
-  /// Error bound (< 0: none): no collapse puts a point farther than this from the planes of the
-  /// input triangles it stands for (PlaneDistanceBound); relative to the bounding-box diagonal
-  /// of the used points when RelativeError is set. With a bound the filter stops, without
-  /// lowering its angle guard, when no collapse within it is left.
-  double MaximumError = -1.0;
-  bool RelativeError = false;
 };
 
-struct VolumeCollapseResult
+/**
+ * The collapse's output (SimplifiedMesh): each output point's sources are the input points
+ * merged into it, with the weights of the placements along the way (the surviving point
+ * first); point arrays "SquareVolumeError" (the squared-volume error accumulated at the point,
+ * input units) and, under an error bound, "PlaneDistance" (the point's distance to its planes,
+ * input units; Report's MaximumError is the largest).
+ */
+struct VolumeCollapseResult : SimplifiedMesh
 {
-  std::vector<double> Points;              // 3 per output point, input coordinates
-  std::vector<std::int32_t> Triangles;     // 3 per output triangle
-  std::vector<std::int32_t> PointSource;   // input point of each output point
-  std::vector<std::int32_t> TriangleSource; // input triangle each output triangle descends from
-  std::vector<double> PointError;          // squared-volume error accumulated at each output point
-  /// Every collapse in order, in input point ids; InterpolateAttributes replays their weights
-  /// over a table of input point values.
-  std::vector<CollapseRecord> Records;
-  double SquareVolumeError = 0.0;          // Σ eq. (5) over the collapses (the paper's ΔV)
-  std::int64_t UsableTriangles = 0;        // input triangles the algorithm could use
-  std::int64_t TargetTriangles = 0;
-  std::int64_t NonFinitePoints = 0;
-  bool StoppedEarly = false;               // no legal collapse was left before the target
+  double SquareVolumeError = 0.0; // Σ eq. (5) over the collapses (the paper's ΔV), input units
   /// The angle guard at the end: below MinimumAngle when it refused every collapse left before
   /// the target and was lowered (halved, 0 below 2°) to go on.
   double FinalMinimumAngle = 0.0;
-  /// With MaximumError: each output point's distance to its planes, and the largest (input
-  /// units).
-  std::vector<double> PlaneDistance;
-  double AchievedMaximumError = 0.0;
 };
 
 /// Runs the simplification. Returns false when aborted through the context's progress.

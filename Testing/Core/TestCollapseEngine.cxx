@@ -590,7 +590,7 @@ void PlaneBoundMeasuresMergedPlanes()
 meshsimp::VolumeCollapseResult Collapse(const Mesh& mesh, std::int64_t target)
 {
   meshsimp::VolumeCollapseOptions options;
-  options.TargetTriangles = target;
+  options.Goal.SetTriangleCount(target);
   meshsimp::VolumeCollapseResult result;
   CHECK(meshsimp::VolumeTriangleCollapse(mesh.View(), options, result));
   return result;
@@ -602,7 +602,7 @@ void VolumeCollapseKeepsSphereClosed()
   const meshsimp::VolumeCollapseResult result = Collapse(sphere, 307);
   const std::int64_t count = static_cast<std::int64_t>(result.Triangles.size() / 3);
   CHECK(std::abs(count - 307) <= 3);
-  CHECK(!result.StoppedEarly);
+  CHECK(!StoppedEarly(result));
   Mesh out;
   out.Points = result.Points;
   out.Triangles = result.Triangles;
@@ -628,18 +628,21 @@ void VolumeCollapseKeepsSphereClosed()
   const double sphereVolume = 4.0 / 3.0 * 3.14159265358979323846 / 8.0;
   CHECK(std::abs(volume / sphereVolume - 1.0) < 0.05);
   CHECK(result.SquareVolumeError > 0.0);
-  CHECK(result.PointError.size() == result.PointSource.size());
-  // The records speak input ids and coordinates (the sphere fills [0, 1]³; new points may
-  // stand a little outside it).
-  CHECK(!result.Records.empty());
-  for (const meshsimp::CollapseRecord& record : result.Records)
+  CHECK(static_cast<std::int64_t>(result.PointArray("SquareVolumeError")->size()) == result.NumberOfPoints());
+  // The sources speak input ids: every input point is merged into exactly one output point,
+  // with weights that sum to one (the survivor first, among them).
+  std::vector<int> merged(sphere.Points.size() / 3, 0);
+  for (std::int64_t p = 0; p < result.NumberOfPoints(); ++p)
   {
-    CHECK(record.Kept >= 0 && record.Kept < static_cast<std::int32_t>(sphere.Points.size() / 3));
-    for (const Eigen::Vector3d& p : { record.KeptPosition, record.NewPosition })
+    double sum = 0.0;
+    for (std::int32_t i = result.SourceOffsets[p]; i < result.SourceOffsets[p + 1]; ++i)
     {
-      CHECK(p.minCoeff() > -0.05 && p.maxCoeff() < 1.05);
+      ++merged[result.SourcePoints[i]];
+      sum += result.SourceWeights[i];
     }
+    CHECK(std::abs(sum - 1.0) < 1e-9);
   }
+  CHECK(std::all_of(merged.begin(), merged.end(), [](int m) { return m == 1; }));
 }
 
 void VolumeCollapseBatchesDoNotDependOnThreads()
@@ -650,7 +653,7 @@ void VolumeCollapseBatchesDoNotDependOnThreads()
   const Mesh sphere = Sphere(48); // 27 648 triangles: batches of up to 27
   auto run = [&](const meshsimp::ExecutionContext& context, int batchSize) {
     meshsimp::VolumeCollapseOptions options;
-    options.TargetTriangles = 2765;
+    options.Goal.SetTriangleCount(2765);
     options.BatchSize = batchSize;
     meshsimp::VolumeCollapseResult result;
     CHECK(meshsimp::VolumeTriangleCollapse(sphere.View(), options, result, context));
@@ -664,7 +667,8 @@ void VolumeCollapseBatchesDoNotDependOnThreads()
   {
     const meshsimp::VolumeCollapseResult threaded = run(context, 64);
     CHECK(threaded.Points == serial.Points && threaded.Triangles == serial.Triangles);
-    CHECK(threaded.PointError == serial.PointError && threaded.SquareVolumeError == serial.SquareVolumeError);
+    CHECK(*threaded.PointArray("SquareVolumeError") == *serial.PointArray("SquareVolumeError"));
+    CHECK(threaded.SquareVolumeError == serial.SquareVolumeError && threaded.SourceWeights == serial.SourceWeights);
   }
   for (const meshsimp::VolumeCollapseResult* result : { &serial, &strict })
   {
@@ -679,20 +683,17 @@ void VolumeCollapseBatchesDoNotDependOnThreads()
   CHECK(strict.Points != serial.Points);
 
   // The same on the other paths a batch takes: a fan's centre (its sums kept by differences),
-  // locked points and a kept boundary, an error bound with undo records.
+  // locked points and a kept boundary, an error bound.
   std::vector<std::uint8_t> locks(101 * 101, 0);
   for (std::size_t i = 0; i < locks.size(); i += 3)
   {
     locks[i] = 1;
   }
   meshsimp::VolumeCollapseOptions fanOptions, gridOptions, boundOptions;
-  fanOptions.TargetTriangles = 5000;
+  fanOptions.Goal.SetTriangleCount(5000);
   gridOptions.LockedPoints = locks.data();
   gridOptions.PreserveBoundary = true;
-  boundOptions.MaximumError = 0.01;
-  boundOptions.RelativeError = true;
-  boundOptions.TargetReduction = 1.0;
-  boundOptions.KeepUndo = true;
+  boundOptions.Goal.SetMaximumError(0.01, true);
   const std::pair<Mesh, meshsimp::VolumeCollapseOptions> cases[] = { { Fan(10000, true), fanOptions },
     { Grid(100), gridOptions }, { Sphere(40), boundOptions } };
   for (const auto& [mesh, options] : cases)
@@ -702,7 +703,8 @@ void VolumeCollapseBatchesDoNotDependOnThreads()
     CHECK(meshsimp::VolumeTriangleCollapse(
       mesh.View(), options, together, meshsimp_test::Chunked<meshsimp::ExecutionContext>(2, 1)));
     CHECK(together.Points == alone.Points && together.Triangles == alone.Triangles);
-    CHECK(together.Records.size() == alone.Records.size() && together.PlaneDistance == alone.PlaneDistance);
+    CHECK(together.SourcePoints == alone.SourcePoints && together.PointArrays.size() == alone.PointArrays.size());
+    CHECK(together.PointArrays.back().Values == alone.PointArrays.back().Values);
     CHECK(alone.Triangles.size() < mesh.Triangles.size() / 2);
   }
 }
@@ -738,7 +740,7 @@ void VolumeCollapseKeepsTubeOnItsCylinder()
   // collapses alone points move inside it.
   const Mesh tube = Tube(32, 33); // 2048 triangles
   meshsimp::VolumeCollapseOptions options;
-  options.TargetTriangles = 1024;
+  options.Goal.SetTriangleCount(1024);
   options.PreserveBoundary = true;
   meshsimp::VolumeCollapseResult withEdges, trianglesOnly;
   CHECK(meshsimp::VolumeTriangleCollapse(tube.View(), options, withEdges));
@@ -774,7 +776,7 @@ void VolumeCollapseSurfaceTermKeepsSurfaceClose()
   // the default weight and 0.0081 without (bounding-box diagonal 1.37).
   const Mesh elephant = ReadData("elephant.off");
   meshsimp::VolumeCollapseOptions options;
-  options.TargetReduction = 0.7;
+  options.Goal.SetReduction(0.7);
   meshsimp::VolumeCollapseResult withTerm, volumeOnly;
   CHECK(meshsimp::VolumeTriangleCollapse(elephant.View(), options, withTerm));
   options.SurfaceErrorWeight = 0.0;
@@ -785,30 +787,19 @@ void VolumeCollapseSurfaceTermKeepsSurfaceClose()
 }
 
 /// The largest distance from an output point to the planes of the input triangles with a corner
-/// among the input points merged into it (found from the records), checked independently of
+/// among the input points merged into it (its sources), checked independently of
 /// PlaneDistanceBound; for closed inputs (no boundary planes).
 double LargestPlaneDistance(const Mesh& input, const meshsimp::VolumeCollapseResult& result)
 {
-  std::vector<std::int32_t> group(input.Points.size() / 3);
-  std::iota(group.begin(), group.end(), 0);
-  const std::function<std::int32_t(std::int32_t)> find = [&](std::int32_t v) {
-    return group[v] == v ? v : group[v] = find(group[v]);
-  };
-  for (const meshsimp::CollapseRecord& record : result.Records)
+  std::map<std::int32_t, Eigen::Vector3d> outputPoint; // input point -> its output point
+  for (std::int64_t p = 0; p < result.NumberOfPoints(); ++p)
   {
-    for (const std::int32_t removed : record.Removed)
+    for (std::int32_t i = result.SourceOffsets[p]; i < result.SourceOffsets[p + 1]; ++i)
     {
-      if (removed >= 0)
-      {
-        group[find(removed)] = find(record.Kept);
-      }
+      outputPoint[result.SourcePoints[i]] = Eigen::Vector3d(&result.Points[3 * p]);
     }
   }
-  std::map<std::int32_t, Eigen::Vector3d> outputPoint; // group -> output point
-  for (std::size_t p = 0; p < result.PointSource.size(); ++p)
-  {
-    outputPoint[find(result.PointSource[p])] = Eigen::Vector3d(&result.Points[3 * p]);
-  }
+  const auto find = [](std::int32_t v) { return v; };
   double largest = 0.0;
   for (std::size_t t = 0; t < input.Triangles.size(); t += 3)
   {
@@ -833,8 +824,6 @@ void VolumeCollapseKeepsErrorBound()
   // far as the bound lets it: every output point within the bound of its input planes.
   const Mesh elephant = ReadData("elephant.off");
   meshsimp::VolumeCollapseOptions options;
-  options.TargetTriangles = 0;
-  options.RelativeError = true;
   Eigen::Vector3d lower = Eigen::Vector3d::Constant(1e300), upper = -lower;
   for (std::size_t i = 0; i < elephant.Points.size(); i += 3)
   {
@@ -844,14 +833,14 @@ void VolumeCollapseKeepsErrorBound()
   std::size_t previous = elephant.Triangles.size() / 3;
   for (const double bound : { 0.002, 0.01 })
   {
-    options.MaximumError = bound;
+    options.Goal.SetMaximumError(bound, true);
     meshsimp::VolumeCollapseResult result;
     CHECK(meshsimp::VolumeTriangleCollapse(elephant.View(), options, result));
     const double absolute = bound * (upper - lower).norm(), count = static_cast<double>(result.Triangles.size() / 3);
-    CHECK(result.StoppedEarly);
+    CHECK(result.Report.Stop == meshsimp::StopReason::TargetMet); // as far as the bound allows
     CHECK(count < 0.75 * static_cast<double>(previous)); // 5 558, 3 112, 778 triangles
-    CHECK(result.AchievedMaximumError > 0.5 * absolute && result.AchievedMaximumError <= absolute);
-    CHECK(LargestPlaneDistance(elephant, result) <= result.AchievedMaximumError * (1.0 + 1e-9));
+    CHECK(result.Report.MaximumError > 0.5 * absolute && result.Report.MaximumError <= absolute);
+    CHECK(LargestPlaneDistance(elephant, result) <= result.Report.MaximumError * (1.0 + 1e-9));
     previous = result.Triangles.size() / 3;
   }
 }
@@ -866,7 +855,7 @@ void VolumeCollapseReachesSmallTargets()
     const Mesh mesh = ReadData(name);
     const meshsimp::VolumeCollapseResult result = Collapse(mesh, target);
     const std::int64_t count = static_cast<std::int64_t>(result.Triangles.size() / 3);
-    CHECK(!result.StoppedEarly && std::abs(count - target) <= 1);
+    CHECK(!StoppedEarly(result) && std::abs(count - target) <= 1);
   }
 }
 
@@ -877,10 +866,10 @@ void VolumeCollapseDefaultGuardReachesPlaneTarget()
   const Mesh grid = Grid(32); // 2048 triangles
   meshsimp::VolumeCollapseOptions options;
   CHECK(options.MinimumAngle == 10.0);
-  options.TargetTriangles = 102;
+  options.Goal.SetTriangleCount(102);
   meshsimp::VolumeCollapseResult result;
   CHECK(meshsimp::VolumeTriangleCollapse(grid.View(), options, result));
-  CHECK(!result.StoppedEarly);
+  CHECK(!StoppedEarly(result));
   CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 102) <= 1);
   for (std::size_t i = 2; i < result.Points.size(); i += 3)
   {
@@ -901,10 +890,10 @@ void VolumeCollapseLowersGuardRatherThanStop()
   meshsimp::VolumeCollapseOptions options;
   options.EdgeCollapses = false;
   options.MinimumAngle = 30.0;
-  options.TargetTriangles = 58;
+  options.Goal.SetTriangleCount(58);
   meshsimp::VolumeCollapseResult result;
   CHECK(meshsimp::VolumeTriangleCollapse(terrain.View(), options, result));
-  CHECK(!result.StoppedEarly);
+  CHECK(!StoppedEarly(result));
   CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 58) <= 1);
   CHECK(result.FinalMinimumAngle < 30.0);
 
@@ -912,7 +901,7 @@ void VolumeCollapseLowersGuardRatherThanStop()
   // it is lowered the same way instead of refusing every collapse for ever.
   options.MinimumAngle = std::numeric_limits<double>::infinity();
   CHECK(meshsimp::VolumeTriangleCollapse(terrain.View(), options, result));
-  CHECK(!result.StoppedEarly);
+  CHECK(!StoppedEarly(result));
   CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 58) <= 1);
   CHECK(result.FinalMinimumAngle < 30.0);
 }
@@ -928,15 +917,16 @@ void VolumeCollapseHugeAndTinyCoordinates()
   {
     const Mesh scaled = Scaled(sphere, factor);
     meshsimp::VolumeCollapseOptions options;
-    options.TargetReduction = 0.8;
+    options.Goal.SetReduction(0.8);
     meshsimp::VolumeCollapseResult result;
     CHECK(meshsimp::VolumeTriangleCollapse(scaled.View(), options, result));
-    CHECK(!result.StoppedEarly);
+    CHECK(!StoppedEarly(result));
     CHECK(std::abs(static_cast<double>(result.Triangles.size() / 3) - 0.2 * (sphere.Triangles.size() / 3)) <=
       0.01 * (sphere.Triangles.size() / 3) + 1);
     CHECK(InsideBox(result.Points, scaled));
     CHECK(result.SquareVolumeError >= 0.0);
-    CHECK(std::all_of(result.PointError.begin(), result.PointError.end(), [](double e) { return e >= 0.0; }));
+    const std::vector<double>& errors = *result.PointArray("SquareVolumeError");
+    CHECK(std::all_of(errors.begin(), errors.end(), [](double e) { return e >= 0.0; }));
   }
 }
 
@@ -945,7 +935,7 @@ void VolumeCollapseReportsProgressAndAborts()
   // Progress rises from the set-up to the end; a caller that says stop gets false at once.
   const Mesh sphere = Sphere(16);
   meshsimp::VolumeCollapseOptions options;
-  options.TargetTriangles = 100;
+  options.Goal.SetTriangleCount(100);
   std::vector<double> reported;
   meshsimp::ExecutionContext context;
   context.Progress = [&](double progress) {
@@ -972,10 +962,10 @@ void VolumeCollapseSimplifiesFan()
   // target; the paper's triangle collapses alone stop early.
   const Mesh fan = Fan(2000);
   meshsimp::VolumeCollapseOptions options;
-  options.TargetTriangles = 1000;
+  options.Goal.SetTriangleCount(1000);
   meshsimp::VolumeCollapseResult result;
   CHECK(meshsimp::VolumeTriangleCollapse(fan.View(), options, result));
-  CHECK(!result.StoppedEarly);
+  CHECK(!StoppedEarly(result));
   CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 1000) <= 10);
   for (std::size_t i = 0; i < result.Points.size(); i += 3)
   {
@@ -983,7 +973,7 @@ void VolumeCollapseSimplifiesFan()
   }
   options.EdgeCollapses = false;
   CHECK(meshsimp::VolumeTriangleCollapse(fan.View(), options, result));
-  CHECK(result.StoppedEarly);
+  CHECK(StoppedEarly(result));
 }
 
 void VolumeCollapseSurvivesDamagedMeshes()
@@ -1003,7 +993,7 @@ void VolumeCollapseSurvivesDamagedMeshes()
     RandomTargets(random, options, locks);
     options.MinimumAngle = 5.0 * (random() % 3);
     options.EdgeCollapses = random() % 4 != 0;
-    options.KeepUndo = random() % 2 == 0;
+    random(); // was KeepUndo: the cases stay those of the earlier runs
     options.UseShapeFactor = random() % 2 == 0;
     options.UseNormalFactor = random() % 2 == 0;
     options.UseVolumeWeights = random() % 2 == 0;
@@ -1013,8 +1003,8 @@ void VolumeCollapseSurvivesDamagedMeshes()
         [&](meshsimp::VolumeCollapseResult& out, const meshsimp::ExecutionContext& context) {
           return meshsimp::VolumeTriangleCollapse(mesh.View(), options, out, context);
         });
-    CHECK(static_cast<std::int64_t>(result.TriangleSource.size()) <= result.UsableTriangles);
-    CheckCollapseRun(result, mesh, closed, locks, options.MaximumError >= 0.0, 0.01);
+    CHECK(static_cast<std::int64_t>(result.TriangleSource.size()) <= result.Report.UsableTriangles);
+    CheckCollapseRun(result, mesh, closed, locks, options.Goal.Bounded(), 0.01);
   }
 }
 } // namespace

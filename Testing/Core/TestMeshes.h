@@ -5,6 +5,7 @@
 
 #include "OFFFile.h"
 #include "TestHelpers.h"
+#include "Simplification.h"
 #include "TriangleMesh.h"
 
 #include <Eigen/Geometry>
@@ -434,12 +435,37 @@ bool LockedPointsStay(const std::vector<std::uint8_t>& locks, const std::vector<
 template <typename Options>
 void RandomTargets(std::mt19937& random, Options& options, const std::vector<std::uint8_t>& locks)
 {
-  options.TargetReduction = random() % 5 == 0 ? (random() % 2) * 1.0 : (random() % 100) / 100.0;
-  options.TargetTriangles = random() % 6 == 0 ? static_cast<std::int64_t>(random() % 10) : -1;
+  const double reduction = random() % 5 == 0 ? (random() % 2) * 1.0 : (random() % 100) / 100.0;
+  const std::int64_t count = random() % 6 == 0 ? static_cast<std::int64_t>(random() % 10) : -1;
   options.PreserveBoundary = random() % 2 == 0;
   options.LockedPoints = locks.empty() ? nullptr : locks.data();
-  options.MaximumError = random() % 4 == 0 ? 0.001 * (random() % 100) : -1.0;
-  options.RelativeError = true;
+  const double bound = random() % 4 == 0 ? 0.001 * (random() % 100) : -1.0;
+  options.Goal.SetReduction(reduction);
+  if (bound >= 0.0)
+  {
+    options.Goal.SetMaximumError(bound, true);
+  }
+  else if (count >= 0)
+  {
+    options.Goal.SetTriangleCount(count);
+  }
+}
+
+/// The representative (surviving) input point of each output point.
+inline std::vector<std::int32_t> Survivors(const meshsimp::SimplifiedMesh& mesh)
+{
+  std::vector<std::int32_t> survivors;
+  for (std::int64_t p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    survivors.push_back(mesh.Representative(p));
+  }
+  return survivors;
+}
+
+/// Whether the run stopped before its count target.
+inline bool StoppedEarly(const meshsimp::SimplifiedMesh& mesh)
+{
+  return mesh.Report.Stop != meshsimp::StopReason::TargetMet;
 }
 
 /// The result of simplify(result, context) on one thread, checked to be a valid output and to be
@@ -465,13 +491,13 @@ template <typename Result>
 void CheckCollapseRun(const Result& result, const Mesh& mesh, bool closed,
   const std::vector<std::uint8_t>& locks, bool bounded, double tolerance)
 {
-  CHECK(result.PointSource.size() * 3 == result.Points.size());
+  CHECK(result.SourceOffsets.size() * 3 == result.Points.size() + 3);
   CHECK(result.TriangleSource.size() * 3 == result.Triangles.size());
-  CHECK(LockedPointsStay(locks, result.PointSource, result.Points, mesh, closed));
+  CHECK(LockedPointsStay(locks, Survivors(result), result.Points, mesh, closed));
   CHECK(!closed || ClosedOriented(result.Triangles));
   const double count = static_cast<double>(result.Triangles.size() / 3);
-  CHECK(result.StoppedEarly || bounded ||
-    std::abs(count - result.TargetTriangles) <= std::max(2.0, tolerance * result.UsableTriangles));
+  CHECK(StoppedEarly(result) || bounded ||
+    std::abs(count - result.Report.TargetTriangles) <= std::max(2.0, tolerance * result.Report.UsableTriangles));
 }
 
 #ifdef MESHSIMPLIFICATION_TEST_DATA

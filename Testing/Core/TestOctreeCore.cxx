@@ -31,7 +31,7 @@ OctreeClusteringResult Simplify(const Mesh& mesh, OctreeClusteringOptions option
 OctreeClusteringOptions Target(std::int64_t triangles)
 {
   OctreeClusteringOptions options;
-  options.TargetTriangles = triangles;
+  options.Goal.SetTriangleCount(triangles);
   return options;
 }
 
@@ -88,7 +88,7 @@ void PlanarMeshStaysExactlyPlanar()
   OctreeClusteringOptions options = Target(200);
   options.BoundaryPlanes = false;
   const OctreeClusteringResult result = Simplify(grid, options);
-  for (const double error : result.ClusterErrors)
+  for (const double error : *result.PointArray("ClusterError"))
   {
     CHECK(error == 0.0);
   }
@@ -154,12 +154,12 @@ void DiskBorderIsKeptWithBoundaryPlanes()
     const OctreeClusteringResult result = Simplify(disk, options);
     // Largest distance from a border cluster's point to the rim circle.
     double deviation = 0.0;
-    for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+    for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
     {
       bool onRim = false;
-      for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+      for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
       {
-        onRim = onRim || result.ClusterVertices[k] > 1 + (rings - 1) * sectors - 1;
+        onRim = onRim || result.SourcePoints[k] > 1 + (rings - 1) * sectors - 1;
       }
       if (onRim)
       {
@@ -191,12 +191,12 @@ void DisconnectedPartsInOneCellStayApart()
     sheets.Triangles.push_back(v + static_cast<std::int32_t>(half));
   }
   const OctreeClusteringResult result = Simplify(sheets, Target(32));
-  for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+  for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
   {
     std::set<bool> sides;
-    for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+    for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
     {
-      sides.insert(result.ClusterVertices[k] >= static_cast<std::int32_t>(half));
+      sides.insert(result.SourcePoints[k] >= static_cast<std::int32_t>(half));
     }
     CHECK(sides.size() == 1);
   }
@@ -275,18 +275,17 @@ void ErrorBoundIsRespected()
   for (const double epsilon : { 0.002, 0.01, 0.03 })
   {
     OctreeClusteringOptions options;
-    options.MaximumError = epsilon;
-    options.RelativeError = true;
+    options.Goal.SetMaximumError(epsilon, true);
     const OctreeClusteringResult result = Simplify(mesh, options);
     const double bound = epsilon * 1.2170847; // the cow's bounding-box diagonal
-    CHECK(result.MaximumClusterError <= bound * (1 + 1e-9));
+    CHECK(result.Report.MaximumError <= bound * (1 + 1e-9));
     double measured = 0.0;
-    for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+    for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
     {
       const Eigen::Vector3d x(result.Points[3 * p], result.Points[3 * p + 1], result.Points[3 * p + 2]);
-      for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+      for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
       {
-        for (const std::int32_t t : incident[result.ClusterVertices[k]])
+        for (const std::int32_t t : incident[result.SourcePoints[k]])
         {
           const std::int32_t* c = &mesh.Triangles[3 * t];
           measured = std::max(measured, PlaneDistance(x, view.Point(c[0]), view.Point(c[1]), view.Point(c[2])));
@@ -307,9 +306,9 @@ void CellLimitsAreAlwaysApplied()
   OctreeClusteringOptions options = Target(50);
   options.MaximumVerticesPerCell = 12;
   OctreeClusteringResult result = Simplify(cow, options);
-  for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+  for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
   {
-    CHECK(result.ClusterOffsets[p + 1] - result.ClusterOffsets[p] <= 12);
+    CHECK(result.SourceOffsets[p + 1] - result.SourceOffsets[p] <= 12);
   }
   CHECK(result.Triangles.size() / 3 > 50); // the limit overrides the target
 
@@ -317,13 +316,13 @@ void CellLimitsAreAlwaysApplied()
   options.MaximumCellSize = 0.05; // of the diagonal 1.2170847
   result = Simplify(cow, options);
   const double cellEdge = 0.05 * 1.2170847;
-  for (std::size_t p = 0; p + 1 < result.ClusterOffsets.size(); ++p)
+  for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    for (std::int32_t k = result.ClusterOffsets[p]; k < result.ClusterOffsets[p + 1]; ++k)
+    for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
     {
-      lo = lo.cwiseMin(view.Point(result.ClusterVertices[k]));
-      hi = hi.cwiseMax(view.Point(result.ClusterVertices[k]));
+      lo = lo.cwiseMin(view.Point(result.SourcePoints[k]));
+      hi = hi.cwiseMax(view.Point(result.SourcePoints[k]));
     }
     CHECK((hi - lo).maxCoeff() <= cellEdge * (1 + 1e-9));
   }
@@ -339,13 +338,13 @@ void FlipRuleReducesFlippedTriangles()
     options.PreventFlips = prevent;
     const OctreeClusteringResult result = Simplify(cow, options);
     int count = 0;
-    for (std::size_t i = 0; i < result.SourceTriangles.size(); ++i)
+    for (std::size_t i = 0; i < result.TriangleSource.size(); ++i)
     {
       auto point = [&](std::int32_t p) {
         return Eigen::Vector3d(result.Points[3 * p], result.Points[3 * p + 1], result.Points[3 * p + 2]);
       };
       const std::int32_t* t = &result.Triangles[3 * i];
-      const std::int32_t* s = &cow.Triangles[3 * static_cast<std::size_t>(result.SourceTriangles[i])];
+      const std::int32_t* s = &cow.Triangles[3 * static_cast<std::size_t>(result.TriangleSource[i])];
       const Eigen::Vector3d now = (point(t[1]) - point(t[0])).cross(point(t[2]) - point(t[0]));
       const TriangleMeshView view = cow.View();
       const Eigen::Vector3d before =
@@ -370,8 +369,7 @@ void SameResultForAnyThreadCount()
   }
   const Mesh cube = Cube(10);
   OctreeClusteringOptions bounded;
-  bounded.MaximumError = 0.002;
-  bounded.RelativeError = true;
+  bounded.Goal.SetMaximumError(0.002, true);
 
   // A "parallel" for that runs chunks in reverse order, and one with real threads: results
   // must not depend on scheduling or on the thread count.
@@ -398,7 +396,7 @@ void SameResultForAnyThreadCount()
       CHECK(meshsimp::OctreeVertexClustering(c.first->View(), c.second, other, context));
       CHECK(serial.Points == other.Points);
       CHECK(serial.Triangles == other.Triangles);
-      CHECK(serial.ClusterErrors == other.ClusterErrors);
+      CHECK(*serial.PointArray("ClusterError") == *other.PointArray("ClusterError"));
     }
   }
 }
@@ -480,8 +478,8 @@ void InvalidTrianglesAreSkipped()
   mesh.Triangles.insert(mesh.Triangles.end(), { 0, 1, bad, 2, 2, 3, 0, 1, 1000 });
   const std::vector<double> pointsBefore = mesh.Points;
   OctreeClusteringResult result = Simplify(mesh, Target(8));
-  CHECK(result.UsableInputTriangles == 32);
-  CHECK(result.NonFinitePoints == 1);
+  CHECK(result.Report.UsableTriangles == 32);
+  CHECK(result.Report.NonFinitePoints == 1);
   CHECK(!result.Triangles.empty());
   for (const double c : result.Points)
   {
@@ -498,7 +496,7 @@ void InvalidTrianglesAreSkipped()
   Mesh degenerate = Grid(2);
   degenerate.Triangles = { 0, 0, 1, 2, 2, 2 };
   result = Simplify(degenerate, Target(1));
-  CHECK(result.Triangles.empty() && result.ClusterOffsets == std::vector<std::int32_t>{ 0 });
+  CHECK(result.Triangles.empty() && result.SourceOffsets == std::vector<std::int32_t>{ 0 });
   CHECK(result.VertexToPoint == std::vector<std::int32_t>(degenerate.Points.size() / 3, -1));
 }
 
@@ -594,7 +592,7 @@ void CompactMeshIsSpatialAndMapsBack()
   CHECK(meshsimp::OctreeVertexClustering(view, Target(30), narrow));
   const OctreeClusteringResult wide = Simplify(mesh, Target(30));
   CHECK(narrow.Points == wide.Points && narrow.Triangles == wide.Triangles);
-  CHECK(narrow.VertexToPoint == wide.VertexToPoint && narrow.SourceTriangles == wide.SourceTriangles);
+  CHECK(narrow.VertexToPoint == wide.VertexToPoint && narrow.TriangleSource == wide.TriangleSource);
 }
 
 void BoundaryCornersMarkEachBorderEdgeOnce()
@@ -650,7 +648,7 @@ void LockedPointsStayTheirOwnClusters()
     {
       continue;
     }
-    CHECK(result.ClusterOffsets[p + 1] - result.ClusterOffsets[p] == 1);
+    CHECK(result.SourceOffsets[p + 1] - result.SourceOffsets[p] == 1);
     for (int k = 0; k < 3; ++k)
     {
       CHECK(result.Points[3 * p + k] == mesh.Points[3 * v + k]);
@@ -674,7 +672,7 @@ void AbortStopsEarly()
   context.Progress = [](double progress) { return progress < 0.1; };
   OctreeClusteringResult result;
   CHECK(!meshsimp::OctreeVertexClustering(grid.View(), Target(100), result, context));
-  CHECK(result.Aborted);
+  CHECK(result.Report.Stop == meshsimp::StopReason::Aborted);
 }
 
 void SurvivesDamagedMeshes()
@@ -689,9 +687,10 @@ void SurvivesDamagedMeshes()
     const Mesh mesh = DamagedMesh(random, closed);
     const std::vector<std::uint8_t> locks = RandomLocks(random, mesh, 1);
     OctreeClusteringOptions options;
-    options.TargetTriangles = random() % 3 != 0 ? static_cast<std::int64_t>(random() % 300) : -1;
-    options.MaximumError = 0.002 * (random() % 100);
-    options.RelativeError = random() % 2 == 0;
+    const std::int64_t count = random() % 3 != 0 ? static_cast<std::int64_t>(random() % 300) : -1;
+    const double bound = 0.002 * (random() % 100);
+    const bool relative = random() % 2 == 0;
+    count >= 0 ? options.Goal.SetTriangleCount(count) : options.Goal.SetMaximumError(bound, relative);
     options.MaximumCellSize = random() % 3 == 0 ? 0.01 * (random() % 100) : 0.0;
     options.MaximumVerticesPerCell = random() % 3 == 0 ? static_cast<std::int64_t>(random() % 10) : 0;
     options.ErrorIterations = static_cast<int>(random() % 4);
@@ -707,7 +706,7 @@ void SurvivesDamagedMeshes()
       if (!locks.empty() && locks[v] && result.VertexToPoint[v] >= 0)
       {
         const std::int32_t p = result.VertexToPoint[v];
-        CHECK(result.ClusterOffsets[p + 1] - result.ClusterOffsets[p] == 1);
+        CHECK(result.SourceOffsets[p + 1] - result.SourceOffsets[p] == 1);
         CHECK(std::equal(mesh.Points.begin() + 3 * v, mesh.Points.begin() + 3 * v + 3, result.Points.begin() + 3 * p));
       }
     }

@@ -18,7 +18,7 @@ namespace
 ParallelDecimationOptions Reduction(double reduction)
 {
   ParallelDecimationOptions options;
-  options.TargetReduction = reduction;
+  options.Goal.SetReduction(reduction);
   return options;
 }
 
@@ -44,8 +44,8 @@ double Area(const ParallelDecimationResult& r)
 bool WithinTwoPercent(const ParallelDecimationResult& result)
 {
   const double count = static_cast<double>(result.Triangles.size() / 3);
-  return std::abs(count - static_cast<double>(result.TargetTriangles)) <=
-    0.02 * static_cast<double>(result.TargetTriangles) + 1.0;
+  return std::abs(count - static_cast<double>(result.Report.TargetTriangles)) <=
+    0.02 * static_cast<double>(result.Report.TargetTriangles) + 1.0;
 }
 
 void BucketFunction()
@@ -175,9 +175,7 @@ void HugeAndTinyCoordinates()
     ParallelDecimationOptions options = Reduction(0.8);
     if (bound)
     {
-      options.MaximumError = 0.01;
-      options.RelativeError = true;
-      options.TargetReduction = 1.0;
+      options.Goal.SetMaximumError(0.01, true);
     }
     ParallelDecimationResult reference;
     CHECK(meshsimp::ParallelDecimation(sphere.View(), options, reference));
@@ -192,11 +190,13 @@ void HugeAndTinyCoordinates()
       {
         CHECK(result.Points[i] == reference.Points[i] * factor);
       }
-      for (std::size_t i = 0; i < result.Importance.size() && i < reference.Importance.size(); ++i)
+      const std::vector<double>& importance = *result.PointArray("Importance");
+      const std::vector<double>& referenceImportance = *reference.PointArray("Importance");
+      for (std::size_t i = 0; i < importance.size() && i < referenceImportance.size(); ++i)
       {
-        CHECK(result.Importance[i] == (reference.Importance[i] < 0.0 ? -1.0 : reference.Importance[i] * factor * factor));
+        CHECK(importance[i] == (referenceImportance[i] < 0.0 ? -1.0 : referenceImportance[i] * factor * factor));
       }
-      CHECK(result.AchievedMaximumError == reference.AchievedMaximumError * factor);
+      CHECK(!bound || result.Report.MaximumError == reference.Report.MaximumError * factor);
     }
   }
 }
@@ -221,7 +221,7 @@ void SameResultForAnyThreadCount()
         CHECK(meshsimp::ParallelDecimation(mesh->View(), options, other, meshsimp_test::Threaded<meshsimp::ExecutionContext>(threads)));
         CHECK(serial.Points == other.Points);
         CHECK(serial.Triangles == other.Triangles);
-        CHECK(serial.Importance == other.Importance);
+        CHECK(*serial.PointArray("Importance") == *other.PointArray("Importance"));
       }
     }
     ParallelDecimationResult serial, threaded, chunked, parts;
@@ -248,7 +248,7 @@ void SameResultForAnyThreadCount()
     const auto context = meshsimp_test::Threaded<meshsimp::ExecutionContext>(threads);
     CHECK(meshsimp::ParallelDecimation(large.View(), Reduction(0.9), other, context));
     CHECK(serial.Points == other.Points && serial.Triangles == other.Triangles);
-    CHECK(serial.Importance == other.Importance);
+    CHECK(*serial.PointArray("Importance") == *other.PointArray("Importance"));
   }
 }
 
@@ -266,20 +266,21 @@ void TargetsAndInputPoints()
     CHECK(result.MovedPoints == 0);
     CHECK(WithinTwoPercent(result));
     CHECK(Closed(result));
-    CHECK(!result.StoppedEarly);
-    for (std::size_t p = 0; p < result.PointSource.size(); ++p)
+    CHECK(!StoppedEarly(result));
+    const std::vector<std::int32_t> survivors = Survivors(result);
+    for (std::size_t p = 0; p < survivors.size(); ++p)
     {
       for (int k = 0; k < 3; ++k)
       {
-        CHECK(result.Points[3 * p + k] == sphere.Points[3 * result.PointSource[p] + k]);
+        CHECK(result.Points[3 * p + k] == sphere.Points[3 * survivors[p] + k]);
       }
     }
   }
   ParallelDecimationOptions count;
-  count.TargetTriangles = 500;
+  count.Goal.SetTriangleCount(500);
   ParallelDecimationResult result;
   CHECK(meshsimp::ParallelDecimation(sphere.View(), count, result));
-  CHECK(result.TargetTriangles == 500);
+  CHECK(result.Report.TargetTriangles == 500);
   CHECK(WithinTwoPercent(result));
 }
 
@@ -291,14 +292,13 @@ void ErrorBoundKeepsBump()
   Mesh grid = Grid(20);
   grid.Points[3 * (10 * 21 + 10) + 2] = 0.01;
   ParallelDecimationOptions options;
-  options.TargetTriangles = 0;
-  options.MaximumError = 0.001;
+  options.Goal.SetMaximumError(0.001, false);
   ParallelDecimationResult result, threaded;
   CHECK(meshsimp::ParallelDecimation(grid.View(), options, result));
   CHECK(meshsimp::ParallelDecimation(grid.View(), options, threaded, meshsimp_test::Threaded<meshsimp::ExecutionContext>(2)));
   CHECK(result.Points == threaded.Points && result.Triangles == threaded.Triangles);
-  CHECK(result.StoppedEarly && result.Relaxations == 0);
-  CHECK(result.AchievedMaximumError <= 0.001);
+  CHECK(result.Report.Stop == meshsimp::StopReason::TargetMet && result.Relaxations == 0); // as far as the bound allows
+  CHECK(result.Report.MaximumError <= 0.001);
   CHECK(result.Triangles.size() / 3 <= 20); // of 800
   double highest = 0.0;
   for (std::size_t p = 2; p < result.Points.size(); p += 3)
@@ -309,10 +309,10 @@ void ErrorBoundKeepsBump()
   // With 0.1 the bump goes too; without a bound only the square's two triangles are left. (A
   // vertex that cannot be removed once kept the rest of a small mesh out of every round: the
   // filter stopped at 30 triangles.)
-  options.MaximumError = 0.1;
+  options.Goal.SetMaximumError(0.1, false);
   CHECK(meshsimp::ParallelDecimation(grid.View(), options, result));
-  CHECK(result.Triangles.size() / 3 <= 4 && result.AchievedMaximumError <= 0.1);
-  options.MaximumError = -1.0;
+  CHECK(result.Triangles.size() / 3 <= 4 && result.Report.MaximumError <= 0.1);
+  options.Goal.SetTriangleCount(0);
   CHECK(meshsimp::ParallelDecimation(grid.View(), options, result));
   CHECK(result.Triangles.size() / 3 == 2);
 }
@@ -329,8 +329,8 @@ void MovedSurvivorsFitTheSurface()
   CHECK(meshsimp::ParallelDecimation(sphere.View(), options, kept));
   options.MoveSurvivors = true;
   CHECK(meshsimp::ParallelDecimation(sphere.View(), options, moved));
-  CHECK(moved.Triangles == kept.Triangles && moved.PointSource == kept.PointSource);
-  CHECK(moved.MovedPoints > static_cast<std::int64_t>(moved.PointSource.size() / 2));
+  CHECK(moved.Triangles == kept.Triangles && moved.SourcePoints == kept.SourcePoints);
+  CHECK(moved.MovedPoints > moved.NumberOfPoints() / 2);
   auto rms = [&](const ParallelDecimationResult& r) {
     double sum = 0.0;
     for (std::size_t i = 0; i < sphere.Points.size(); i += 3)
@@ -390,7 +390,7 @@ void HighValenceVertex()
   CHECK(result.Rounds < 100);
   CHECK(WithinTwoPercent(result));
   CHECK(Closed(result));
-  CHECK(!result.StoppedEarly);
+  CHECK(!StoppedEarly(result));
   options.RoundObserver = nullptr;
   ParallelDecimationResult threaded;
   CHECK(meshsimp::ParallelDecimation(fan.View(), options, threaded, meshsimp_test::Threaded<meshsimp::ExecutionContext>(2)));
@@ -412,15 +412,15 @@ void CubeKeepsCornersAndEdges()
     CHECK(Closed(result));
     CHECK(std::abs(Area(result) - 6.0) < 1e-9);
     int corners = 0;
-    for (std::size_t p = 0; p < result.PointSource.size(); ++p)
+    for (std::int64_t p = 0; p < result.NumberOfPoints(); ++p)
     {
       const double* x = &result.Points[3 * p];
       const bool corner = (x[0] == 0 || x[0] == 1) && (x[1] == 0 || x[1] == 1) && (x[2] == 0 || x[2] == 1);
       if (corner)
       {
         ++corners;
-        CHECK(result.Types[p] == DecimationVertexType::Corner);
-        CHECK(result.Importance[p] == -1.0);
+        CHECK((*result.PointArray("VertexType"))[p] == static_cast<double>(DecimationVertexType::Corner));
+        CHECK((*result.PointArray("Importance"))[p] == -1.0);
       }
     }
     CHECK(corners == 8);
@@ -442,7 +442,7 @@ void BoundariesAndLocks()
   ParallelDecimationResult kept;
   CHECK(meshsimp::ParallelDecimation(grid.View(), preserve, kept));
   int border = 0;
-  for (std::size_t p = 0; p < kept.PointSource.size(); ++p)
+  for (std::int64_t p = 0; p < kept.NumberOfPoints(); ++p)
   {
     border += onBorder(&kept.Points[3 * p]) ? 1 : 0;
   }
@@ -458,7 +458,7 @@ void BoundariesAndLocks()
   ParallelDecimationResult result;
   CHECK(meshsimp::ParallelDecimation(grid.View(), locked, result));
   std::vector<bool> present(locks.size(), false);
-  for (const std::int32_t source : result.PointSource)
+  for (const std::int32_t source : Survivors(result))
   {
     present[source] = true;
   }
@@ -499,10 +499,10 @@ void DegenerateInputs()
   single.Triangles = { 0, 1, 2 };
   CHECK(meshsimp::ParallelDecimation(single.View(), Reduction(0.9), result));
   CHECK(result.Triangles.size() == 3); // every vertex is a corner of the boundary
-  CHECK(result.StoppedEarly);
+  CHECK(StoppedEarly(result));
   const Mesh sphere = Sphere(6);
   CHECK(meshsimp::ParallelDecimation(sphere.View(), Reduction(1.0), result));
-  CHECK(result.StoppedEarly);
+  CHECK(StoppedEarly(result));
   CHECK(Closed(result));
   CHECK(result.Triangles.size() / 3 >= 4);
 }
@@ -530,7 +530,7 @@ void SurvivesDamagedMeshes()
         [&](ParallelDecimationResult& out, const meshsimp::ExecutionContext& context) {
           return meshsimp::ParallelDecimation(mesh.View(), options, out, context);
         });
-    CheckCollapseRun(result, mesh, closed, locks, options.MaximumError >= 0.0, 0.02);
+    CheckCollapseRun(result, mesh, closed, locks, options.Goal.Bounded(), 0.02);
   }
 }
 } // namespace

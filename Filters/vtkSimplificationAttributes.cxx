@@ -1,0 +1,268 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkSimplificationAttributes.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkArrayDispatch.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vtkSimplification
+{
+namespace
+{
+/// How a point array reaches the output (see the file's rule).
+enum class Rule : std::uint8_t
+{
+  Interpolate,    // floating point: weighted
+  RoundedAverage, // unsigned-char colours: weighted, rounded to the nearest
+  Representative  // labels, ids, flags, strings: the representative's value
+};
+
+Rule RuleOf(vtkAbstractArray* array)
+{
+  const bool numeric = vtkDataArray::SafeDownCast(array) != nullptr;
+  const int components = array->GetNumberOfComponents();
+  switch (numeric ? array->GetDataType() : VTK_VOID)
+  {
+    case VTK_FLOAT:
+    case VTK_DOUBLE:
+      return Rule::Interpolate;
+    case VTK_UNSIGNED_CHAR:
+      return components == 3 || components == 4 ? Rule::RoundedAverage : Rule::Representative;
+    default:
+      return Rule::Representative;
+  }
+}
+
+/// Interpolated or averaged tuples: per component, the weighted mean of the sources of nonzero
+/// weight, clamped to their range (so equal values give exactly that value), optionally rounded.
+struct Blend
+{
+  template <typename ArrayT>
+  void operator()(ArrayT* in, vtkDataArray* outArray, const meshsimp::SimplifiedMesh& mesh, bool round) const
+  {
+    using T = vtk::GetAPIType<ArrayT>;
+    auto* out = vtkArrayDownCast<ArrayT>(outArray);
+    const auto source = vtk::DataArrayTupleRange(in);
+    auto target = vtk::DataArrayTupleRange(out);
+    const int components = in->GetNumberOfComponents();
+    for (std::int64_t p = 0; p < mesh.NumberOfPoints(); ++p)
+    {
+      const std::int32_t begin = mesh.SourceOffsets[p], end = mesh.SourceOffsets[p + 1];
+      for (int c = 0; c < components; ++c)
+      {
+        double sum = 0.0, low = std::numeric_limits<double>::infinity(), high = -low;
+        for (std::int32_t i = begin; i < end; ++i)
+        {
+          const double weight = mesh.SourceWeights[i];
+          const double value = static_cast<double>(source[mesh.SourcePoints[i]][c]);
+          sum += weight * value;
+          low = weight != 0.0 ? std::min(low, value) : low;
+          high = weight != 0.0 ? std::max(high, value) : high;
+        }
+        double value = low > high ? static_cast<double>(source[mesh.SourcePoints[begin]][c])
+                                  : std::min(high, std::max(low, sum));
+        value = round ? std::round(value) : value;
+        target[p][c] = static_cast<T>(value);
+      }
+    }
+  }
+};
+
+vtkSmartPointer<vtkAbstractArray> MapArray(vtkAbstractArray* in, const meshsimp::SimplifiedMesh& mesh)
+{
+  const vtkIdType count = static_cast<vtkIdType>(mesh.NumberOfPoints());
+  auto out = vtk::TakeSmartPointer(in->NewInstance());
+  out->SetName(in->GetName());
+  out->SetNumberOfComponents(in->GetNumberOfComponents());
+  for (int c = 0; c < in->GetNumberOfComponents(); ++c)
+  {
+    if (const char* name = in->GetComponentName(c))
+    {
+      out->SetComponentName(c, name);
+    }
+  }
+  out->SetNumberOfTuples(count);
+  const Rule rule = RuleOf(in);
+  if (rule == Rule::Representative)
+  {
+    vtkNew<vtkIdList> from, to;
+    from->SetNumberOfIds(count);
+    to->SetNumberOfIds(count);
+    for (vtkIdType p = 0; p < count; ++p)
+    {
+      from->SetId(p, mesh.Representative(p));
+      to->SetId(p, p);
+    }
+    out->InsertTuples(to, from, in);
+  }
+  else if (!vtkArrayDispatch::Dispatch::Execute(
+             vtkDataArray::SafeDownCast(in), Blend{}, vtkDataArray::SafeDownCast(out), mesh, rule == Rule::RoundedAverage))
+  {
+    Blend{}(vtkDataArray::SafeDownCast(in), vtkDataArray::SafeDownCast(out), mesh, rule == Rule::RoundedAverage);
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkPoints> MakePoints(const std::vector<double>& coordinates, int precision, vtkPoints* inputPoints)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  const bool doubles = precision == vtkAlgorithm::DOUBLE_PRECISION ||
+    (precision == vtkAlgorithm::DEFAULT_PRECISION && inputPoints && inputPoints->GetDataType() == VTK_DOUBLE);
+  points->SetDataType(doubles ? VTK_DOUBLE : VTK_FLOAT);
+  const vtkIdType count = static_cast<vtkIdType>(coordinates.size() / 3);
+  points->SetNumberOfPoints(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    points->SetPoint(i, coordinates.data() + 3 * i);
+  }
+  return points;
+}
+
+vtkSmartPointer<vtkCellArray> MakeTriangles(const std::vector<std::int32_t>& triangles)
+{
+  const vtkIdType count = static_cast<vtkIdType>(triangles.size() / 3);
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  connectivity->SetNumberOfValues(3 * count);
+  for (vtkIdType i = 0; i <= count; ++i)
+  {
+    offsets->SetValue(i, 3 * i);
+  }
+  std::copy(triangles.begin(), triangles.end(), connectivity->GetPointer(0));
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, connectivity);
+  return cells;
+}
+
+Eigen::Vector3d AreaNormal(const std::vector<double>& points, const std::vector<std::int32_t>& triangles, std::size_t t)
+{
+  auto corner = [&](int k) { return Eigen::Vector3d(points.data() + 3 * static_cast<std::size_t>(triangles[3 * t + k])); };
+  return (corner(1) - corner(0)).cross(corner(2) - corner(0));
+}
+
+Eigen::Vector3d UnitOrUp(const Eigen::Vector3d& n)
+{
+  const double length = n.norm();
+  return length > 0.0 ? Eigen::Vector3d(n / length) : Eigen::Vector3d(0, 0, 1);
+}
+
+/// Area-weighted point normals and per-triangle normals of the output, into the active normal
+/// arrays the mapping made.
+void RecomputeNormals(const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+{
+  vtkDataArray* pointNormals = output->GetPointData()->GetNormals();
+  vtkDataArray* cellNormals = output->GetCellData()->GetNormals();
+  std::vector<Eigen::Vector3d> sums(pointNormals ? mesh.NumberOfPoints() : 0, Eigen::Vector3d::Zero());
+  for (std::size_t t = 0; t < mesh.Triangles.size() / 3; ++t)
+  {
+    const Eigen::Vector3d n = AreaNormal(mesh.Points, mesh.Triangles, t);
+    for (int k = 0; k < 3 && pointNormals; ++k)
+    {
+      sums[mesh.Triangles[3 * t + k]] += n;
+    }
+    if (cellNormals)
+    {
+      cellNormals->SetTuple(static_cast<vtkIdType>(t), UnitOrUp(n).data());
+    }
+  }
+  for (std::size_t i = 0; i < sums.size(); ++i)
+  {
+    pointNormals->SetTuple(static_cast<vtkIdType>(i), UnitOrUp(sums[i]).data());
+  }
+}
+
+vtkSmartPointer<vtkDataArray> MakeNamedArray(const meshsimp::NamedArray& named)
+{
+  vtkSmartPointer<vtkDataArray> array;
+  switch (named.Type)
+  {
+    case meshsimp::NamedArray::Kind::Integer:
+      array = vtkSmartPointer<vtkIntArray>::New();
+      break;
+    case meshsimp::NamedArray::Kind::Byte:
+      array = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      break;
+    default:
+      array = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  array->SetName(named.Name.c_str());
+  array->SetNumberOfTuples(static_cast<vtkIdType>(named.Values.size()));
+  for (std::size_t i = 0; i < named.Values.size(); ++i)
+  {
+    array->SetTuple1(static_cast<vtkIdType>(i), named.Values[i]);
+  }
+  return array;
+}
+}
+
+void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkPointData* outPD)
+{
+  outPD->Initialize();
+  for (int i = 0; i < inPD->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* in = inPD->GetAbstractArray(i);
+    const int index = outPD->AddArray(MapArray(in, mesh));
+    const int attribute = inPD->IsArrayAnAttribute(i);
+    if (attribute >= 0)
+    {
+      outPD->SetActiveAttribute(index, attribute);
+    }
+  }
+}
+
+void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
+  int outputPointsPrecision, vtkPolyData* output)
+{
+  output->SetPoints(MakePoints(mesh.Points, outputPointsPrecision, input->GetPoints()));
+  output->SetPolys(MakeTriangles(mesh.Triangles));
+  const vtkIdType numberOfTriangles = static_cast<vtkIdType>(mesh.NumberOfTriangles());
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(inCD, numberOfTriangles);
+  for (vtkIdType i = 0; i < numberOfTriangles; ++i)
+  {
+    outCD->CopyData(inCD, triangles.SourceCell(mesh.TriangleSource[i]), i);
+  }
+  MapPointData(input->GetPointData(), mesh, output->GetPointData());
+  RecomputeNormals(mesh, output);
+  for (const meshsimp::NamedArray& named : mesh.PointArrays)
+  {
+    output->GetPointData()->AddArray(MakeNamedArray(named));
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+  for (const auto& [name, value] : mesh.FieldValues)
+  {
+    AddFieldValue(output, name.c_str(), value);
+  }
+  const double inputTriangles = static_cast<double>(triangles.View.NumberOfTriangles);
+  AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
+}
+
+void AddFieldValue(vtkPolyData* output, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  output->GetFieldData()->AddArray(array);
+}
+
+}

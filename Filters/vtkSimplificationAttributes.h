@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkSimplificationAttributes.h
+ * @brief The one output mapping of every filter (private to the module): a core's
+ * SimplifiedMesh becomes the output's points, triangles, point and cell data and error arrays.
+ *
+ * Point data follows one rule, whatever the filter, from each output point's sources (the input
+ * points it stands for, SimplifiedMesh::SourcePoints):
+ * - floating-point arrays are interpolated with the sources' weights (clamped to the sources'
+ *   range, so a constant stays exactly constant);
+ * - unsigned-char colours (3 or 4 components) are averaged the same way and rounded to the
+ *   nearest value;
+ * - every other array (integer labels, material and region ids, flags and ghost flags, global
+ *   and pedigree ids, strings) takes the value of one input point, the representative (the
+ *   surviving point of a collapse, the heaviest point of a cluster): never a value no input
+ *   point has. No two output points have the same representative, so global ids stay unique.
+ * Active normals are recomputed from the output triangles. Cell data is copied from the input
+ * cell of each output triangle.
+ */
+#ifndef vtkSimplificationAttributes_h
+#define vtkSimplificationAttributes_h
+
+#include "Simplification.h"
+#include "vtkSimplificationInput.h"
+
+class vtkPointData;
+class vtkPolyData;
+
+namespace vtkSimplification
+{
+
+/// The output of a piece: points (OutputPointsPrecision: vtkAlgorithm's precisions, DEFAULT as
+/// the input's points), triangles, cell data, point data by the rule above, the core's point
+/// arrays and field values, the input's field data, and AchievedReduction.
+void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
+  int outputPointsPrecision, vtkPolyData* output);
+
+/// Every point array of inPD mapped to the mesh's output points by the rule above.
+void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkPointData* outPD);
+
+/// Adds a one-value array to the output's field data.
+void AddFieldValue(vtkPolyData* output, const char* name, double value);
+
+}
+
+#endif
