@@ -251,11 +251,9 @@ vtkSmartPointer<vtkPolyData> AsSurface(vtkDataObject* data, std::string& problem
       " is neither a dataset nor composite data of datasets";
     return nullptr;
   }
-  vtkNew<vtkCellTypes> types;
-  dataSet->GetCellTypes(types);
-  for (vtkIdType i = 0; i < types->GetNumberOfTypes(); ++i)
+  for (vtkIdType c = 0; c < dataSet->GetNumberOfCells(); ++c)
   {
-    if (vtkCellTypes::GetDimension(types->GetCellType(i)) == 3)
+    if (vtkCellTypes::GetDimension(static_cast<unsigned char>(dataSet->GetCellType(c))) == 3)
     {
       problem = std::string("the ") + dataSet->GetClassName() +
         " has 3-D cells; apply Extract Surface first to simplify its boundary surface";

@@ -10,7 +10,7 @@ import os
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 from paraview import servermanager
 
-from plugintest import arguments, check, finish
+from plugintest import arguments, check, check_front_end, finish
 
 args = arguments("--baseline", "--temp")
 
@@ -96,4 +96,5 @@ if args.baseline:
     Delete(view)
     del view
 
+check_front_end(OctreeVertexClustering, cow, 0.03)
 finish()

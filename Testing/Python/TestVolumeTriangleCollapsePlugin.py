@@ -9,7 +9,7 @@ import os
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 from paraview import servermanager
 
-from plugintest import arguments, check, check_error_bound, check_unlocked_after_octree, finish
+from plugintest import arguments, check, check_front_end, check_error_bound, check_unlocked_after_octree, finish
 
 args = arguments()
 
@@ -97,4 +97,5 @@ got = blocks.GetDataInformation().GetNumberOfCells()
 check(abs(got - expected) <= 0.01 * expected, "multiblock: %d cells for about %d" % (got, expected))
 check("elevation" in blocks.PointData.keys(), "the terrain's elevation is carried")
 
+check_front_end(VolumeTriangleCollapse, cow, 0.01)
 finish()

@@ -64,6 +64,39 @@ def check_unlocked_after_octree(simplifier_class, octree_class, source, toleranc
           "after the octree: %d triangles for 90 %% reduction (%d)" % (got, round(target)))
 
 
+def check_front_end(simplifier_class, source, tolerance):
+    """What every filter's proxy shares (MeshSimplificationFilter.xml), on the cow: Deviation on
+    by default, the attribute-border properties; a reduction of 5 clamped to 1 (an empty
+    output); an unstructured grid of triangles (after Merge Blocks) simplified like the cow;
+    ParaView's default Sphere (96 triangles, 10 asked for) not emptied; a triangle count shared
+    out over the blocks of a multiblock."""
+    from paraview.simple import GroupDatasets, MergeBlocks, Sphere
+    simplified = simplifier_class(Input=source)
+    simplified.UpdatePipeline()
+    check(simplified.ComputeDeviation == 1 and "Deviation" in simplified.PointData.keys(),
+          "the Deviation array by default")
+    check(simplified.PreserveAttributeBorders == 0 and list(simplified.AttributeBorders) == ["POINTS", "None"],
+          "attribute borders off, no array by default")
+    clamped = simplifier_class(Input=source, TargetReduction=5)
+    clamped.UpdatePipeline()
+    check(clamped.GetDataInformation().GetNumberOfCells() == 0, "TargetReduction 5 gives an empty output")
+    merged = MergeBlocks(Input=GroupDatasets(Input=[source]))
+    grid = simplifier_class(Input=merged)
+    grid.UpdatePipeline()
+    got = grid.GetDataInformation().GetNumberOfCells()
+    check(merged.GetDataInformation().GetDataClassName() == "vtkUnstructuredGrid" and
+          abs(got - 580) <= tolerance * 580 + 1, "after Merge Blocks: %d triangles" % got)
+    sphere = simplifier_class(Input=Sphere())
+    sphere.UpdatePipeline()
+    check(sphere.GetDataInformation().GetNumberOfCells() > 0, "the default Sphere is not emptied")
+    fine = Sphere(ThetaResolution=64, PhiResolution=64)
+    group = GroupDatasets(Input=[source, fine])
+    shared = simplifier_class(Input=group, TargetMode="Triangle Count", TargetTriangleCount=1000)
+    shared.UpdatePipeline()
+    got = shared.GetDataInformation().GetNumberOfCells()
+    check(abs(got - 1000) <= 2 * tolerance * 1000 + 2, "a count of 1000 over two blocks gives %d" % got)
+
+
 def finish():
     print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
     sys.exit(1 if failures else 0)

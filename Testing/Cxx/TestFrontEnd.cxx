@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The front end every filter shares (vtkMeshSimplificationFilter), checked on all three: sharp
+// attribute borders, a count shared out over composite blocks, blocks that are not polygonal
+// passed through, surfaces of other datasets, 3-D cells refused, the Deviation array, and the
+// error reported in the bound's units.
+#include "vtkOctreeVertexClustering.h"
+#include "vtkParallelDecimation.h"
+#include "vtkVolumeTriangleCollapse.h"
+
+#include "vtkAppendFilter.h"
+#include "vtkCellLocator.h"
+#include "vtkFieldData.h"
+#include "vtkGenericCell.h"
+#include "vtkImageData.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkUnstructuredGrid.h"
+
+#include "TestBadInput.h"
+
+#include <functional>
+
+namespace
+{
+using Factory = std::function<vtkSmartPointer<vtkMeshSimplificationFilter>()>;
+
+/// A sphere whose RGB colour is red where x < 0 and blue elsewhere, with a label array of the
+/// same halves (0 and 7).
+vtkSmartPointer<vtkPolyData> TwoColouredSphere()
+{
+  vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Colours");
+  colours->SetNumberOfComponents(3);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    const bool red = sphere->GetPoint(i)[0] < 0.0;
+    colours->InsertNextTuple3(red ? 255 : 0, 0, red ? 0 : 255);
+    labels->InsertNextValue(red ? 0 : 7);
+  }
+  sphere->GetPointData()->AddArray(colours);
+  sphere->GetPointData()->AddArray(labels);
+  return sphere;
+}
+
+/// How many output colours are neither pure red nor pure blue.
+vtkIdType BlendedColours(vtkPolyData* output)
+{
+  vtkDataArray* colours = output->GetPointData()->GetArray("Colours");
+  vtkIdType blended = 0;
+  for (vtkIdType i = 0; colours && i < colours->GetNumberOfTuples(); ++i)
+  {
+    const double* c = colours->GetTuple3(i);
+    blended += (c[0] == 255 && c[2] == 0) || (c[0] == 0 && c[2] == 255) ? 0 : 1;
+  }
+  return blended;
+}
+
+/// With PreserveAttributeBorders and the colour array chosen, no colour is blended across the
+/// red-blue border and the count target is still met; choosing no array warns. Without it the
+/// filters that interpolate (blends) make purple points.
+void CheckAttributeBorders(const Factory& make, double tolerance, bool blends)
+{
+  vtkSmartPointer<vtkPolyData> sphere = TwoColouredSphere();
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+  filter->SetInputData(sphere);
+  filter->SetTargetReduction(0.8);
+  filter->Update();
+  CHECK((BlendedColours(filter->GetOutput()) > 0) == blends);
+  filter->PreserveAttributeBordersOn();
+  filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Colours");
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  const double target = 0.2 * sphere->GetNumberOfPolys();
+  CHECK(BlendedColours(output) == 0);
+  CHECK(std::abs(output->GetNumberOfPolys() - target) <= tolerance * target + 1);
+  vtkDataArray* labels = output->GetPointData()->GetArray("Labels");
+  for (vtkIdType i = 0; labels && i < labels->GetNumberOfTuples(); ++i)
+  {
+    CHECK(labels->GetTuple1(i) == 0 || labels->GetTuple1(i) == 7);
+  }
+  vtkNew<meshsimp_test::MessageLog> log;
+  filter->AddObserver(vtkCommand::WarningEvent, log);
+  filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None");
+  filter->Update();
+  CHECK(log->Warnings.size() == 1 && meshsimp_test::Mentions(log->Warnings[0], "PreserveAttributeBorders"));
+}
+
+/// A multiblock of the sphere, the sphere made twice as fine, and an image: a triangle count
+/// means the whole input, shared out by the blocks' triangles; the image passes through.
+void CheckCompositeCount(const Factory& make, double tolerance)
+{
+  vtkSmartPointer<vtkPolyData> coarse = meshsimp_test::Sphere();
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(64);
+  source->SetPhiResolution(32);
+  source->Update();
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(4, 5, 6);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, coarse);
+  blocks->SetBlock(1, source->GetOutput());
+  blocks->SetBlock(2, image);
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+  filter->SetInputData(blocks);
+  filter->SetTargetModeToTriangleCount();
+  filter->SetTargetTriangleCount(600);
+  filter->Update();
+  auto* output = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  CHECK(output && output->GetNumberOfBlocks() == 3);
+  auto* first = vtkPolyData::SafeDownCast(output ? output->GetBlock(0) : nullptr);
+  auto* second = vtkPolyData::SafeDownCast(output ? output->GetBlock(1) : nullptr);
+  auto* passed = vtkImageData::SafeDownCast(output ? output->GetBlock(2) : nullptr);
+  CHECK(first && second && passed);
+  if (!first || !second || !passed)
+  {
+    return;
+  }
+  const double total = coarse->GetNumberOfPolys() + source->GetOutput()->GetNumberOfPolys();
+  const double got = first->GetNumberOfPolys() + second->GetNumberOfPolys();
+  CHECK(std::abs(got - 600) <= 2 * tolerance * 600 + 2);
+  CHECK(std::abs(second->GetNumberOfPolys() - 600 * source->GetOutput()->GetNumberOfPolys() / total) <=
+    tolerance * 600 + 2);
+  CHECK(passed->GetNumberOfPoints() == image->GetNumberOfPoints() && passed->GetDimensions()[2] == 6);
+}
+
+/// A dataset whose cells are surfaces (the sphere as an unstructured grid, as after Merge
+/// Blocks) is simplified like the polygonal sphere; one with 3-D cells is refused in one line
+/// that says to extract its surface first.
+void CheckOtherDatasets(const Factory& make)
+{
+  vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+  vtkNew<vtkAppendFilter> grid;
+  grid->SetInputData(sphere);
+  grid->Update();
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+  filter->SetInputData(grid->GetOutput());
+  filter->SetTargetReduction(0.5);
+  filter->Update();
+  const double target = 0.5 * sphere->GetNumberOfPolys();
+  CHECK(std::abs(filter->GetOutput()->GetNumberOfPolys() - target) <= 0.05 * target);
+
+  vtkNew<vtkUnstructuredGrid> tetrahedra;
+  vtkNew<vtkPoints> points;
+  for (const double* p : { std::array<double, 3>{ 0, 0, 0 }.data(), std::array<double, 3>{ 1, 0, 0 }.data(),
+         std::array<double, 3>{ 0, 1, 0 }.data(), std::array<double, 3>{ 0, 0, 1 }.data() })
+  {
+    points->InsertNextPoint(p);
+  }
+  tetrahedra->SetPoints(points);
+  const vtkIdType tetra[4] = { 0, 1, 2, 3 };
+  tetrahedra->InsertNextCell(VTK_TETRA, 4, tetra);
+  vtkNew<meshsimp_test::MessageLog> log, executive;
+  vtkSmartPointer<vtkMeshSimplificationFilter> refusing = make();
+  refusing->AddObserver(vtkCommand::ErrorEvent, log);
+  refusing->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+  refusing->SetInputData(tetrahedra);
+  refusing->Update();
+  CHECK(log->Errors.size() == 1 && executive->Errors.empty());
+  CHECK(!log->Errors.empty() && meshsimp_test::Mentions(log->Errors[0], "apply Extract Surface first"));
+}
+
+/// Each output point's distance to the input surface, measured independently with a cell
+/// locator, equals the Deviation array; its maximum and RMS are in the field data.
+void CheckDeviation(const Factory& make)
+{
+  vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
+  for (const int mode : { vtkMeshSimplificationFilter::TARGET_REDUCTION, vtkMeshSimplificationFilter::TARGET_MAXIMUM_ERROR })
+  {
+    vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+    filter->SetInputData(cow);
+    filter->SetTargetMode(mode);
+    filter->ComputeDeviationOn();
+    filter->Update();
+    vtkPolyData* output = filter->GetOutput();
+    vtkDataArray* deviation = output->GetPointData()->GetArray("Deviation");
+    CHECK(deviation && deviation->GetNumberOfTuples() == output->GetNumberOfPoints());
+    vtkNew<vtkCellLocator> locator;
+    locator->SetDataSet(cow);
+    locator->BuildLocator();
+    vtkNew<vtkGenericCell> cell;
+    double largest = 0.0, squares = 0.0;
+    for (vtkIdType i = 0; deviation && i < output->GetNumberOfPoints(); ++i)
+    {
+      double closest[3], distance2;
+      vtkIdType cellId;
+      int subId;
+      locator->FindClosestPoint(output->GetPoint(i), closest, cell, cellId, subId, distance2);
+      CHECK(std::abs(deviation->GetTuple1(i) - std::sqrt(distance2)) < 1e-9);
+      largest = std::max(largest, deviation->GetTuple1(i));
+      squares += deviation->GetTuple1(i) * deviation->GetTuple1(i);
+    }
+    vtkDataArray* maximum = output->GetFieldData()->GetArray("DeviationMaximum");
+    vtkDataArray* rms = output->GetFieldData()->GetArray("DeviationRMS");
+    CHECK(maximum && maximum->GetTuple1(0) == largest && largest > 0.0);
+    CHECK(rms && std::abs(rms->GetTuple1(0) - std::sqrt(squares / output->GetNumberOfPoints())) < 1e-12);
+  }
+}
+
+/// Under an error bound the reported maximum error is in the bound's units: a fraction of the
+/// diagonal when relative, input units when not; the cow scaled by 100 makes the two differ.
+void CheckErrorUnits(const Factory& make)
+{
+  vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
+  vtkNew<vtkTransform> scale;
+  scale->Scale(100, 100, 100);
+  vtkNew<vtkTransformPolyDataFilter> scaled;
+  scaled->SetTransform(scale);
+  scaled->SetInputData(cow);
+  scaled->Update();
+  const double diagonal = scaled->GetOutput()->GetLength();
+  for (const bool relative : { true, false })
+  {
+    const double bound = relative ? 0.01 : 0.01 * diagonal;
+    vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+    filter->SetInputData(scaled->GetOutput());
+    filter->SetTargetModeToMaximumError();
+    filter->SetMaximumError(bound);
+    filter->SetRelativeError(relative);
+    filter->Update();
+    const double reached = filter->GetAchievedMaximumError();
+    CHECK(reached > 0.3 * bound && reached <= bound * (1 + 1e-9));
+    vtkDataArray* field = filter->GetOutput()->GetFieldData()->GetArray("MaximumError");
+    CHECK(field && field->GetTuple1(0) == reached);
+  }
+}
+
+void CheckFilter(const Factory& make, double tolerance, bool blends)
+{
+  CheckAttributeBorders(make, tolerance, blends);
+  CheckCompositeCount(make, tolerance);
+  CheckOtherDatasets(make);
+  CheckDeviation(make);
+  CheckErrorUnits(make);
+}
+}
+
+int TestFrontEnd(int, char*[])
+{
+  CheckFilter([] { return vtkSmartPointer<vtkOctreeVertexClustering>::New(); }, 0.03, true);
+  CheckFilter([] { return vtkSmartPointer<vtkVolumeTriangleCollapse>::New(); }, 0.01, true);
+  CheckFilter([] { return vtkSmartPointer<vtkParallelDecimation>::New(); }, 0.02, false);
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
