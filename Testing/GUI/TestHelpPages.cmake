@@ -1,0 +1,31 @@
+# The plugin's help pages as ParaView 5.11 shows them: each filter's page lists the properties
+# it inherits from the common base (TargetReduction, Locked Points, ComputeDeviation), declares
+# its encoding, says that the array selections are optional, and is ASCII like the XML it is
+# made from (5.11's help browser reads undeclared pages as Latin-1: "Delta" came out as "ÎV");
+# the XML cites the papers by authors and title, not by the project's file numbers.
+#   cmake -DHELP=<build>/Plugin/paraview_help -DXML=<source>/Plugin -P TestHelpPages.cmake
+file(GLOB pages "${HELP}/filters.*.html")
+list(LENGTH pages count)
+if (NOT count EQUAL 3)
+  message(FATAL_ERROR "expected the help pages of 3 filters in ${HELP}, found ${count}")
+endif ()
+foreach (page IN LISTS pages)
+  file(READ "${page}" text)
+  foreach (needed IN ITEMS "<th>TargetReduction</th>" "<th>Locked Points</th>" "<th>ComputeDeviation</th>"
+                           "charset=utf-8" "Optional: a point array")
+    string(FIND "${text}" "${needed}" at)
+    if (at EQUAL -1)
+      message(FATAL_ERROR "${page} lacks '${needed}'")
+    endif ()
+  endforeach ()
+  if (text MATCHES "must contain" OR text MATCHES "[^\t\n\r -~]")
+    message(FATAL_ERROR "${page} claims a required array or has characters that are not ASCII")
+  endif ()
+endforeach ()
+file(GLOB xmls "${XML}/*.xml")
+foreach (xml IN LISTS xmls)
+  file(READ "${xml}" text)
+  if (text MATCHES "[^\t\n\r -~]" OR text MATCHES "paper [0-9][0-9][0-9]")
+    message(FATAL_ERROR "${xml} has characters that are not ASCII or cites a paper by number")
+  endif ()
+endforeach ()
