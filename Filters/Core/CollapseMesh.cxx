@@ -255,50 +255,97 @@ std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) co
   return list;
 }
 
+/// What LinkCondition gathers about the edge (m, next), m being the merged vertices as one.
+struct CollapseMesh::LinkState
+{
+  std::uint32_t InSet, Neighbour, Common, NextOnly; // marks: see LinkCondition
+  bool MergedOnBoundary = false;
+  std::int32_t ValenceM = 0, ValenceNext = 0;
+  std::int32_t Opposite[2] = { -1, -1 }; // far corners of the triangles (m, next, w)
+  int OppositeCount = 0, CommonCount = 0;
+  bool ThreeTriangles = false; // an edge of three or more triangles
+};
+
 bool CollapseMesh::LinkCondition(
   const std::int32_t* merged, int count, std::int32_t next, CheckScratch& scratch) const
 {
   // The state is the mesh after merging `merged` into one vertex m (triangles with two of them
-  // are gone); the question is whether the edge (m, next) may collapse. Marks: inSet = a merged
-  // vertex, neighbour = a neighbour of m, common = a neighbour of both m and next, nextOnly = a
+  // are gone); the question is whether the edge (m, next) may collapse. Marks: InSet = a merged
+  // vertex, Neighbour = a neighbour of m, Common = a neighbour of both m and next, NextOnly = a
   // neighbour of next alone.
-  const std::uint32_t inSet = this->NewMarks(4, scratch), neighbour = inSet + 1, common = inSet + 2,
-                      nextOnly = inSet + 3;
-  auto mergedCount = [&](const std::int32_t* tri) {
-    return (scratch.Marks[tri[0]] == inSet) + (scratch.Marks[tri[1]] == inSet) + (scratch.Marks[tri[2]] == inSet);
-  };
-  bool boundary = false;
+  LinkState link;
+  link.InSet = this->NewMarks(4, scratch);
+  link.Neighbour = link.InSet + 1;
+  link.Common = link.InSet + 2;
+  link.NextOnly = link.InSet + 3;
+  this->MarkMergedNeighbours(merged, count, link, scratch);
+  this->ScanAroundNext(next, link, scratch);
+  // The checks, in order: one or two triangles on the edge, with distinct far corners; the
+  // common neighbours are exactly the far corners (the link condition); no two boundary
+  // vertices joined across the interior (a pinch); nobody falls below three neighbours (two on
+  // the boundary): the merged vertex keeps m's neighbours but next and next's neighbours but
+  // m, the common ones once; each far corner loses one.
+  const std::int32_t* opposite = link.Opposite;
+  const int sides = link.OppositeCount;
+  if (link.ThreeTriangles || sides == 0 || (sides == 2 && opposite[0] == opposite[1]))
+  {
+    return false;
+  }
+  if (link.CommonCount != sides ||
+    std::any_of(opposite, opposite + sides, [&](std::int32_t w) { return scratch.Marks[w] != link.Common; }))
+  {
+    return false;
+  }
+  const bool nextOnBoundary = this->OnBoundary(next);
+  if (link.MergedOnBoundary && nextOnBoundary && sides == 2)
+  {
+    return false;
+  }
+  const std::int32_t valenceAfter = (link.ValenceM - 1) + link.ValenceNext - link.CommonCount;
+  if (valenceAfter < (link.MergedOnBoundary || nextOnBoundary ? 2 : 3))
+  {
+    return false;
+  }
+  return std::none_of(opposite, opposite + sides, [&](std::int32_t w) {
+    return this->Valence(w, scratch) - 1 < (this->OnBoundary(w) ? 2 : 3);
+  });
+}
+
+void CollapseMesh::MarkMergedNeighbours(
+  const std::int32_t* merged, int count, LinkState& link, CheckScratch& scratch) const
+{
+  // The merged vertices, and m's neighbours (the corners of triangles with one merged vertex).
   for (int i = 0; i < count; ++i)
   {
-    scratch.Marks[merged[i]] = inSet;
-    boundary = boundary || this->OnBoundary(merged[i]);
+    scratch.Marks[merged[i]] = link.InSet;
+    link.MergedOnBoundary = link.MergedOnBoundary || this->OnBoundary(merged[i]);
   }
-  std::int32_t valenceM = 0;
   for (int i = 0; i < count; ++i)
   {
     this->ForEachTriangle(merged[i], [&](std::int32_t t) {
       const std::int32_t* tri = this->Triangle(t);
-      if (mergedCount(tri) != 1)
+      if (this->MergedCount(tri, link.InSet, scratch) != 1)
       {
         return;
       }
       for (int k = 0; k < 3; ++k)
       {
-        if (scratch.Marks[tri[k]] != inSet && scratch.Marks[tri[k]] != neighbour)
+        if (scratch.Marks[tri[k]] != link.InSet && scratch.Marks[tri[k]] != link.Neighbour)
         {
-          scratch.Marks[tri[k]] = neighbour;
-          ++valenceM;
+          scratch.Marks[tri[k]] = link.Neighbour;
+          ++link.ValenceM;
         }
       }
     });
   }
-  // The far corners of the triangles (m, next, w), and the common neighbours.
-  std::int32_t opposite[2] = { -1, -1 };
-  int oppositeCount = 0, commonCount = 0, valenceNext = 0;
-  bool ok = true;
+}
+
+void CollapseMesh::ScanAroundNext(std::int32_t next, LinkState& link, CheckScratch& scratch) const
+{
+  // The far corners of the triangles (m, next, w), and next's neighbours: common or its own.
   this->ForEachTriangle(next, [&](std::int32_t t) {
     const std::int32_t* tri = this->Triangle(t);
-    const int inside = mergedCount(tri);
+    const int inside = this->MergedCount(tri, link.InSet, scratch);
     if (inside >= 2)
     {
       return; // gone with the earlier merge
@@ -306,74 +353,32 @@ bool CollapseMesh::LinkCondition(
     for (int k = 0; k < 3; ++k)
     {
       const std::int32_t w = tri[k];
-      if (w == next || scratch.Marks[w] == inSet)
+      if (w == next || scratch.Marks[w] == link.InSet)
       {
         continue;
       }
       if (inside == 1)
       {
-        if (oppositeCount == 2)
+        link.ThreeTriangles = link.ThreeTriangles || link.OppositeCount == 2;
+        if (link.OppositeCount < 2)
         {
-          ok = false; // an edge of three or more triangles
-        }
-        else
-        {
-          opposite[oppositeCount++] = w;
+          link.Opposite[link.OppositeCount++] = w;
         }
       }
-      if (scratch.Marks[w] == neighbour)
+      if (scratch.Marks[w] == link.Neighbour)
       {
-        scratch.Marks[w] = common;
-        ++commonCount;
-        ++valenceNext;
+        scratch.Marks[w] = link.Common;
+        ++link.CommonCount;
+        ++link.ValenceNext;
       }
-      else if (scratch.Marks[w] != common && scratch.Marks[w] != nextOnly)
+      else if (scratch.Marks[w] != link.Common && scratch.Marks[w] != link.NextOnly)
       {
         // Not a neighbour of m: counted once.
-        scratch.Marks[w] = nextOnly;
-        ++valenceNext;
+        scratch.Marks[w] = link.NextOnly;
+        ++link.ValenceNext;
       }
     }
   });
-  if (!ok || oppositeCount == 0 || (oppositeCount == 2 && opposite[0] == opposite[1]))
-  {
-    return false;
-  }
-  // Link condition: the common neighbours are exactly the far corners.
-  if (commonCount != oppositeCount)
-  {
-    return false;
-  }
-  for (int i = 0; i < oppositeCount; ++i)
-  {
-    if (scratch.Marks[opposite[i]] != common)
-    {
-      return false;
-    }
-  }
-  // Two boundary vertices joined across the interior would pinch the surface.
-  const bool nextOnBoundary = this->OnBoundary(next);
-  if (boundary && nextOnBoundary && oppositeCount == 2)
-  {
-    return false;
-  }
-  // Nobody falls below three neighbours (two on the boundary): the merged vertex keeps m's
-  // neighbours but next and next's neighbours but m, the common ones once; each far corner
-  // loses one.
-  const bool mergedOnBoundary = boundary || nextOnBoundary;
-  const std::int32_t valenceAfter = (valenceM - 1) + valenceNext - commonCount;
-  if (valenceAfter < (mergedOnBoundary ? 2 : 3))
-  {
-    return false;
-  }
-  for (int i = 0; i < oppositeCount; ++i)
-  {
-    if (this->Valence(opposite[i], scratch) - 1 < (this->OnBoundary(opposite[i]) ? 2 : 3))
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const

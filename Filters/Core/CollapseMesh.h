@@ -285,6 +285,16 @@ private:
   std::int32_t Valence(std::int32_t v, CheckScratch& scratch) const;
   void Neighbours(std::int32_t v, std::vector<std::int32_t>& out, CheckScratch& scratch) const;
   bool LinkCondition(const std::int32_t* merged, int count, std::int32_t next, CheckScratch& scratch) const;
+  /// LinkCondition's stages: the merged vertices and their neighbours marked; the triangles
+  /// around next scanned for the edge's far corners and the common neighbours.
+  struct LinkState;
+  void MarkMergedNeighbours(const std::int32_t* merged, int count, LinkState& link, CheckScratch& scratch) const;
+  void ScanAroundNext(std::int32_t next, LinkState& link, CheckScratch& scratch) const;
+  /// How many corners of a triangle carry the mark.
+  static int MergedCount(const std::int32_t* tri, std::uint32_t mark, const CheckScratch& scratch)
+  {
+    return (scratch.Marks[tri[0]] == mark) + (scratch.Marks[tri[1]] == mark) + (scratch.Marks[tri[2]] == mark);
+  }
   /// The collapse itself: triangles, alive flags, the kept point and class, removed triangles
   /// taken out of their other corners' spans (droppedRefs counts them); the kept vertex's new
   /// triangles go to span (its span and the merged vertices' are not set). Returns the number of

@@ -26,77 +26,94 @@ double BucketPosition(double x, double a, double alpha)
   return (1.0 + k) * x / (x + k);                    // eq. (5.6), C = 1 + k
 }
 
-void BucketOrder(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
-  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& buckets,
-  std::size_t limit, const ExecutionContext& context)
+namespace
 {
-  // One bucket per vertex on average; a counting sort by bucket, stable in the given order. The
-  // buckets are found concurrently, with a histogram of at most 4096 coarse buckets per part,
-  // which tells the ones that hold the first `limit` vertices: only their vertices are counted
-  // and placed serially, in a table of those buckets alone.
+/// BucketOrder's working layout: each vertex's bucket, and a histogram of coarse buckets (at
+/// most 4096, `shift` bits each) per part of the vertices.
+struct Buckets
+{
+  std::int32_t Count = 1, CoarseCount = 1;
+  int Shift = 0;
+  std::int64_t Parts = 1;
+  std::vector<std::int64_t> Coarse; // Parts × CoarseCount
+};
+
+/// Finds every vertex's bucket (into bucketOf) and the per-part coarse histograms, concurrently.
+Buckets FillBuckets(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
+  double a, double alpha, std::int32_t* bucketOf, const ExecutionContext& context)
+{
+  Buckets buckets;
   const std::size_t count = vertices.size();
-  const std::int32_t bucketCount = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
-  int shift = 0;
-  while (((bucketCount - 1) >> shift) >= 4096)
+  buckets.Count = static_cast<std::int32_t>(std::max<std::size_t>(1, count));
+  while (((buckets.Count - 1) >> buckets.Shift) >= 4096)
   {
-    ++shift;
+    ++buckets.Shift;
   }
-  const std::int32_t coarseCount = ((bucketCount - 1) >> shift) + 1;
-  const std::int64_t parts =
+  buckets.CoarseCount = ((buckets.Count - 1) >> buckets.Shift) + 1;
+  buckets.Parts =
     std::max<std::int64_t>(1, std::min<std::int64_t>(context.Threads, static_cast<std::int64_t>(count) / 4096));
-  std::vector<std::int64_t> coarse(static_cast<std::size_t>(parts * coarseCount), 0);
-  // Working memory, grown but never shrunk (no refill each round): each vertex's bucket, then
-  // the counting table and the gathered vertices with their buckets.
-  if (buckets.size() < count)
-  {
-    buckets.resize(count);
-  }
-  std::int32_t* bucketOf = buckets.data();
+  buckets.Coarse.assign(static_cast<std::size_t>(buckets.Parts * buckets.CoarseCount), 0);
+  const std::int64_t parts = buckets.Parts, size = static_cast<std::int64_t>(count);
   context.For(parts, [&](std::int64_t first, std::int64_t last) {
     for (std::int64_t part = first; part < last; ++part)
     {
-      std::int64_t* histogram = coarse.data() + part * coarseCount;
-      const std::int64_t size = static_cast<std::int64_t>(count);
+      std::int64_t* histogram = buckets.Coarse.data() + part * buckets.CoarseCount;
       for (std::int64_t i = size * part / parts, end = size * (part + 1) / parts; i < end; ++i)
       {
         const double x = largest > 0.0 ? importance[vertices[i]] / largest : 0.0;
-        bucketOf[i] = std::min(bucketCount - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * bucketCount));
-        ++histogram[bucketOf[i] >> shift];
+        bucketOf[i] = std::min(buckets.Count - 1, static_cast<std::int32_t>(BucketPosition(x, a, alpha) * buckets.Count));
+        ++histogram[bucketOf[i] >> buckets.Shift];
       }
     }
-  }, 10 * static_cast<std::int64_t>(count));
-  // The coarse bucket where the first `limit` vertices end: the vertices of it and the ones
-  // before are gathered, each part's in its place, concurrently; then counted and placed.
+  }, 10 * size);
+  return buckets;
+}
+
+/// The coarse bucket where the first `limit` vertices end.
+std::int32_t LastCoarseBucket(const Buckets& buckets, std::size_t limit)
+{
   std::int64_t total = 0;
-  std::int32_t lastCoarse = coarseCount - 1;
-  for (std::int32_t c = 0; c < coarseCount; ++c)
+  for (std::int32_t c = 0; c < buckets.CoarseCount; ++c)
   {
-    for (std::int64_t part = 0; part < parts; ++part)
+    for (std::int64_t part = 0; part < buckets.Parts; ++part)
     {
-      total += coarse[part * coarseCount + c];
+      total += buckets.Coarse[part * buckets.CoarseCount + c];
     }
     if (static_cast<std::size_t>(total) >= limit)
     {
-      lastCoarse = c;
-      break;
+      return c;
     }
   }
+  return buckets.CoarseCount - 1;
+}
+}
+
+void BucketOrder(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
+  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& work,
+  std::size_t limit, const ExecutionContext& context)
+{
+  // One bucket per vertex on average; a counting sort by bucket, stable in the given order. The
+  // buckets are found concurrently, with a histogram of coarse buckets per part, which tells the
+  // ones that hold the first `limit` vertices: only their vertices are gathered (each part's in
+  // its place, concurrently), counted and placed, in a table of those buckets alone. work is
+  // working memory, grown but never shrunk (no refill each round).
+  const std::size_t count = vertices.size();
+  work.resize(std::max(work.size(), count));
+  const Buckets buckets = FillBuckets(importance, vertices, largest, a, alpha, work.data(), context);
+  const std::int32_t lastCoarse = LastCoarseBucket(buckets, limit);
+  const std::int64_t parts = buckets.Parts;
   std::vector<std::int64_t> gatheredAt(static_cast<std::size_t>(parts) + 1, 0);
   for (std::int64_t part = 0; part < parts; ++part)
   {
-    const std::int64_t* histogram = coarse.data() + part * coarseCount;
+    const std::int64_t* histogram = buckets.Coarse.data() + part * buckets.CoarseCount;
     gatheredAt[part + 1] = gatheredAt[part] + std::accumulate(histogram, histogram + lastCoarse + 1, std::int64_t(0));
   }
   const std::int32_t range =
-    static_cast<std::int32_t>(std::min<std::int64_t>(bucketCount, std::int64_t(lastCoarse + 1) << shift));
+    static_cast<std::int32_t>(std::min<std::int64_t>(buckets.Count, std::int64_t(lastCoarse + 1) << buckets.Shift));
   const std::int64_t gathered = gatheredAt[parts];
-  const std::size_t needed = count + static_cast<std::size_t>(range) + 1 + 2 * static_cast<std::size_t>(gathered);
-  if (buckets.size() < needed)
-  {
-    buckets.resize(needed);
-  }
-  bucketOf = buckets.data();
-  std::int32_t* table = bucketOf + count;
+  work.resize(std::max(work.size(), count + static_cast<std::size_t>(range) + 1 + 2 * static_cast<std::size_t>(gathered)));
+  const std::int32_t* bucketOf = work.data();
+  std::int32_t* table = work.data() + count;
   std::fill(table, table + range + 1, 0);
   std::int32_t* gatheredBucket = table + range + 1;
   std::int32_t* gatheredVertex = gatheredBucket + gathered;
@@ -119,20 +136,20 @@ void BucketOrder(const double* importance, const std::vector<std::int32_t>& vert
   {
     ++table[gatheredBucket[j] + 1];
   }
-  std::int32_t last = range - 1; // the last bucket needed for the first `limit` vertices
+  std::int32_t lastBucket = range - 1; // the last bucket needed for the first `limit` vertices
   for (std::int32_t b = 0; b < range; ++b)
   {
     table[b + 1] += table[b];
     if (static_cast<std::size_t>(table[b + 1]) >= limit)
     {
-      last = b;
+      lastBucket = b;
       break;
     }
   }
-  order.resize(static_cast<std::size_t>(table[last + 1]));
+  order.resize(static_cast<std::size_t>(table[lastBucket + 1]));
   for (std::int64_t j = 0; j < gathered; ++j)
   {
-    if (gatheredBucket[j] <= last)
+    if (gatheredBucket[j] <= lastBucket)
     {
       order[table[gatheredBucket[j]]++] = gatheredVertex[j];
     }

@@ -149,10 +149,10 @@ double BucketPosition(double x, double a, double alpha);
 
 /// §5.6's O(N) ordering: the vertices sorted by the bucket of BucketPosition(importance /
 /// largest), one bucket per vertex on average, in their given order within a bucket; only the
-/// buckets holding the first `limit` vertices are written out. buckets is working memory; the
+/// buckets holding the first `limit` vertices are written out. work is working memory; the
 /// context's threads find the buckets.
 void BucketOrder(const double* importance, const std::vector<std::int32_t>& vertices, double largest,
-  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& buckets,
+  double a, double alpha, std::vector<std::int32_t>& order, std::vector<std::int32_t>& work,
   std::size_t limit = static_cast<std::size_t>(-1), const ExecutionContext& context = {});
 
 } // namespace meshsimp

@@ -26,11 +26,12 @@ struct TypedView
   std::int64_t Id(std::int64_t i) const { return static_cast<std::int64_t>(this->Ids[i]); }
 };
 
-template <typename PointType, typename IdType>
-CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const ExecutionContext& context)
+/// Which triangles are usable: three distinct ids in range, three finite corners. Counts the
+/// non-finite points into mesh.
+template <typename View>
+std::vector<std::uint8_t> MarkUsable(const View& input, CompactMesh& mesh, const ExecutionContext& context)
 {
-  const std::int64_t n = input.NumberOfPoints;
-  const std::int64_t m = input.NumberOfTriangles;
+  const std::int64_t n = input.NumberOfPoints, m = input.NumberOfTriangles;
   std::vector<std::uint8_t> finite(n);
   context.For(n, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t v = begin; v < end; ++v)
@@ -38,6 +39,7 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
       finite[v] = input.Point(v).allFinite() ? 1 : 0;
     }
   });
+  mesh.NonFinitePoints = std::count(finite.begin(), finite.end(), std::uint8_t(0));
   std::vector<std::uint8_t> usable(m);
   context.For(m, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t t = begin; t < end; ++t)
@@ -51,44 +53,21 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
       usable[t] = ok ? 1 : 0;
     }
   });
+  return usable;
+}
 
-  // Used vertices (marked 0 in vertexOf) and their bounding cube.
-  std::vector<std::int32_t> vertexOf(n, -1);
-  for (std::int64_t t = 0; t < m; ++t)
-  {
-    if (usable[t])
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        vertexOf[input.Id(3 * t + k)] = 0;
-      }
-    }
-  }
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
-  Eigen::Vector3d hi = -lo;
-  std::int64_t used = 0;
-  for (std::int64_t v = 0; v < n; ++v)
-  {
-    if (vertexOf[v] == 0)
-    {
-      lo = lo.cwiseMin(input.Point(v));
-      hi = hi.cwiseMax(input.Point(v));
-      ++used;
-    }
-  }
-
-  // Morton code of each used vertex's cell in a grid of about one cell per vertex, then a
-  // counting sort by code that keeps input order inside a cell.
-  int bits = 1;
-  while (bits < 7 && (std::int64_t(1) << (3 * (bits + 1))) <= used)
-  {
-    ++bits;
-  }
+/// The Morton code (of a grid of 2^bits cells a side over the box) of each used vertex, -1 for
+/// the others; any: whether a vertex is used at all.
+template <typename View>
+std::vector<std::int32_t> MortonCodes(const View& input, const std::vector<std::int32_t>& vertexOf,
+  const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, bool any, int bits, const ExecutionContext& context)
+{
+  const std::int64_t n = input.NumberOfPoints;
   const std::int32_t side = 1 << bits;
   // A box wider than the largest double (coordinates near ±1.8e308) is gridded at half scale,
   // which is exact; any other at its own.
-  const double shrink = used > 0 && !std::isfinite((hi - lo).maxCoeff()) ? 0.5 : 1.0;
-  const double extent = used > 0 ? (shrink * hi - shrink * lo).maxCoeff() : 0.0;
+  const double shrink = any && !std::isfinite((hi - lo).maxCoeff()) ? 0.5 : 1.0;
+  const double extent = any ? (shrink * hi - shrink * lo).maxCoeff() : 0.0;
   const double toCell = extent > 0.0 ? side / extent : 0.0;
   const Eigen::Vector3d corner = 0.5 * (shrink * lo + shrink * hi) - Eigen::Vector3d::Constant(0.5 * extent);
   std::vector<std::int32_t> code(n, -1);
@@ -114,6 +93,50 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
       code[v] = morton;
     }
   });
+  return code;
+}
+
+/// The used vertices in the Morton order of a coarse grid over their bounding cube (input order
+/// within a cell): mesh's InputVertex, Points and box; vertexOf maps input points to them (-1:
+/// unused).
+template <typename View>
+void OrderVertices(const View& input, const std::vector<std::uint8_t>& usable, CompactMesh& mesh,
+  std::vector<std::int32_t>& vertexOf, const ExecutionContext& context)
+{
+  const std::int64_t n = input.NumberOfPoints, m = input.NumberOfTriangles;
+  vertexOf.assign(n, -1); // used vertices are marked 0 first
+  for (std::int64_t t = 0; t < m; ++t)
+  {
+    for (int k = 0; k < 3 && usable[t]; ++k)
+    {
+      vertexOf[input.Id(3 * t + k)] = 0;
+    }
+  }
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+  Eigen::Vector3d hi = -lo;
+  std::int64_t used = 0;
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    if (vertexOf[v] == 0)
+    {
+      lo = lo.cwiseMin(input.Point(v));
+      hi = hi.cwiseMax(input.Point(v));
+      ++used;
+    }
+  }
+  if (used > 0)
+  {
+    mesh.Lower = lo;
+    mesh.Upper = hi;
+  }
+  // Morton code of each used vertex's cell in a grid of about one cell per vertex, then a
+  // counting sort by code that keeps input order inside a cell.
+  int bits = 1;
+  while (bits < 7 && (std::int64_t(1) << (3 * (bits + 1))) <= used)
+  {
+    ++bits;
+  }
+  const std::vector<std::int32_t> code = MortonCodes(input, vertexOf, lo, hi, used > 0, bits, context);
   std::vector<std::int32_t> start((std::size_t(1) << (3 * bits)) + 1, 0);
   for (std::int64_t v = 0; v < n; ++v)
   {
@@ -123,13 +146,6 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
     }
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  CompactMesh mesh;
-  mesh.NonFinitePoints = std::count(finite.begin(), finite.end(), std::uint8_t(0));
-  if (used > 0)
-  {
-    mesh.Lower = lo;
-    mesh.Upper = hi;
-  }
   mesh.InputVertex.resize(used);
   for (std::int64_t v = 0; v < n; ++v)
   {
@@ -146,11 +162,18 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
       mesh.Points[v] = input.Point(mesh.InputVertex[v]);
     }
   });
+}
 
-  // Triangles by their lowest vertex (counting sort, input order among equals), corners kept,
-  // and each vertex's corners (counting sort by vertex) in the same two passes, over parts of
-  // the triangles concurrently: each part counts its own, then writes from cursors that start
-  // after the earlier parts' entries, so the result is the same for any number of parts.
+/// Triangles by their lowest vertex (counting sort, input order among equals), corners kept,
+/// and each vertex's corners (counting sort by vertex) in the same two passes, over parts of
+/// the triangles concurrently: each part counts its own, then writes from cursors that start
+/// after the earlier parts' entries, so the result is the same for any number of parts.
+template <typename View>
+void OrderTriangles(const View& input, const std::vector<std::uint8_t>& usable,
+  const std::vector<std::int32_t>& vertexOf, CompactMesh& mesh, const ExecutionContext& context)
+{
+  const std::int64_t m = input.NumberOfTriangles;
+  const std::int64_t used = static_cast<std::int64_t>(mesh.Points.size());
   const std::int64_t parts = std::max<std::int64_t>(1, std::min<std::int64_t>(context.Threads, m / 65536));
   std::vector<std::vector<std::int32_t>> nextTriangle(parts), nextCorner(parts);
   auto forEachUsable = [&](std::int64_t part, auto&& f) {
@@ -214,6 +237,16 @@ CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const Ex
       });
     }
   }, 30 * m);
+}
+
+template <typename PointType, typename IdType>
+CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const ExecutionContext& context)
+{
+  CompactMesh mesh;
+  const std::vector<std::uint8_t> usable = MarkUsable(input, mesh, context);
+  std::vector<std::int32_t> vertexOf;
+  OrderVertices(input, usable, mesh, vertexOf, context);
+  OrderTriangles(input, usable, vertexOf, mesh, context);
   return mesh;
 }
 } // namespace
