@@ -211,6 +211,23 @@ struct Workspace
   std::vector<Option> Options;
 };
 
+/// Calls f(u) for each neighbour u a vertex may collapse into: any, for a simple vertex (its
+/// star's edges in the workspace); else the two along its boundary or crease.
+template <typename F>
+void ForEachTarget(const VertexState& state, const Workspace& work, F&& f)
+{
+  if (state.Type == DecimationVertexType::Simple)
+  {
+    for (const StarEdge& e : work.Edges)
+    {
+      f(e.W);
+    }
+    return;
+  }
+  f(state.Along[0]);
+  f(state.Along[1]);
+}
+
 double DistanceToLine(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   // Eq. (5.4): the height of the parallelogram over a–b through p.
@@ -401,7 +418,7 @@ VertexState Decimator::Evaluate(std::int32_t v, Workspace& work, bool starCollec
   {
     // The least error of a half-edge the vertex may collapse along, as a distance.
     double best = Never;
-    auto consider = [&](std::int32_t u) {
+    ForEachTarget(state, work, [&](std::int32_t u) {
       if (this->IsHub(u))
       {
         return;
@@ -412,19 +429,7 @@ VertexState Decimator::Evaluate(std::int32_t v, Workspace& work, bool starCollec
         best = error;
         state.Best = u;
       }
-    };
-    if (state.Type == DecimationVertexType::Simple)
-    {
-      for (const StarEdge& e : work.Edges)
-      {
-        consider(e.W);
-      }
-    }
-    else
-    {
-      consider(state.Along[0]);
-      consider(state.Along[1]);
-    }
+    });
     state.Importance = std::sqrt(best);
   }
   else
@@ -562,7 +567,7 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double
   const bool shortest = !quadric && this->Options.Choice == HalfEdgeChoice::ShortestEdge;
   const Vec3& p = this->Mesh.Point(v);
   work.Options.clear();
-  auto consider = [&](std::int32_t u) {
+  ForEachTarget(state, work, [&](std::int32_t u) {
     if (this->IsHub(u))
     {
       return;
@@ -584,19 +589,7 @@ bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double
         work.Options.push_back({ change, length, u });
       }
     }
-  };
-  if (state.Type == DecimationVertexType::Simple)
-  {
-    for (const StarEdge& e : work.Edges)
-    {
-      consider(e.W);
-    }
-  }
-  else
-  {
-    consider(state.Along[0]);
-    consider(state.Along[1]);
-  }
+  });
   std::sort(work.Options.begin(), work.Options.end(), [](const Workspace::Option& a, const Workspace::Option& b) {
     return a.Score != b.Score ? a.Score < b.Score : a.Length != b.Length ? a.Length < b.Length : a.Target < b.Target;
   });
@@ -1251,16 +1244,12 @@ std::int64_t Decimator::MoveSurvivors()
 
 void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& result) const
 {
-  // The surviving triangles and their points, with their importance and type.
-  std::vector<std::int32_t> used, kept;
-  this->Mesh.Surviving(used, result.Triangles, kept);
-  for (const std::int32_t v : used)
-  {
-    // Points MoveSurvivors left in place keep their input coordinates bit for bit.
-    const Vec3 p = !this->Moved.empty() && this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale)
-                                                          : input.Point(this->InputVertex[v]);
-    result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
-  }
+  // The surviving triangles and their points (MoveSurvivors' moved ones through the scale), with
+  // their importance and type.
+  Frame scaled;
+  scaled.Scale = this->Scale;
+  const std::vector<std::int32_t> used =
+    WriteSurvivors(this->Mesh, this->Moved, scaled, input, this->InputVertex, this->InputTriangle, result);
   // A distance (AveragePlane), or the square root of an area-weighted squared distance: divided
   // by Scale once or twice (Scale² underflows for the largest meshes).
   const bool squared = this->Options.Measure == ImportanceMeasure::Quadric;
@@ -1285,10 +1274,6 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
   {
     result.AddPointArray("PlaneDistance", std::move(distance));
   }
-  for (const std::int32_t t : kept)
-  {
-    result.TriangleSource.push_back(this->InputTriangle[t]);
-  }
   AddSurvivorSources(used, this->InputVertex, result);
   result.FieldValues.emplace_back("Rounds", static_cast<double>(result.Rounds));
   result.FieldValues.emplace_back("MovedPoints", static_cast<double>(result.MovedPoints));
@@ -1299,8 +1284,7 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
 bool ParallelDecimation(const TriangleMeshView& input, const ParallelDecimationOptions& options,
   ParallelDecimationResult& result, const ExecutionContext& context)
 {
-  Decimator decimator(options, context);
-  return decimator.Run(input, result);
+  return Decimator(options, context).Run(input, result);
 }
 
 } // namespace meshsimp

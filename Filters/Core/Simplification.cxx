@@ -188,6 +188,25 @@ void AddCollapseSources(const std::vector<CollapseRecord>& records, const std::v
   }
 }
 
+std::vector<std::int32_t> WriteSurvivors(const CollapseMesh& mesh, const std::vector<std::uint8_t>& moved,
+  const Frame& frame, const TriangleMeshView& input, const std::vector<std::int32_t>& inputVertex,
+  const std::vector<std::int32_t>& inputTriangle, SimplifiedMesh& output)
+{
+  std::vector<std::int32_t> used, kept;
+  mesh.Surviving(used, output.Triangles, kept);
+  for (const std::int32_t v : used)
+  {
+    // Points that did not move keep their input coordinates bit for bit.
+    const Eigen::Vector3d p = !moved.empty() && moved[v] ? frame.ToInput(mesh.Point(v)) : input.Point(inputVertex[v]);
+    output.Points.insert(output.Points.end(), { p.x(), p.y(), p.z() });
+  }
+  for (const std::int32_t t : kept)
+  {
+    output.TriangleSource.push_back(inputTriangle[t]);
+  }
+  return used;
+}
+
 void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::vector<std::int32_t>& inputVertex,
   SimplifiedMesh& mesh)
 {

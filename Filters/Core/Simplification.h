@@ -29,6 +29,7 @@
 namespace meshsimp
 {
 
+class CollapseMesh;
 struct CollapseRecord;
 
 /// What every algorithm takes besides its own settings (their options derive from it).
@@ -122,15 +123,24 @@ enum class Normalization : std::uint8_t
   PowerOfTwo         // scaled by a power of two (exact) when the diagonal is outside [2^-64, 2^64]
 };
 
-/// The usable part of the input, ready for an algorithm.
-struct PreparedMesh
+/// How an algorithm's coordinates relate to the input's: frame = (input − Origin) · Scale.
+struct Frame
 {
-  /// The usable triangles, renumbered (MakeCompactMesh), coordinates normalised.
-  CompactMesh Mesh;
-  /// mesh coordinates = (input − Origin) · Scale.
   Eigen::Vector3d Origin = Eigen::Vector3d::Zero();
   double Scale = 1.0;
   bool Centred = false; // Origin is used (CentreAndDiagonal)
+
+  Eigen::Vector3d ToInput(const Eigen::Vector3d& x) const
+  {
+    return this->Centred ? Eigen::Vector3d(x / this->Scale + this->Origin) : Eigen::Vector3d(x / this->Scale);
+  }
+};
+
+/// The usable part of the input, ready for an algorithm, in its frame.
+struct PreparedMesh : Frame
+{
+  /// The usable triangles, renumbered (MakeCompactMesh), coordinates normalised.
+  CompactMesh Mesh;
   /// The usable points' bounding-box diagonal, in input and in mesh units.
   double Diagonal = 0.0, MeshDiagonal = 0.0;
   /// Per vertex: 0, 1 (locked) or SharedPointLock, from the options' locks and open borders.
@@ -142,10 +152,6 @@ struct PreparedMesh
   std::int64_t TargetTriangles = 0;
   double Bound = -1.0;
 
-  Eigen::Vector3d ToInput(const Eigen::Vector3d& x) const
-  {
-    return this->Centred ? Eigen::Vector3d(x / this->Scale + this->Origin) : Eigen::Vector3d(x / this->Scale);
-  }
   /// Starts an outcome with the counts every algorithm reports.
   Outcome Report() const;
 };
@@ -162,6 +168,16 @@ PreparedMesh PrepareMesh(const TriangleMeshView& input, const SimplificationOpti
  */
 void AddCollapseSources(const std::vector<CollapseRecord>& records, const std::vector<std::int32_t>& survivors,
   const std::vector<std::int32_t>& inputVertex, SimplifiedMesh& mesh);
+
+/**
+ * The output of a collapse-engine algorithm: the surviving triangles (each with its input
+ * triangle) and their points, in input coordinates: through the frame where moved is set (an
+ * empty moved: none moved), else exactly as the input has them. Returns the mesh vertex of each
+ * output point.
+ */
+std::vector<std::int32_t> WriteSurvivors(const CollapseMesh& mesh, const std::vector<std::uint8_t>& moved,
+  const Frame& frame, const TriangleMeshView& input, const std::vector<std::int32_t>& inputVertex,
+  const std::vector<std::int32_t>& inputTriangle, SimplifiedMesh& output);
 
 /// The sources of output points that keep one input point each (weight 1).
 void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::vector<std::int32_t>& inputVertex,

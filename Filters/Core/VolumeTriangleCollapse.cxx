@@ -210,8 +210,8 @@ private:
   const ExecutionContext& Context;
   CollapseMesh Mesh;
   std::vector<std::int32_t> InputVertex, InputTriangle; // compact → input ids
-  Vec3 Origin = Vec3::Zero();                            // normalised = (input − Origin) · Scale
-  double Diagonal = 1.0, Scale = 1.0;                    // Scale = 1 / Diagonal
+  Frame Normalised;                                      // the centred box of diagonal 1
+  double Diagonal = 1.0;                                 // 1 / Normalised.Scale
   std::vector<Vec3> Normals;
   std::vector<double> Areas;
   std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
@@ -944,9 +944,8 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   result.Report = prepared.Report();
   this->InputVertex = std::move(prepared.Mesh.InputVertex);
   this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
-  this->Origin = prepared.Origin;
+  this->Normalised = prepared;
   this->Diagonal = prepared.Diagonal > 0.0 ? prepared.Diagonal : 1.0;
-  this->Scale = prepared.Scale;
   this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
   this->Mesh.SetRegions(std::move(prepared.Regions));
   if (prepared.Bound >= 0.0)
@@ -1283,21 +1282,14 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
 
 void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult& result) const
 {
-  // The surviving triangles and their points, in the compact order, back in input coordinates;
-  // each point's sources from the collapse records.
-  std::vector<std::int32_t> used, kept;
-  this->Mesh.Surviving(used, result.Triangles, kept);
+  // The surviving triangles and their points, with their errors and their sources (from the
+  // collapse records).
+  const std::vector<std::int32_t> used =
+    WriteSurvivors(this->Mesh, this->Moved, this->Normalised, input, this->InputVertex, this->InputTriangle, result);
   // Error units: length⁸ (eq. 4–5). Beyond about 1e38 that power overflows; a zero error stays
   // zero rather than becoming 0 · inf.
   const double scale8 = std::pow(this->Diagonal, 8);
   const auto inInputUnits = [scale8](double error) { return error != 0.0 ? error * scale8 : 0.0; };
-  for (const std::int32_t v : used)
-  {
-    // Points no collapse moved keep their input coordinates bit for bit.
-    const Vec3 p = this->Moved[v] ? Vec3(this->Mesh.Point(v) / this->Scale + this->Origin)
-                                  : input.Point(this->InputVertex[v]);
-    result.Points.insert(result.Points.end(), { p.x(), p.y(), p.z() });
-  }
   std::vector<double> pointError(used.size());
   for (std::size_t i = 0; i < used.size(); ++i)
   {
@@ -1314,10 +1306,6 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
       result.Report.MaximumError = std::max(result.Report.MaximumError, distance[i]);
     }
     result.AddPointArray("PlaneDistance", std::move(distance));
-  }
-  for (const std::int32_t t : kept)
-  {
-    result.TriangleSource.push_back(this->InputTriangle[t]);
   }
   AddCollapseSources(this->Mesh.Records(), used, this->InputVertex, result);
   result.SquareVolumeError = inInputUnits(result.SquareVolumeError);
@@ -1362,8 +1350,7 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
 bool VolumeTriangleCollapse(const TriangleMeshView& input, const VolumeCollapseOptions& options,
   VolumeCollapseResult& result, const ExecutionContext& context)
 {
-  VolumeCollapser collapser(options, context);
-  return collapser.Run(input, result);
+  return VolumeCollapser(options, context).Run(input, result);
 }
 
 } // namespace meshsimp
