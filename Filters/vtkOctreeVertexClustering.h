@@ -32,23 +32,18 @@
  * of its points to the representative, or to the segment to it when it collapsed to its tip.
  * With TargetMode = MaximumError every output point's cluster error is at most the bound.
  *
- * Polygons are triangulated and strips decomposed first. Vertices and lines are not simplified
- * and are dropped (a warning says how many). Degenerate triangles (repeated point ids, points
- * with NaN or infinite coordinates) are ignored. Degenerate and duplicate output triangles are
- * removed and unused points dropped.
+ * Degenerate and duplicate output triangles are removed and unused points dropped. Locked
+ * points (Locked Points, PreserveBoundary, and under MPI the points this piece shares with other
+ * pieces) are clusters of their own at their input coordinates, so the simplified pieces still
+ * meet along their common border; with PreserveAttributeBorders no cluster joins points of
+ * different values of the chosen array.
  *
- * Under MPI the points this piece shares with other pieces (border points whose coordinates are
- * on another piece's border, exchanged through the global controller) are clusters of their own
- * at their input coordinates, so the simplified pieces still meet along their common border,
- * also per block of a composite input (vtkMeshSimplificationFilter).
- *
- * Every point-data array is carried to the output as the area-weighted average over each
- * cluster (normals are recomputed from the output triangles), except what VTK does not
- * interpolate: pedigree and global ids are left out (a representative is a new point), and
- * ghost flags are those every point of the cluster has; cell data is copied from the
- * input cell of each surviving triangle. Two point arrays are added: "ClusterSize" (the number
- * of input points merged) and "ClusterError" (the cluster error above); the field data holds
- * "MaximumClusterError" and "AchievedReduction".
+ * Each output point's sources are its cluster's input points with area weights, the heaviest
+ * first: floating-point arrays are averaged with them, labels and ids come from the heaviest.
+ * Two point arrays are added: "ClusterSize" (the number of input points merged) and
+ * "ClusterError" (the cluster error above, input units); the field data holds
+ * "MaximumClusterError" (input units) and AchievedMaximumError is the largest in MaximumError's
+ * units.
  *
  * @warning Vertex clustering does not preserve topology: holes may close, thin parts may
  * become non-manifold. The output is deterministic for a given input whatever NumberOfThreads.

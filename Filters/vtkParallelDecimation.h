@@ -44,24 +44,16 @@
  * supporting planes and, along open borders, the planes through the border edges perpendicular
  * to them: Ronfard and Rossignac's measure, the one the octree filter bounds); a vertex whose
  * best half-edge would break the bound takes its next. The point array "PlaneDistance" holds
- * each output point's distance, "MaximumPlaneDistance" in the field data and
- * AchievedMaximumError the largest.
+ * each output point's distance in input units, AchievedMaximumError the largest in the bound's
+ * units.
  *
- * Points can be locked (never removed) by a point-data array whose nonzero values mark them,
- * selected as input array 0.
- * Under MPI the points this piece shares with other pieces (border points whose coordinates are
- * on another piece's border, exchanged through the global controller) are locked too, so the
- * simplified pieces still fit together, also per block of a composite input
- * (vtkMeshSimplificationFilter). Polygons are triangulated and strips decomposed first; vertex
- * and line cells are dropped (a warning says how many); triangles with repeated point ids or
- * non-finite points are ignored.
- *
- * Point data is copied from each surviving point, global ids included (they stay unique);
- * normals are recomputed. Cell data is copied from the input cell of each surviving triangle.
- * The point array "Importance" holds each output point's final importance (-1 for points that
- * are never removed) and "VertexType" its type (0 simple, 1 boundary, 2 interior-edge, 3 corner,
- * 4 complex); the field data holds
- * "AchievedReduction", "Rounds" and "MovedPoints".
+ * The target, the constraints (PreserveBoundary, Locked Points, attribute borders, the points a
+ * piece shares with other pieces under MPI), the input and the output mapping are the common
+ * ones of vtkMeshSimplificationFilter. Each output point's source is its own input point, so
+ * its point data is that point's (normals are recomputed). The point array "Importance" holds
+ * each output point's final importance (-1 for points that are never removed) and
+ * "VertexType" its type (0 simple, 1 boundary, 2 interior-edge, 3 corner, 4 complex); the
+ * field data holds "Rounds" and "MovedPoints".
  *
  * @sa vtkDecimatePro vtkQuadricDecimation vtkVolumeTriangleCollapse
  */

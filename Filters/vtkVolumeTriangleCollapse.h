@@ -31,35 +31,23 @@
  *   never makes one degenerate; a closed 2-manifold input gives a closed 2-manifold output;
  *   an angle guard (MinimumAngle, default 10°) keeps new slivers out.
  *
- * Points can be locked (kept in place, never removed) by a point-data array whose nonzero
- * values mark them: select it as input array 0, e.g.
- * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked").
- * Under MPI the points this piece shares with other pieces (border points whose coordinates are
- * on another piece's border, exchanged through the global controller) are locked too, so the
- * simplified pieces still fit together, also per block of a composite input
- * (vtkMeshSimplificationFilter).
- *
- * The triangle count is met within 1 % or one triangle (TargetReduction or
- * TargetTriangleCount); the filter stops early, with a warning, only when no legal collapse is
- * left. In MaximumError mode it
- * collapses, in the same order, as far as it can while every output point stays within the
- * bound of the planes of the input triangles it stands for (their supporting planes and, along
- * open borders, the planes through the border edges perpendicular to them: Ronfard and
+ * The target, the constraints (PreserveBoundary, Locked Points, attribute borders, the points a
+ * piece shares with other pieces under MPI), the input and the output mapping are the common
+ * ones of vtkMeshSimplificationFilter. The triangle count is met within 1 % or one triangle;
+ * the filter stops early, with a warning, only when no legal collapse is left. In MaximumError
+ * mode it collapses, in the same order, as far as it can while every output point stays within
+ * the bound of the planes of the input triangles it stands for (their supporting planes and,
+ * along open borders, the planes through the border edges perpendicular to them: Ronfard and
  * Rossignac's measure, the one the octree filter bounds); the point array "PlaneDistance" holds
- * each output point's distance, "MaximumPlaneDistance" in the field data and
- * AchievedMaximumError the largest.
+ * each output point's distance in input units, AchievedMaximumError the largest in the bound's
+ * units. Non-manifold vertices are kept in place.
  *
- * Polygons are triangulated and strips decomposed first; vertex and line cells are dropped (a
- * warning says how many); triangles with repeated point ids or non-finite points are ignored.
- * Non-manifold vertices are kept in place.
- *
- * Every point-data array is interpolated to each new vertex with the weights of its placement
- * (barycentric, along the boundary edge, or all on the corner it collapsed onto); normals are
- * recomputed. Labels and flags that VTK does not interpolate (pedigree and global ids, ghost
- * flags) are those of the surviving point, so global ids stay unique. Cell data is copied from
- * the input cell of each surviving triangle. The point array "SquareVolumeError" holds the
- * error accumulated at each output point; the field data holds "SquareVolumeError" (the sum
- * over all collapses, the paper's ΔV) and "AchievedReduction".
+ * Each output point's sources are the input points merged into it, with the weights of the
+ * placements along the way (barycentric, along the boundary edge, or all on the corner it
+ * collapsed onto): floating-point arrays are interpolated with them, labels and ids come from
+ * the surviving point. The point array "SquareVolumeError" holds the error accumulated at each
+ * output point; the field data holds "SquareVolumeError" (the sum over all collapses, the
+ * paper's volume error, in length to the 8th power).
  *
  * @sa vtkQuadricDecimation vtkDecimatePro vtkOctreeVertexClustering
  */
