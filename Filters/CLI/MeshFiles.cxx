@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshFiles.h"
 
-#include "OFFFile.h"
 #include "vtkOFFReader.h"
+#include "vtkOFFWriter.h"
 
 #include "vtkCallbackCommand.h"
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
 #include "vtkNew.h"
@@ -81,26 +79,6 @@ vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& extension, const std:
   }
   return nullptr;
 }
-
-bool WriteOFF(vtkPolyData* mesh, const std::string& path, std::string& error)
-{
-  meshsimp::PolygonMesh off;
-  off.Points.resize(3 * mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, off.Points.data() + 3 * i);
-  }
-  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    off.FaceIds.insert(off.FaceIds.end(), ids, ids + size);
-    off.FaceOffsets.push_back(static_cast<std::int64_t>(off.FaceIds.size()));
-  }
-  return meshsimp::WriteOFF(path, off, error);
-}
 }
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
@@ -145,10 +123,10 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
   int ok = 1;
   if (extension == "off")
   {
-    if (!WriteOFF(mesh, path, error))
-    {
-      return false;
-    }
+    vtkNew<vtkOFFWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(mesh);
+    ok = writer->Write();
   }
   else if (extension == "ply")
   {
