@@ -8,34 +8,21 @@
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
 // one JSON object; time_ms is the filter's own work (file I/O excluded), the median of N runs
 // with --repeat N (the protocol of the shared benchmark kit's peers).
-#include "OFFFile.h"
-#include "vtkOFFReader.h"
+#include "MeshFiles.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkCellArray.h"
-#include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
-#include "vtkOBJWriter.h"
-#include "vtkPLYReader.h"
-#include "vtkPLYWriter.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPolyDataReader.h"
-#include "vtkPolyDataWriter.h"
-#include "vtkSTLReader.h"
-#include "vtkSTLWriter.h"
 #include "vtkSmartPointer.h"
-#include "vtkXMLPolyDataReader.h"
-#include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -54,165 +41,6 @@ namespace
 {
   std::fprintf(stderr, "meshsimplify: %s\n", message.c_str());
   std::exit(1);
-}
-
-std::string Extension(const std::string& path)
-{
-  const std::size_t dot = path.rfind('.');
-  std::string extension = dot == std::string::npos ? "" : path.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
-  return extension;
-}
-
-vtkSmartPointer<vtkPolyData> Read(const std::string& path)
-{
-  const std::string extension = Extension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (extension == "off")
-  {
-    auto off = vtkSmartPointer<vtkOFFReader>::New();
-    off->SetFileName(path.c_str());
-    reader = off;
-  }
-  else if (extension == "ply")
-  {
-    auto ply = vtkSmartPointer<vtkPLYReader>::New();
-    ply->SetFileName(path.c_str());
-    reader = ply;
-  }
-  else if (extension == "stl")
-  {
-    auto stl = vtkSmartPointer<vtkSTLReader>::New();
-    stl->SetFileName(path.c_str());
-    reader = stl;
-  }
-  else if (extension == "obj")
-  {
-    auto obj = vtkSmartPointer<vtkOBJReader>::New();
-    obj->SetFileName(path.c_str());
-    reader = obj;
-  }
-  else if (extension == "vtp")
-  {
-    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    vtp->SetFileName(path.c_str());
-    reader = vtp;
-  }
-  else if (extension == "vtk")
-  {
-    auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
-    legacy->SetFileName(path.c_str());
-    reader = legacy;
-  }
-  else
-  {
-    Fail("cannot read '" + path + "': unknown extension (.off .ply .stl .obj .vtp .vtk)");
-  }
-  if (FILE* probe = std::fopen(path.c_str(), "rb"))
-  {
-    std::fclose(probe);
-  }
-  else
-  {
-    Fail("cannot open '" + path + "'");
-  }
-  // Readers report a bad file through error events, not always through their error code.
-  bool failed = false;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&failed);
-  onError->SetCallback([](vtkObject*, unsigned long, void* flag, void*) { *static_cast<bool*>(flag) = true; });
-  reader->AddObserver(vtkCommand::ErrorEvent, onError);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
-  reader->Update();
-  vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (failed || reader->GetErrorCode() != 0 || !output)
-  {
-    Fail("cannot read '" + path + "'");
-  }
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->ShallowCopy(output);
-  return copy;
-}
-
-void WriteOFF(vtkPolyData* mesh, const std::string& path)
-{
-  meshsimp::PolygonMesh off;
-  off.Points.resize(3 * mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    mesh->GetPoint(i, off.Points.data() + 3 * i);
-  }
-  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    off.FaceIds.insert(off.FaceIds.end(), ids, ids + size);
-    off.FaceOffsets.push_back(static_cast<std::int64_t>(off.FaceIds.size()));
-  }
-  std::string error;
-  if (!meshsimp::WriteOFF(path, off, error))
-  {
-    Fail(error);
-  }
-}
-
-void Write(vtkPolyData* mesh, const std::string& path)
-{
-  const std::string extension = Extension(path);
-  int ok = 1;
-  if (extension == "off")
-  {
-    WriteOFF(mesh, path);
-  }
-  else if (extension == "ply")
-  {
-    vtkNew<vtkPLYWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(mesh);
-    writer->SetFileTypeToBinary();
-    ok = writer->Write();
-  }
-  else if (extension == "stl")
-  {
-    vtkNew<vtkSTLWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(mesh);
-    writer->SetFileTypeToBinary();
-    ok = writer->Write();
-  }
-  else if (extension == "obj")
-  {
-    vtkNew<vtkOBJWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(mesh);
-    ok = writer->Write();
-  }
-  else if (extension == "vtp")
-  {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(mesh);
-    // Inline binary: VTK 9.2's reader rejects some appended base64 files its writer makes.
-    writer->SetDataModeToBinary();
-    ok = writer->Write();
-  }
-  else if (extension == "vtk")
-  {
-    vtkNew<vtkPolyDataWriter> writer;
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(mesh);
-    ok = writer->Write();
-  }
-  else
-  {
-    Fail("cannot write '" + path + "': unknown extension (.off .ply .stl .obj .vtp .vtk)");
-  }
-  if (!ok)
-  {
-    Fail("cannot write '" + path + "'");
-  }
 }
 
 double ParseNumber(const std::string& option, const std::string& text)
@@ -548,11 +376,19 @@ void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
 int main(int argc, char* argv[])
 {
   const Arguments arguments = ParseArguments(argc, argv);
-  vtkSmartPointer<vtkPolyData> mesh = Read(arguments.Input);
+  std::string fileError;
+  vtkSmartPointer<vtkPolyData> mesh = meshfiles::ReadMesh(arguments.Input, fileError);
+  if (!mesh)
+  {
+    Fail(fileError);
+  }
   vtkSmartPointer<vtkMeshSimplificationFilter> filter = MakeFilter(arguments);
   filter->SetInputData(mesh);
   const double milliseconds = RunRepeated(filter, arguments.Repeat, arguments.Input);
-  Write(filter->GetOutput(), arguments.Output);
+  if (!meshfiles::WriteMesh(filter->GetOutput(), arguments.Output, fileError))
+  {
+    Fail(fileError);
+  }
   if (arguments.Json)
   {
     PrintJson(arguments, mesh, filter, milliseconds);

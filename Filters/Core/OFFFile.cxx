@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <type_traits>
@@ -161,7 +163,7 @@ bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& err
   std::FILE* out = std::fopen(path.c_str(), "w");
   if (!out)
   {
-    error = "cannot write " + path;
+    error = "cannot write " + path + ": " + std::strerror(errno);
     return false;
   }
   const std::size_t faces = mesh.FaceOffsets.size() - 1;
@@ -182,7 +184,7 @@ bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& err
   const bool ok = std::fclose(out) == 0;
   if (!ok)
   {
-    error = "error writing " + path;
+    error = "error writing " + path + ": " + std::strerror(errno);
   }
   return ok;
 }

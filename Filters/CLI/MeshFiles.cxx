@@ -1,0 +1,347 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MeshFiles.h"
+
+#include "MeshFileChecks.h"
+#include "vtkOFFReader.h"
+#include "vtkOFFWriter.h"
+
+#include "vtkCellArray.h"
+#include "vtkLogger.h"
+#include "vtkOBJReader.h"
+#include "vtkOBJWriter.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
+#include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSTLReader.h"
+#include "vtkSTLWriter.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
+namespace meshfiles
+{
+namespace
+{
+/// Takes the messages VTK would print (its warnings and errors, through the output window
+/// and the logger) while it lives, and keeps the first as a reason.
+class MessageCollector : public vtkOutputWindow
+{
+public:
+  static MessageCollector* New();
+  vtkTypeMacro(MessageCollector, vtkOutputWindow);
+
+  void DisplayText(const char* text) override
+  {
+    if (this->First.empty() && text)
+    {
+      this->First = Reason(text);
+    }
+  }
+
+  std::string First;
+
+private:
+  /// The message line of VTK's "ERROR: In file, line N\nvtkClass (0x...): message\n\n", or of
+  /// a generic warning, without the class and address.
+  static std::string Reason(const std::string& text)
+  {
+    std::string line = text.substr(0, text.find('\n'));
+    if (line.find(": In ") != std::string::npos && text.find('\n') != std::string::npos)
+    {
+      const std::size_t next = text.find('\n') + 1;
+      line = text.substr(next, text.find('\n', next) - next);
+    }
+    const std::size_t address = line.find(" (0x");
+    const std::size_t close = line.find("): ");
+    if (address != std::string::npos && close != std::string::npos && address < close)
+    {
+      line = line.substr(close + 3);
+    }
+    return line.empty() ? "VTK reported an empty message" : line;
+  }
+};
+vtkStandardNewMacro(MessageCollector);
+
+/// While it lives, VTK prints nothing: its messages go to a MessageCollector.
+class QuietVTK
+{
+public:
+  QuietVTK()
+    : Previous(vtkOutputWindow::GetInstance())
+    , Verbosity(vtkLogger::GetCurrentVerbosityCutoff())
+  {
+    vtkOutputWindow::SetInstance(this->Collector);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~QuietVTK()
+  {
+    vtkOutputWindow::SetInstance(this->Previous);
+    vtkLogger::SetStderrVerbosity(this->Verbosity);
+  }
+  QuietVTK(const QuietVTK&) = delete;
+  QuietVTK& operator=(const QuietVTK&) = delete;
+
+  /// The first message VTK gave, or "".
+  const std::string& FirstMessage() const { return this->Collector->First; }
+
+private:
+  vtkNew<MessageCollector> Collector;
+  vtkSmartPointer<vtkOutputWindow> Previous;
+  vtkLogger::Verbosity Verbosity;
+};
+
+template <typename Reader>
+vtkSmartPointer<vtkAlgorithm> NewReader(const std::string& path)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
+template <typename Writer>
+void NoSettings(Writer*)
+{
+}
+
+void BinaryPLY(vtkPLYWriter* writer)
+{
+  writer->SetFileTypeToBinary();
+}
+
+void BinarySTL(vtkSTLWriter* writer)
+{
+  writer->SetFileTypeToBinary();
+}
+
+void InlineBinaryVTP(vtkXMLPolyDataWriter* writer)
+{
+  // Inline binary: VTK 9.2's reader rejects some appended base64 files its writer makes.
+  writer->SetDataModeToBinary();
+}
+
+/// Writes mesh to path with a Writer set up by Configure.
+template <typename Writer, void (*Configure)(Writer*) = NoSettings<Writer>>
+bool Write(vtkPolyData* mesh, const std::string& path)
+{
+  vtkNew<Writer> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(mesh);
+  Configure(writer);
+  return writer->Write() == 1;
+}
+
+/// A format by extension: the check of its files (none for OFF: our reader checks every
+/// line itself), its reader and its writer.
+struct MeshFormat
+{
+  const char* Extension;
+  std::string (*Check)(const std::string& path);
+  vtkSmartPointer<vtkAlgorithm> (*NewReader)(const std::string& path);
+  bool (*Write)(vtkPolyData* mesh, const std::string& path);
+};
+
+const MeshFormat Formats[] = {
+  { "off", nullptr, NewReader<vtkOFFReader>, Write<vtkOFFWriter> },
+  { "ply", CheckPLY, NewReader<vtkPLYReader>, Write<vtkPLYWriter, BinaryPLY> },
+  { "stl", CheckSTL, NewReader<vtkSTLReader>, Write<vtkSTLWriter, BinarySTL> },
+  { "obj", CheckOBJ, NewReader<vtkOBJReader>, Write<vtkOBJWriter> },
+  { "vtp", CheckVTP, NewReader<vtkXMLPolyDataReader>,
+    Write<vtkXMLPolyDataWriter, InlineBinaryVTP> },
+  { "vtk", CheckLegacyVTK, NewReader<vtkPolyDataReader>, Write<vtkPolyDataWriter> },
+};
+const char* Extensions = "(.off .ply .stl .obj .vtp .vtk)";
+
+const MeshFormat* FindFormat(const std::string& path)
+{
+  const std::size_t dot = path.rfind('.');
+  std::string extension = dot == std::string::npos ? "" : path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+  for (const MeshFormat& format : Formats)
+  {
+    if (extension == format.Extension)
+    {
+      return &format;
+    }
+  }
+  return nullptr;
+}
+
+/// What every input must be before its format is looked at, in order; the first that fails
+/// is the reason.
+struct FileCheck
+{
+  const char* Failure;
+  bool (*Passes)(const std::string& path);
+};
+
+const FileCheck CommonChecks[] = {
+  { "no such file",
+    [](const std::string& path) {
+      std::error_code error;
+      return std::filesystem::exists(path, error);
+    } },
+  { "not a regular file (a directory, a device or a pipe)",
+    [](const std::string& path) {
+      std::error_code error;
+      return std::filesystem::is_regular_file(path, error);
+    } },
+  { "cannot be opened", [](const std::string& path) { return std::ifstream(path).is_open(); } },
+  { "empty file",
+    [](const std::string& path) {
+      std::error_code error;
+      return std::filesystem::file_size(path, error) > 0 && !error;
+    } },
+};
+
+/// The first failed check of the file, "" when it may be read.
+std::string CheckFile(const MeshFormat& format, const std::string& path)
+{
+  for (const FileCheck& check : CommonChecks)
+  {
+    if (!check.Passes(path))
+    {
+      return check.Failure;
+    }
+  }
+  return format.Check ? format.Check(path) : "";
+}
+
+/// The first cell of cells whose offsets are out of order or whose point ids name no point.
+template <typename Array>
+std::string CheckCellIds(Array* offsets, Array* connectivity, vtkIdType points, const char* kind)
+{
+  const vtkIdType count = offsets->GetNumberOfValues() - 1;
+  if (count < 0 || offsets->GetValue(0) != 0 ||
+    offsets->GetValue(count) != connectivity->GetNumberOfValues())
+  {
+    return std::string("the ") + kind + " offsets do not span their point ids";
+  }
+  for (vtkIdType cell = 0; cell < count; ++cell)
+  {
+    if (offsets->GetValue(cell + 1) < offsets->GetValue(cell))
+    {
+      return std::string("the ") + kind + " offsets decrease at cell " + std::to_string(cell);
+    }
+    for (vtkIdType k = offsets->GetValue(cell); k < offsets->GetValue(cell + 1); ++k)
+    {
+      const vtkIdType id = connectivity->GetValue(k);
+      if (id < 0 || id >= points)
+      {
+        return std::string(kind) + " cell " + std::to_string(cell) + " names point " +
+          std::to_string(id) + " of " + std::to_string(points);
+      }
+    }
+  }
+  return "";
+}
+
+/// The mesh's cells must be sound for the filters: readers pass on what the file says.
+std::string CheckCells(vtkPolyData* mesh)
+{
+  const struct
+  {
+    vtkCellArray* Cells;
+    const char* Kind;
+  } kinds[] = { { mesh->GetVerts(), "vertex" }, { mesh->GetLines(), "line" },
+    { mesh->GetPolys(), "polygon" }, { mesh->GetStrips(), "strip" } };
+  for (const auto& kind : kinds)
+  {
+    vtkCellArray* cells = kind.Cells;
+    const std::string problem = !cells ? ""
+      : cells->IsStorage64Bit()
+      ? CheckCellIds(cells->GetOffsetsArray64(), cells->GetConnectivityArray64(),
+          mesh->GetNumberOfPoints(), kind.Kind)
+      : CheckCellIds(cells->GetOffsetsArray32(), cells->GetConnectivityArray32(),
+          mesh->GetNumberOfPoints(), kind.Kind);
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  return "";
+}
+
+/// Runs the reader of a file that passed its checks; nullptr with the reason on failure.
+vtkSmartPointer<vtkPolyData> RunReader(
+  const MeshFormat& format, const std::string& path, const QuietVTK& quiet, std::string& reason)
+{
+  vtkSmartPointer<vtkAlgorithm> reader = format.NewReader(path);
+  reader->Update();
+  vtkPolyData* output = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  reason = quiet.FirstMessage();
+  if (reason.empty() && (reader->GetErrorCode() != 0 || !output))
+  {
+    reason = "the reader failed";
+  }
+  if (reason.empty())
+  {
+    reason = CheckCells(output);
+  }
+  if (!reason.empty())
+  {
+    return nullptr;
+  }
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(output);
+  return copy;
+}
+}
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
+{
+  const MeshFormat* format = FindFormat(path);
+  if (!format)
+  {
+    error = "cannot read '" + path + "': unknown extension " + Extensions;
+    return nullptr;
+  }
+  QuietVTK quiet;
+  std::string reason = CheckFile(*format, path);
+  if (reason.empty())
+  {
+    reason = quiet.FirstMessage(); // a check that asked VTK (the XML parser) may have failed
+  }
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (reason.empty())
+  {
+    mesh = RunReader(*format, path, quiet, reason);
+  }
+  if (!mesh)
+  {
+    if (reason.rfind(path + ": ", 0) == 0)
+    {
+      reason.erase(0, path.size() + 2); // our OFF reader names the file too
+    }
+    error = "cannot read '" + path + "': " + reason;
+  }
+  return mesh;
+}
+
+bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
+{
+  const MeshFormat* format = FindFormat(path);
+  if (!format)
+  {
+    error = "cannot write '" + path + "': unknown extension " + Extensions;
+    return false;
+  }
+  QuietVTK quiet;
+  const bool written = format->Write(mesh, path);
+  if (written && quiet.FirstMessage().empty())
+  {
+    return true;
+  }
+  error = "cannot write '" + path + "': " +
+    (quiet.FirstMessage().empty() ? "the writer failed" : quiet.FirstMessage());
+  return false;
+}
+
+} // namespace meshfiles

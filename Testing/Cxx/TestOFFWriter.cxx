@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkOFFWriter: vtkOFFReader reads back what it writes (points bit for bit, polygons of any
+// size, the cow's counts); vertex and line cells are left out with a warning; a file that
+// cannot be written is an error and Write() returns 0.
+#include "vtkOFFReader.h"
+#include "vtkOFFWriter.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTestErrorObserver.h"
+
+#include "TestHelpers.h"
+
+#include <cstdlib>
+#include <string>
+
+namespace
+{
+/// A triangle, a quad and a pentagon over points whose coordinates need all 17 digits, and a
+/// vertex and a line cell.
+vtkSmartPointer<vtkPolyData> MixedCells()
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const double coordinates[][3] = { { 0.1, 1.0 / 3.0, -2.5e300 }, { 1e-300, 2.0, 3.0 },
+    { -0.7, 0.2, 5e-324 }, { 1.0 / 7.0, 4.0, 0.0 }, { 3.0, 3.0, 3.0 }, { 2.0, -1.0, 1e10 } };
+  for (const double* p : coordinates)
+  {
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType triangle[] = { 0, 1, 2 }, quad[] = { 0, 2, 3, 1 }, pentagon[] = { 1, 3, 4, 5, 0 };
+  polys->InsertNextCell(3, triangle);
+  polys->InsertNextCell(4, quad);
+  polys->InsertNextCell(5, pentagon);
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vertex[] = { 4 }, line[] = { 4, 5 };
+  verts->InsertNextCell(1, vertex);
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(2, line);
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->SetVerts(verts);
+  mesh->SetLines(lines);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> ReadOFF(const std::string& path)
+{
+  vtkNew<vtkOFFReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+
+void RoundTripIsExact(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh = MixedCells();
+  vtkNew<vtkOFFWriter> writer;
+  vtkNew<vtkTest::ErrorObserver> observer;
+  writer->AddObserver(vtkCommand::WarningEvent, observer);
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  CHECK(writer->Write() == 1);
+  CHECK(observer->GetWarning() && !observer->GetError()); // the vertex and the line
+  vtkSmartPointer<vtkPolyData> back = ReadOFF(path);
+  CHECK(back->GetNumberOfPoints() == mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints() && i < back->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    mesh->GetPoint(i, a);
+    back->GetPoint(i, b);
+    CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]);
+  }
+  CHECK(back->GetNumberOfCells() == 3 && back->GetNumberOfPolys() == 3);
+  for (vtkIdType c = 0; c < 3 && c < back->GetNumberOfPolys(); ++c)
+  {
+    vtkNew<vtkIdList> written, read;
+    mesh->GetPolys()->GetCellAtId(c, written);
+    back->GetPolys()->GetCellAtId(c, read);
+    CHECK(written->GetNumberOfIds() == read->GetNumberOfIds());
+    for (vtkIdType k = 0; k < written->GetNumberOfIds() && k < read->GetNumberOfIds(); ++k)
+    {
+      CHECK(written->GetId(k) == read->GetId(k));
+    }
+  }
+}
+
+void CowKeepsItsCounts(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> cow = ReadOFF(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
+  vtkNew<vtkOFFWriter> writer;
+  writer->SetInputData(cow);
+  writer->SetFileName(path.c_str());
+  CHECK(writer->Write() == 1);
+  vtkSmartPointer<vtkPolyData> back = ReadOFF(path);
+  CHECK(back->GetNumberOfPoints() == 2904 && back->GetNumberOfPolys() == 5804);
+}
+
+void UnwritablePathFails()
+{
+  vtkNew<vtkOFFWriter> writer;
+  vtkNew<vtkTest::ErrorObserver> observer;
+  writer->AddObserver(vtkCommand::ErrorEvent, observer);
+  writer->AddObserver(vtkCommand::WarningEvent, observer);
+  writer->SetInputData(MixedCells());
+  writer->SetFileName("/nonexistent-directory/mesh.off");
+  CHECK(writer->Write() == 0);
+  CHECK(observer->GetError() && writer->GetErrorCode() != 0);
+  CHECK(observer->GetErrorMessage().find("/nonexistent-directory/mesh.off") != std::string::npos);
+}
+}
+
+int TestOFFWriter(int, char*[])
+{
+  RoundTripIsExact(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterMixed.off");
+  CowKeepsItsCounts(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterCow.off");
+  UnwritablePathFails();
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
