@@ -5,7 +5,6 @@
 #include "vtkNew.h"
 #include "vtkXMLDataElement.h"
 #include "vtkXMLDataParser.h"
-#include "vtkXMLPolyDataReader.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -1422,6 +1421,11 @@ struct Scan
   int Version = 0; // 10 * major + minor
   std::uintmax_t Size = 0;
   long long Tuples = -1; // of the current POINT_DATA or CELL_DATA
+  // In an ASCII FIELD block: the arrays still to come, the current array's values still to
+  // come, and whether a METADATA block (ended by an empty line) is being skipped.
+  long long FieldArrays = 0;
+  long long FieldValues = 0;
+  bool InMetadata = false;
 };
 
 bool IsCellSection(const std::string& keyword)
@@ -1533,6 +1537,51 @@ long long AttributeWidth(const std::vector<std::string>& words, std::size_t& typ
   return 0;
 }
 
+/// A line inside an ASCII FIELD block (words empty for an empty line): an array's header
+/// 'name components tuples type' with a type vtkDataReader knows (it crashes on others), its
+/// values, 'NULL_ARRAY', or a METADATA block. Sets handled when the line belonged to the block.
+std::string CheckFieldLine(Scan& scan, const std::vector<std::string>& words, bool& handled)
+{
+  handled = scan.InMetadata || scan.FieldValues > 0 || (scan.FieldArrays > 0 && !words.empty());
+  if (scan.InMetadata)
+  {
+    scan.InMetadata = !words.empty();
+    return "";
+  }
+  if (scan.FieldValues > 0)
+  {
+    scan.FieldValues -= static_cast<long long>(words.size());
+    return "";
+  }
+  if (!handled)
+  {
+    return "";
+  }
+  if (words[0] == "METADATA")
+  {
+    scan.InMetadata = true;
+    return "";
+  }
+  --scan.FieldArrays;
+  if (words[0] == "NULL_ARRAY")
+  {
+    return "";
+  }
+  long long components = 0, tuples = 0;
+  if (words.size() != 4 || !ParseCount(words[1], components) ||
+    !ParseCount(words[2], tuples) || !IsType(words[3]))
+  {
+    return "field array line " + Quote(words[0]) +
+      " is not 'name components tuples type' with a known type";
+  }
+  long long count = 0;
+  const std::string problem = components > INT_MAX
+    ? "field array " + Quote(words[0]) + " with " + words[1] + " components"
+    : Fits(scan, words, 2, components, words[3], count);
+  scan.FieldValues = problem.empty() ? components * tuples : 0;
+  return problem;
+}
+
 /// One line of the file that declares a count: a section, an attribute or a field array.
 std::string CheckCountLine(Scan& scan, const std::vector<std::string>& words)
 {
@@ -1555,7 +1604,9 @@ std::string CheckCountLine(Scan& scan, const std::vector<std::string>& words)
   }
   if (keyword == "field")
   {
-    return Fits(scan, words, 2, 1, "char", count);
+    const std::string problem = Fits(scan, words, 2, 1, "char", count);
+    scan.FieldArrays = scan.Binary ? 0 : count;
+    return problem;
   }
   if (keyword == "lookup_table" && words.size() == 3)
   {
@@ -1667,16 +1718,20 @@ std::string CheckOBJ(const std::string& path)
 
 std::string CheckVTP(const std::string& path)
 {
-  // VTK's XML parser reads the structure; reading the data is what the checks guard.
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->UpdateInformation();
-  vtkXMLDataParser* parser = reader->GetXMLParser();
-  vtkXMLDataElement* root = parser ? parser->GetRootElement() : nullptr;
+  // VTK's XML parser reads the structure, alone: vtkXMLPolyDataReader's own first pass already
+  // trusts the arrays (a field array without a type crashes it).
+  std::ifstream stream(path, std::ios::binary);
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetStream(&stream);
+  if (!parser->Parse())
+  {
+    return "its XML is not well formed";
+  }
+  vtkXMLDataElement* root = parser->GetRootElement();
   vtkXMLDataElement* polyData = root ? root->FindNestedElementWithName("PolyData") : nullptr;
   if (!polyData)
   {
-    return ""; // the parser has reported why, or the reader will
+    return "it has no PolyData element";
   }
   vtp::XmlFile file;
   file.In.open(path, std::ios::binary);
@@ -1708,7 +1763,12 @@ std::string CheckLegacyVTK(const std::string& path)
   {
     const std::vector<std::string> words = SplitBlanks(line);
     long long size = 0;
-    problem = words.empty() ? "" : legacy::CheckCountLine(scan, words);
+    bool fieldLine = false;
+    problem = legacy::CheckFieldLine(scan, words, fieldLine);
+    if (problem.empty() && !fieldLine && !words.empty())
+    {
+      problem = legacy::CheckCountLine(scan, words);
+    }
     if (problem.empty() && !words.empty() && legacy::IsCellSection(words[0]) &&
       scan.Version < 50 && ParseCount(words.size() > 2 ? words[2] : "", size))
     {

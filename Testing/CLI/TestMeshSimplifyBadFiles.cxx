@@ -3,8 +3,9 @@
 // exit with status 1 and one line "meshsimplify: cannot read '<file>': <reason>", never by a
 // signal. The same tetrahedron, undamaged, must be read in every format (the checks refuse no
 // sound file). Before the checks, the PLY files without faces and z, truncated or with a short
-// line, the OBJ naming missing texture coordinates, and the STL, VTP and VTK declaring 2^31 - 1
-// entries crashed it; most others gave no reason or pages of VTK messages.
+// line, the OBJ naming missing texture coordinates, the STL, VTP and VTK declaring 2^31 - 1
+// entries, and field arrays of no or an unknown type in VTP and VTK crashed it; most others
+// gave no reason or pages of VTK messages.
 //
 //   TestMeshSimplifyBadFiles <meshsimplify> <work directory>
 #include <sys/stat.h>
@@ -191,12 +192,35 @@ std::string LegacyVTK(const std::string& numberOfPoints = "4")
                      "3 0 3 2\n3 1 2 3\n";
 }
 
+/// The legacy tetrahedron with a FIELD block before its points.
+std::string LegacyVTKWithField(const std::string& field)
+{
+  const std::string sound = LegacyVTK();
+  const std::size_t points = sound.find("POINTS");
+  return sound.substr(0, points) + field + sound.substr(points);
+}
+
+/// The XML tetrahedron with a FieldData element.
+std::string VTPWithField(const std::string& field)
+{
+  const std::string sound = VTP();
+  const std::size_t piece = sound.find("    <Piece");
+  return sound.substr(0, piece) + "    <FieldData>\n" + field + "    </FieldData>\n" +
+    sound.substr(piece);
+}
+
 std::vector<Case> SoundFiles()
 {
   return { { "sound_ascii.ply", AsciiPLY() }, { "sound_le.ply", BinaryPLY(false) },
     { "sound_be.ply", BinaryPLY(true) }, { "sound_binary.stl", BinarySTL(4) },
     { "sound_ascii.stl", AsciiSTL() }, { "sound.obj", OBJ() }, { "sound.off", OFF() },
-    { "sound.vtp", VTP() }, { "sound.vtk", LegacyVTK() } };
+    { "sound.vtp", VTP() }, { "sound.vtk", LegacyVTK() },
+    { "sound_field.vtk",
+      LegacyVTKWithField("FIELD FieldData 2\nuv 2 2 double\n1 2\n3 4\nMETADATA\n"
+                         "COMPONENT_NAMES\nu\nv\n\nn 1 1 int\n5\n") },
+    { "sound_field.vtp",
+      VTPWithField("      <DataArray type=\"Float64\" Name=\"x\" NumberOfTuples=\"1\" "
+                   "format=\"ascii\">1</DataArray>\n") } };
 }
 
 // ------------------------------------------------------------------------- damaged copies
@@ -247,6 +271,11 @@ std::vector<Case> DamagedFiles()
     { "points_2g.vtp", VTP("2147483647") },
     { "points_2g.vtk", LegacyVTK("2147483647") },
     { "garbage.vtk", Garbage(1000) },
+    { "field_type_garbled.vtk", LegacyVTKWithField("FIELD FieldData 1\nx 1 1 d0ouble\n1\n") },
+    { "field_type_a_number.vtk", LegacyVTKWithField("FIELD FieldData 1\nx 1 1 8e-12\n") },
+    { "field_without_type.vtp",
+      VTPWithField("      <DataArray Name=\"x\" NumberOfTuples=\"1\" format=\"ascii\">1"
+                   "</DataArray>\n") },
     { "empty.ply", "" },
     { "empty.stl", "" },
     { "empty.vtp", "" },
