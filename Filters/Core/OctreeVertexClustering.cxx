@@ -35,6 +35,21 @@ struct Plane
   double Distance(const Vec3& x) const { return std::abs(this->Normal.dot(x) + this->Offset); }
 };
 
+/// An axis-aligned box of the normalised space: where a representative may lie.
+struct Box
+{
+  Vec3 Lower, Upper;
+  bool Contains(const Vec3& x) const
+  {
+    return (x.array() >= this->Lower.array()).all() && (x.array() <= this->Upper.array()).all();
+  }
+  Vec3 Clamp(const Vec3& x) const { return x.cwiseMax(this->Lower).cwiseMin(this->Upper); }
+  Box Joined(const Box& other) const
+  {
+    return { this->Lower.cwiseMin(other.Lower), this->Upper.cwiseMax(other.Upper) };
+  }
+};
+
 struct OctreeNode
 {
   Vec3 Center;
@@ -130,7 +145,13 @@ private:
   void SetKey(HeapEntry& entry, bool counting) const;
   Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
-  Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
+  /// Where a cluster of the cell's may have its point: the cell within the input's box.
+  Box Region(const OctreeNode& cell) const
+  {
+    const Vec3 half = Vec3::Constant(cell.Half);
+    return { (cell.Center - half).cwiseMax(this->Bounds.Lower), (cell.Center + half).cwiseMin(this->Bounds.Upper) };
+  }
+  Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const Box& region,
     const std::int32_t* members, std::int32_t count) const;
   double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count,
     bool folded, const Vec3* ring) const;
@@ -142,7 +163,7 @@ private:
   template <typename Member>
   bool ProtrudingTip(const Member& member, const std::int32_t* members, std::int32_t count,
     std::int32_t& tip, Vec3& ring) const;
-  double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
+  double Represent(std::int32_t cluster, const Quadric& q, const Box& region,
     const std::int32_t* members, std::int32_t count, Vec3& x) const;
   std::int32_t PartitionNode(std::int32_t node);
   /// A leaf just made, to be clustered and scanned by ClusterLeaves.
@@ -195,14 +216,15 @@ private:
   /// Refines to the target and returns the surviving triangles (see the body), or false when
   /// aborted.
   bool RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors);
-  /// The output points being made (Finalize): each one's cluster, its vertices (CSR) and the
-  /// state of its representative.
+  /// The output points being made (Finalize): each one's cluster, its vertices (CSR), the
+  /// state of its representative and where it may lie (the box of its clusters' regions).
   struct OutputPoints
   {
     std::vector<std::int32_t> PointOf;   // vertex → output point, −1 for none
     std::vector<std::int32_t> ClusterOf; // output point → its cluster
     std::vector<std::int32_t> Offsets, Members;
     std::vector<Vec3> Position, Centre, Ring; // Ring: where a protruding one meets the rest
+    std::vector<Box> Regions;
     std::vector<Quadric> FaceQuadric;
     std::vector<std::uint8_t> Folded, Protruding; // see Folded; Protruding keeps its tip
     std::int64_t Size() const { return static_cast<std::int64_t>(this->ClusterOf.size()); }
@@ -227,6 +249,7 @@ private:
   PreparedMesh Prepared;
   Outcome Start; // the prepared mesh's report
   std::vector<Vec3> P;
+  Box Bounds; // of P
   std::vector<HeapEntry> Batch; // NextBatch's
   VertexTriangleAdjacency Adjacency;
   // Unit normal of each triangle, zero for a zero-area one; its plane passes through each of its
@@ -282,6 +305,12 @@ void Clusterer::PrepareGeometry()
   this->P = std::move(this->Prepared.Mesh.Points);
   this->Locked = std::move(this->Prepared.Locks);
   this->Regions = std::move(this->Prepared.Regions);
+  this->Bounds = { Vec3::Constant(std::numeric_limits<double>::infinity()),
+    Vec3::Constant(-std::numeric_limits<double>::infinity()) };
+  for (const Vec3& p : this->P)
+  {
+    this->Bounds = this->Bounds.Joined({ p, p });
+  }
 
   this->TriangleNormals.assign(m, Vec3::Zero());
   this->TriangleAreas.assign(m, 0.0);
@@ -380,29 +409,37 @@ void Clusterer::PrepareQuadrics()
   std::vector<double>().swap(this->TriangleAreas);
 }
 
-Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
+Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const Box& region,
   const std::int32_t* members, std::int32_t count) const
 {
-  // Eq. (3) when the system is well conditioned and its solution stays near the cell (the
-  // cell grown by half its size on each side); otherwise the paper's fallback: the weighted
-  // centre or one of the cluster's vertices, whichever has the least error. Ties keep the centre.
+  // Eq. (3) when the system is well conditioned and its solution lies in the region (the
+  // cluster's cell within the input's box), so that a point never leaves its cell; otherwise
+  // the paper's fallback, the weighted centre or one of the cluster's vertices, or the solution
+  // clamped into the region, whichever has the least error. Ties keep the centre.
   Vec3 x;
-  if (MinimizeQuadric(q, x) &&
-    (x - cell.Center).cwiseAbs().maxCoeff() <= 2.0 * cell.Half)
+  const bool solved = MinimizeQuadric(q, x);
+  if (solved && region.Contains(x))
   {
     return x;
   }
   Vec3 best = centre;
   double bestError = q.Evaluate(centre);
   const double tolerance = 1e-12 * (q.A00 + q.A11 + q.A22);
-  for (std::int32_t i = 0; i < count; ++i)
-  {
-    const double error = q.Evaluate(this->P[members[i]]);
+  const auto consider = [&](const Vec3& candidate) {
+    const double error = q.Evaluate(candidate);
     if (error < bestError - tolerance)
     {
-      best = this->P[members[i]];
+      best = candidate;
       bestError = error;
     }
+  };
+  if (solved)
+  {
+    consider(region.Clamp(x));
+  }
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    consider(this->P[members[i]]);
   }
   return best;
 }
@@ -490,7 +527,7 @@ bool Clusterer::ProtrudingTip(const Member& member, const std::int32_t* members,
   return (this->P[tip] - ring).norm() > radius;
 }
 
-double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
+double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Box& region,
   const std::int32_t* members, std::int32_t count, Vec3& x) const
 {
   // A protruding cluster collapses to its tip, so a leg becomes a cone instead of vanishing
@@ -506,7 +543,7 @@ double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Octree
     x = this->P[tip];
     return this->ClusterError(x, members, count, true, &ring);
   }
-  x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count);
+  x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), region, members, count);
   return this->ClusterError(x, members, count, folded, nullptr);
 }
 
@@ -626,6 +663,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
     this->VertexCluster[v] = firstCluster + root[i - begin];
   }
   key = 0.0;
+  const Box region = this->Region(cell);
   for (std::int32_t c = 0; c < count; ++c)
   {
     const std::int32_t* members = scratch.Members.data() + scratch.Offsets[c];
@@ -638,7 +676,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
       continue; // a lone vertex stays where it is: no error
     }
     key = std::max(key,
-      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), cell, members, size, x));
+      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), region, members, size, x));
   }
 
   canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
@@ -1352,6 +1390,7 @@ void Clusterer::PlaceRepresentatives(OutputPoints& points) const
   points.FaceQuadric.resize(count);
   points.Folded.assign(count, 0);
   points.Protruding.assign(count, 0);
+  points.Regions.resize(count);
   this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
     std::vector<std::int32_t> own;
     for (std::int64_t p = b; p < e; ++p)
@@ -1361,6 +1400,15 @@ void Clusterer::PlaceRepresentatives(OutputPoints& points) const
       const std::int32_t size = points.Count(p);
       points.Centre[p] = this->ClusterCentre(members, size);
       points.FaceQuadric[p] = this->ClusterQuadric(members, size);
+      points.Regions[p] = this->Region(this->Nodes[this->ClusterNodes[cluster]]);
+      for (std::int32_t i = 0; i < size; ++i)
+      {
+        const std::int32_t joined = this->VertexCluster[members[i]];
+        if (joined != cluster)
+        {
+          points.Regions[p] = points.Regions[p].Joined(this->Region(this->Nodes[this->ClusterNodes[joined]]));
+        }
+      }
       points.Folded[p] = this->Folded(members, size) ? 1 : 0;
       // The point of the given members: their tip when they protrude, else the cluster's.
       const auto place = [&](const std::int32_t* set, std::int32_t setSize, bool isFolded,
@@ -1445,9 +1493,8 @@ void Clusterer::IterateSecondError(const std::vector<Survivor>& survivors, Outpu
         {
           continue;
         }
-        const OctreeNode& cell = this->Nodes[this->ClusterNodes[points.ClusterOf[p]]];
-        const Vec3 x =
-          this->PlaceRepresentative(quadric[p], points.Centre[p], cell, points.MembersOf(p), points.Count(p));
+        const Vec3 x = this->PlaceRepresentative(
+          quadric[p], points.Centre[p], points.Regions[p], points.MembersOf(p), points.Count(p));
         if (!bounded || this->ClusterError(x, points.MembersOf(p), points.Count(p), points.Folded[p], nullptr) <= bound)
         {
           next[p] = x;
@@ -1461,11 +1508,13 @@ void Clusterer::IterateSecondError(const std::vector<Survivor>& survivors, Outpu
 void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
   OctreeClusteringResult& result) const
 {
-  // Points in input coordinates (locked ones exactly as they were), their cluster errors, and
-  // their sources: the cluster's input points by area weight, the heaviest first.
+  // Points in input coordinates (locked ones exactly as they were) and their cells, their
+  // cluster errors, and their sources: the cluster's input points by area weight, the heaviest
+  // first.
   const std::int64_t count = points.Size();
   const std::vector<std::int32_t>& inputVertex = this->Prepared.Mesh.InputVertex;
   result.Points.resize(3 * count);
+  result.PointCells.resize(6 * count);
   result.SourceOffsets = points.Offsets;
   result.SourcePoints.resize(points.Members.size());
   result.SourceWeights.resize(points.Members.size());
@@ -1475,11 +1524,18 @@ void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const Output
     {
       const std::int32_t* members = points.MembersOf(p);
       const std::int32_t size = points.Count(p);
-      const Vec3 x = this->Locked[members[0]] ? this->Input.Point(inputVertex[members[0]])
-                                               : this->Prepared.ToInput(points.Position[p]);
+      // Clamped: the way back to input units may round a point on the box's face out of it.
+      const auto toInput = [this](const Vec3& y) {
+        return Vec3(this->Prepared.ToInput(y).cwiseMax(this->Prepared.Mesh.Lower).cwiseMin(this->Prepared.Mesh.Upper));
+      };
+      const Vec3 x =
+        this->Locked[members[0]] ? this->Input.Point(inputVertex[members[0]]) : toInput(points.Position[p]);
+      const Vec3 lower = toInput(points.Regions[p].Lower), upper = toInput(points.Regions[p].Upper);
       for (int k = 0; k < 3; ++k)
       {
         result.Points[3 * p + k] = x[k];
+        result.PointCells[6 * p + k] = lower[k];
+        result.PointCells[6 * p + 3 + k] = upper[k];
       }
       clusterSize[p] = size;
       clusterError[p] = this->ClusterError(points.Position[p], members, size, points.Folded[p],
