@@ -185,6 +185,8 @@ int TestOctreeVertexClustering(int, char*[])
   TestThreadsAndInput(cow);
   TestTriangleCountMode(cow);
   TestInputStorageKinds(cow);
+  // An open mesh at a triangle count, its rim kept in place (PreserveBoundary).
+  meshsimp_test::CheckPreservedRim<vtkOctreeVertexClustering>(0.03);
   meshsimp_test::CheckPointLabels<vtkOctreeVertexClustering>(cow);
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
