@@ -34,6 +34,12 @@
  * point of the joined set (its tip when it protrudes) or the cluster's own, whichever has the
  * smaller cluster error over the set.
  *
+ * Where the input is a surface, clustering makes no open or non-manifold edge that it did not
+ * have: a cluster left with one triangle (a flap) joins a neighbour, and a cluster at an edge
+ * that tears is split into pieces (parts of its cell) that merge under the link condition, as
+ * a last resort into single points. With a count target this mending may add at most a quarter
+ * of the target's triangles; past that the count wins and some tears stay.
+ *
  * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
  * the supporting plane of any triangle of its cluster's related set (every input triangle with
  * a vertex in the cluster) and to the boundary planes of its boundary edges; for a folded
