@@ -413,6 +413,9 @@ private:
   std::vector<std::int32_t> TornLabels(const std::vector<Survivor>& survivors,
     const std::vector<std::int32_t>& labels, const std::vector<std::uint8_t>& tried,
     std::vector<std::int32_t>& explode) const;
+  /// Vertices to make pieces of their own so that no locked vertex is left without a triangle
+  /// (see the body), sorted.
+  std::vector<std::int32_t> BareLocks(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& labels) const;
   /// Splits the vertices of one label (members) into pieces that each merge without tearing the
   /// surface (see the body); new pieces take labels next, next + 1, ...
   std::size_t SplitIntoPieces(const std::vector<std::int32_t>& members, const std::vector<std::int32_t>& joined,
@@ -428,9 +431,11 @@ private:
   /// output has at most budget triangles (< 0: no limit; see the body); survivors are the
   /// output triangles. Returns false when aborted.
   bool Settle(std::int64_t target, std::int64_t budget, std::vector<Survivor>& survivors, Mending& mending);
-  /// One mending step: splits the torn labels into pieces, the exploded ones into single points.
+  /// One mending step: splits the torn labels into pieces, the exploded ones into single points,
+  /// then makes each detached vertex a piece of its own.
   void MendOnce(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& torn,
-    const std::vector<std::int32_t>& explode, std::vector<std::uint8_t>& tried, Mending& mending) const;
+    const std::vector<std::int32_t>& explode, const std::vector<std::int32_t>& detach,
+    std::vector<std::uint8_t>& tried, Mending& mending) const;
   /// Keeps the largest connected group of the vertices (sorted) in their label; the others go
   /// back to their clusters' labels (each is a flap that joined, and may join again).
   void KeepLargestGroup(std::vector<std::int32_t>& vertices, const std::vector<std::int32_t>& clusters,
@@ -1080,7 +1085,8 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
     for (auto k = std::lower_bound(neighbours.begin(), neighbours.end(), static_cast<std::int64_t>(c) << 32);
          k != neighbours.end() && (*k >> 32) == c; ++k)
     {
-      const double d = (this->P[v] - this->ClusterPositions[static_cast<std::int32_t>(*k & 0xffffffff)]).norm();
+      const std::int32_t other = static_cast<std::int32_t>(*k & 0xffffffff);
+      const double d = (this->P[v] - this->ClusterPositions[other]).norm();
       nearest = found ? std::min(nearest, d) : d;
       found = true;
     }
@@ -1577,7 +1583,10 @@ std::vector<std::uint8_t> Clusterer::LabelKinds(const std::vector<std::int32_t>&
 
 std::int32_t Clusterer::FlapTarget(const std::array<std::int32_t, 3>& corners, int k) const
 {
+  // Joined, the flap's vertices go to the target's point: one farther from its own point than
+  // half its cell's edge would cost more than the cell's error, so the flap is split as a tear.
   const Vec3& from = this->ClusterPositions[this->VertexCluster[corners[k]]];
+  const double reach = this->Nodes[this->ClusterNodes[this->VertexCluster[corners[k]]]].Half;
   std::int32_t target = -1;
   for (const int j : { (k + 1) % 3, (k + 2) % 3 })
   {
@@ -1585,7 +1594,8 @@ std::int32_t Clusterer::FlapTarget(const std::array<std::int32_t, 3>& corners, i
     const bool sameRegion = this->Regions.empty() || this->Regions[corners[j]] == this->Regions[corners[k]];
     const bool nearer = target < 0 ||
       (this->ClusterPositions[o] - from).squaredNorm() < (this->ClusterPositions[target] - from).squaredNorm();
-    target = !this->Locked[corners[j]] && sameRegion && nearer ? o : target;
+    const bool within = (this->ClusterPositions[o] - from).norm() <= reach;
+    target = !this->Locked[corners[j]] && sameRegion && nearer && within ? o : target;
   }
   return target;
 }
@@ -1826,8 +1836,9 @@ bool Clusterer::Settle(std::int64_t target, std::int64_t budget, std::vector<Sur
 {
   // Refined to the target, flaps join their neighbours (JoinFlaps), and what still tears is
   // split into pieces (MendOnce), again while a split leaves a tear. With a count target,
-  // mending stops before the count passes the budget (the step that passes it is undone): the
-  // count then wins over the tears left, and the next round of RefineToTarget coarsens.
+  // mending stops before the count passes the budget (back to the last state without a bare
+  // lock): the count then wins over the tears left, and the next round of RefineToTarget
+  // coarsens. A locked vertex without a triangle (BareLocks) is mended whatever the budget.
   if (!this->Refine(target, this->Bound()))
   {
     return false;
@@ -1837,38 +1848,90 @@ bool Clusterer::Settle(std::int64_t target, std::int64_t budget, std::vector<Sur
   mending.PieceNodes.clear();
   const std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
   std::vector<std::uint8_t> tried;
-  std::vector<std::int32_t> explode;
+  std::vector<std::int32_t> torn, explode;
   Mending before;
   std::vector<Survivor> previous;
-  for (bool first = true;; first = false)
+  bool saved = false, locksOnly = false;
+  for (;;)
   {
     survivors = this->SurvivingTriangles(mending.Label);
-    if (budget >= 0 && static_cast<std::int64_t>(survivors.size()) > budget)
+    const std::vector<std::int32_t> detach = this->BareLocks(survivors, mending.Label);
+    if (!locksOnly && budget >= 0 && static_cast<std::int64_t>(survivors.size()) > budget)
     {
-      if (!first)
+      if (saved)
       {
         mending = std::move(before);
         survivors = std::move(previous);
+        return true;
       }
-      return true;
+      locksOnly = true;
     }
     tried.resize(clusters + mending.PieceNodes.size(), 0);
-    const std::vector<std::int32_t> torn = this->TornLabels(survivors, mending.Label, tried, explode);
-    if (torn.empty() && explode.empty())
+    torn.clear();
+    explode.clear();
+    if (!locksOnly)
+    {
+      torn = this->TornLabels(survivors, mending.Label, tried, explode);
+    }
+    if (torn.empty() && explode.empty() && detach.empty())
     {
       return true;
     }
-    if (budget >= 0)
+    if (budget >= 0 && detach.empty())
     {
       before = mending;
       previous = survivors;
+      saved = true;
     }
-    this->MendOnce(survivors, torn, explode, tried, mending);
+    this->MendOnce(survivors, torn, explode, detach, tried, mending);
   }
 }
 
+std::vector<std::int32_t> Clusterer::BareLocks(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& labels) const
+{
+  // A locked vertex v stays an output point used by the output's triangles, as in the collapse
+  // filters. It is a label of its own, so it has none left only where each triangle (v, a, b)
+  // at it has a and b in one label. Its nearest such ring neighbour a is detached (a piece of
+  // its own): the triangles (v, a, b) then keep three labels, and a detach takes no triangle
+  // from a locked vertex. Tears it may make are mended like any other.
+  std::vector<std::uint8_t> used(this->P.size(), 0);
+  for (const Survivor& survivor : survivors)
+  {
+    for (const std::int32_t v : survivor.Corners)
+    {
+      used[v] = 1;
+    }
+  }
+  std::vector<std::int32_t> detach;
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    std::int32_t nearest = -1;
+    double best = std::numeric_limits<double>::infinity();
+    for (const Corner* c = this->Adjacency.Begin(v); this->Locked[v] && !used[v] && c != this->Adjacency.End(v); ++c)
+    {
+      for (const std::int32_t u : { c->Next, c->Previous })
+      {
+        const double d = (this->P[u] - this->P[v]).squaredNorm();
+        if (labels[c->Next] == labels[c->Previous] && (d < best || (d == best && u < nearest)))
+        {
+          best = d;
+          nearest = u;
+        }
+      }
+    }
+    if (nearest >= 0)
+    {
+      detach.push_back(nearest);
+    }
+  }
+  std::sort(detach.begin(), detach.end());
+  detach.erase(std::unique(detach.begin(), detach.end()), detach.end());
+  return detach;
+}
+
 void Clusterer::MendOnce(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& torn,
-  const std::vector<std::int32_t>& explode, std::vector<std::uint8_t>& tried, Mending& mending) const
+  const std::vector<std::int32_t>& explode, const std::vector<std::int32_t>& detach,
+  std::vector<std::uint8_t>& tried, Mending& mending) const
 {
   // Each torn label is split into pieces that merge without tearing (SplitIntoPieces), the
   // flaps it took seeding the piece that keeps it. A label that tears although every label at
@@ -1921,6 +1984,12 @@ void Clusterer::MendOnce(const std::vector<Survivor>& survivors, const std::vect
     {
       mending.Cluster[v] = labels[v];
     }
+  }
+  for (const std::int32_t v : detach)
+  {
+    const std::int32_t from = mending.Cluster[v];
+    mending.PieceNodes.push_back(from < clusters ? this->ClusterNodes[from] : mending.PieceNodes[from - clusters]);
+    labels[v] = mending.Cluster[v] = next++;
   }
 }
 
@@ -2452,27 +2521,43 @@ bool Clusterer::RefineToTarget(std::int64_t target, std::vector<Survivor>& survi
   // Duplicates removed at the end, flaps that join and leaves split so that nothing tears
   // (Settle) make the real count differ, so the estimate's target is corrected and refinement
   // resumes, or the latest splits are undone, until the real count is within 2 % of the target
-  // (at most 6 rounds). The first split of a clustering without triangles is never undone: no
-  // count is nearer the target. An undone split made against a tear goes back to the heap
-  // under its error: Settle splits it again if it still tears.
-  std::int64_t internalTarget = target;
+  // (at most 6 rounds). Mending moves the count in steps, so corrections stay between the
+  // estimate targets seen to fall short and to overshoot; when they meet, or in the last
+  // round, the target of the nearest count so far is taken again. The first split of a
+  // clustering without triangles is never undone. An undone split made against a tear goes
+  // back to the heap under its error: Settle splits it again if it still tears.
+  std::int64_t internalTarget = target, below = 0, above = std::numeric_limits<std::int64_t>::max();
+  std::int64_t best = target, nearest = std::numeric_limits<std::int64_t>::max();
   const std::int64_t budget = target < 0 ? -1 : target + target / 4;
-  for (int round = 0;; ++round)
+  for (int round = 0, last = 0;; ++round)
   {
     if (!this->Settle(internalTarget, budget, survivors, mending))
     {
       return false;
     }
     const std::int64_t excess = static_cast<std::int64_t>(survivors.size()) - target;
-    if (target < 0 || round == 5 || std::abs(excess) <= target / 50)
+    if (target < 0 || last || std::abs(excess) <= target / 50)
     {
       return true;
     }
-    // Mending can add many triangles (a torn region split into pieces): the estimate's target
-    // is scaled by the ratio of estimate to real count, and stays a count (positive).
-    internalTarget = std::max<std::int64_t>(1,
+    best = std::abs(excess) < nearest ? internalTarget : best;
+    nearest = std::min(nearest, std::abs(excess));
+    (excess < 0 ? below : above) = internalTarget;
+    // The estimate's target scaled by the ratio of estimate to real count, a count (positive).
+    std::int64_t next = std::max<std::int64_t>(1,
       std::llround(static_cast<double>(this->SurvivingCount) * target / std::max<std::size_t>(1, survivors.size())));
-    if (excess < 0)
+    if (next <= below || next >= above)
+    {
+      next = below + (above - below) / 2;
+    }
+    last = round == 4 || next <= below || next >= above;
+    next = last ? best : next;
+    if (next == internalTarget)
+    {
+      return true;
+    }
+    internalTarget = next;
+    if (this->SurvivingCount <= internalTarget)
     {
       if (this->Heap.empty())
       {
