@@ -158,7 +158,7 @@ public:
       {
         for (const std::int32_t u : { c->Next, c->Previous })
         {
-          if (this->Single(u) && std::binary_search(this->Members.begin(), this->Members.end(), u))
+          if (this->Single(u)) // only members are single: other labels are not negative
           {
             candidates.emplace(this->Held(u), -u);
           }
