@@ -5,7 +5,9 @@
 #include "vtkOFFReader.h"
 #include "vtkOctreeVertexClustering.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -30,6 +32,7 @@
 #include <cmath>
 #include <iostream>
 #include <set>
+#include <string>
 
 namespace
 {
@@ -227,15 +230,27 @@ void TestWaveletIsoSurface()
 void TestLockedPoints(vtkPolyData* cow)
 {
   // Every 40th point locked by a point array selected as input array 0 (the common Locked
-  // Points of the front end): each is an output point, bit for bit.
+  // Points of the front end): each is an output point, bit for bit. Locked points are clusters
+  // of their own, with triangles kept around them, so the count may end above the target:
+  // then by at most 10 %, and a warning must say that the locks are why.
   vtkSmartPointer<vtkPolyData> marked = meshsimp_test::WithLockArray(cow, 40);
   vtkNew<vtkOctreeVertexClustering> filter;
   filter->SetInputData(marked);
   filter->SetTargetReduction(0.9);
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Locked");
+  std::string warnings;
+  vtkNew<vtkCallbackCommand> onWarning;
+  onWarning->SetClientData(&warnings);
+  onWarning->SetCallback([](vtkObject*, unsigned long, void* text, void* message) {
+    *static_cast<std::string*>(text) += static_cast<const char*>(message);
+  });
+  filter->AddObserver(vtkCommand::WarningEvent, onWarning);
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
-  CHECK(std::abs(out->GetNumberOfPolys() - 580) <= 0.03 * 580);
+  const vtkIdType count = out->GetNumberOfPolys();
+  CHECK(std::abs(count - 580) <= 0.03 * 580 ||
+    (count > 580 && count <= 1.1 * 580 &&
+      warnings.find("locked points are clusters of their own") != std::string::npos));
   const std::set<std::array<double, 3>> outputPoints = meshsimp_test::PointSet(out);
   for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); i += 40)
   {
