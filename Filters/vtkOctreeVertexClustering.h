@@ -18,8 +18,9 @@
  *   separate parts of a model (two fingers, two sheets) stay apart;
  * - the representative minimises the quadric of the planes of its related triangles and of
  *   planes through boundary edges (BoundaryPlanes), refined by ErrorIterations rounds of the
- *   paper's e2 iteration; when the quadric is near singular the best of the cluster's vertices
- *   and its weighted centre is used.
+ *   paper's e2 iteration; when the quadric is near singular, or its minimum lies outside the
+ *   cluster's cell, the best of the cluster's vertices, its weighted centre and the minimum
+ *   clamped into the cell is used, so that no point leaves its cell or the input's bounds.
  *
  * Beyond the paper: a cluster that would lose all its triangles (a leg folded onto its
  * neighbours) is split first; a folded cluster that sticks out collapses to its tip, so thin

@@ -9,7 +9,9 @@
 #include <iterator>
 #include <limits>
 #include <numeric>
+#include <map>
 #include <queue>
+#include <unordered_map>
 
 namespace meshsimp
 {
@@ -33,6 +35,21 @@ struct Plane
   Vec3 Normal = Vec3::Zero(); // unit, or zero for a zero-area triangle
   double Offset = 0.0;
   double Distance(const Vec3& x) const { return std::abs(this->Normal.dot(x) + this->Offset); }
+};
+
+/// An axis-aligned box of the normalised space: where a representative may lie.
+struct Box
+{
+  Vec3 Lower, Upper;
+  bool Contains(const Vec3& x) const
+  {
+    return (x.array() >= this->Lower.array()).all() && (x.array() <= this->Upper.array()).all();
+  }
+  Vec3 Clamp(const Vec3& x) const { return x.cwiseMax(this->Lower).cwiseMin(this->Upper); }
+  Box Joined(const Box& other) const
+  {
+    return { this->Lower.cwiseMin(other.Lower), this->Upper.cwiseMax(other.Upper) };
+  }
 };
 
 struct OctreeNode
@@ -76,6 +93,195 @@ struct LeafScan
   std::int64_t Surviving = 0;   // triangles with three distinct clusters in the count range
 };
 
+/// (neighbour, third) label pairs, sorted and unique: the edges at a point and the third
+/// corners of their triangles; also label pairs (a < b) as such.
+using Thirds = std::vector<std::pair<std::int32_t, std::int32_t>>;
+
+/// Whether one of the edges in thirds has a single third: it borders one triangle.
+bool SingleThird(const Thirds& thirds)
+{
+  for (std::size_t k = 0; k < thirds.size(); ++k)
+  {
+    const bool alone = (k == 0 || thirds[k - 1].first != thirds[k].first) &&
+      (k + 1 == thirds.size() || thirds[k + 1].first != thirds[k].first);
+    if (alone)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * Pieces of a label's vertices grown by merges that keep the surface a surface (see
+ * Clusterer::SplitIntoPieces). The members (sorted) start as single points, labelled −2 − v (no
+ * other label is negative); a piece grows from some vertices by merging its members' neighbours
+ * among the members while the merge passes the link condition on the mesh as it stands (every
+ * other vertex at its label's point): the labels that both the vertex and the piece neighbour
+ * are exactly the third corners of their shared triangles, one or two; for two, not both on an
+ * open border (which would pinch it) and no tetrahedron closed. A label without triangles
+ * (shown false: a cap, which will join) is no neighbour that counts. Merges that pass keep a
+ * surface a surface (Dey, Edelsbrunner, Guha and Nekhayev, "Topology preserving edge
+ * contraction"), so the pieces tear nothing.
+ */
+class PieceGrowth
+{
+public:
+  PieceGrowth(const VertexTriangleAdjacency& adjacency, const std::vector<std::int32_t>& members,
+    const std::vector<std::uint8_t>& shown, std::vector<std::int32_t>& labels)
+    : Adjacency(adjacency)
+    , Members(members)
+    , Shown(shown)
+    , Labels(labels)
+  {
+    for (const std::int32_t v : members)
+    {
+      labels[v] = -2 - v;
+    }
+  }
+
+  /// Whether v is a member in no piece yet.
+  bool Single(std::int32_t v) const { return this->Labels[v] == -2 - v; }
+
+  /// Grows the piece of the given label from [begin, end): candidates by the number of their
+  /// triangles the piece holds, most first (compact pieces leave few hidden cycles); a vertex
+  /// that fails is tried again when that number grows.
+  void Grow(std::int32_t label, const std::int32_t* begin, const std::int32_t* end)
+  {
+    this->Label = label;
+    this->Near.clear();
+    this->Piece.clear();
+    std::priority_queue<std::pair<std::int32_t, std::int32_t>> candidates;
+    const auto add = [&](std::int32_t w) {
+      this->Merge(w);
+      for (const Corner* c = this->Adjacency.Begin(w); c != this->Adjacency.End(w); ++c)
+      {
+        for (const std::int32_t u : { c->Next, c->Previous })
+        {
+          if (this->Single(u)) // only members are single: other labels are not negative
+          {
+            candidates.emplace(this->Held(u), -u);
+          }
+        }
+      }
+    };
+    std::for_each(begin, end, add);
+    for (; !candidates.empty(); candidates.pop())
+    {
+      const std::int32_t w = -candidates.top().second;
+      if (this->Single(w) && candidates.top().first == this->Held(w) && this->Mergeable(w))
+      {
+        add(w);
+      }
+    }
+  }
+
+private:
+  /// How many of w's triangles the piece holds.
+  std::int32_t Held(std::int32_t w) const
+  {
+    std::int32_t count = 0;
+    for (const Corner* c = this->Adjacency.Begin(w); c != this->Adjacency.End(w); ++c)
+    {
+      count += this->Labels[c->Next] == this->Label || this->Labels[c->Previous] == this->Label ? 1 : 0;
+    }
+    return count;
+  }
+
+  /// The triangle (a, b, c) of labels, as the piece sees it: its other labels counted sign times.
+  void Tally(std::int32_t a, std::int32_t b, std::int32_t c, std::int32_t sign)
+  {
+    if ((a == this->Label || b == this->Label || c == this->Label) && a != b && b != c && a != c)
+    {
+      for (const std::int32_t x : { a, b, c })
+      {
+        this->Near[x] += x != this->Label ? sign : 0;
+      }
+    }
+  }
+
+  void Merge(std::int32_t w)
+  {
+    for (const Corner* c = this->Adjacency.Begin(w); c != this->Adjacency.End(w); ++c)
+    {
+      if (this->Labels[w] != this->Label)
+      {
+        this->Tally(this->Labels[w], this->Labels[c->Next], this->Labels[c->Previous], -1);
+      }
+      this->Tally(this->Label, this->Labels[c->Next], this->Labels[c->Previous], 1);
+    }
+    this->Labels[w] = this->Label;
+    this->Piece.push_back(w);
+  }
+
+  bool Mergeable(std::int32_t w)
+  {
+    this->EdgeThirds(&w, &w + 1, this->Ends);
+    const Thirds& ends = this->Ends;
+    const auto first = std::lower_bound(ends.begin(), ends.end(),
+      std::make_pair(this->Label, std::numeric_limits<std::int32_t>::min()));
+    auto last = first;
+    while (last != ends.end() && last->first == this->Label)
+    {
+      ++last;
+    }
+    for (const auto& end : ends)
+    {
+      const auto found = this->Near.find(end.first);
+      if (end.first != this->Label && found != this->Near.end() && found->second > 0 &&
+        (end.first < 0 || this->Shown[end.first]) &&
+        std::none_of(first, last, [&end](const auto& e) { return e.second == end.first; }))
+      {
+        return false; // a common neighbour beyond the shared triangles
+      }
+    }
+    if (last - first != 2)
+    {
+      return last - first == 1;
+    }
+    const std::pair<std::int32_t, std::int32_t> opposite(first->second, (first + 1)->second);
+    const bool closesTetrahedron = std::binary_search(ends.begin(), ends.end(), opposite);
+    if (!closesTetrahedron && !SingleThird(ends))
+    {
+      return true;
+    }
+    this->EdgeThirds(this->Piece.data(), this->Piece.data() + this->Piece.size(), this->PieceEnds);
+    const Thirds& piece = this->PieceEnds;
+    return !(SingleThird(ends) && SingleThird(piece)) &&
+      !(closesTetrahedron && std::binary_search(piece.begin(), piece.end(), opposite));
+  }
+
+  /// The edges at the point of the vertices [begin, end) (one label) with their thirds: each
+  /// triangle of theirs that keeps three labels gives its two edges there its third corners.
+  void EdgeThirds(const std::int32_t* begin, const std::int32_t* end, Thirds& thirds) const
+  {
+    thirds.clear();
+    for (const std::int32_t* u = begin; u != end; ++u)
+    {
+      for (const Corner* c = this->Adjacency.Begin(*u); c != this->Adjacency.End(*u); ++c)
+      {
+        const std::int32_t x = this->Labels[c->Next], y = this->Labels[c->Previous];
+        if (x != y && x != this->Labels[*u] && y != this->Labels[*u])
+        {
+          thirds.emplace_back(x, y);
+          thirds.emplace_back(y, x);
+        }
+      }
+    }
+    std::sort(thirds.begin(), thirds.end());
+    thirds.erase(std::unique(thirds.begin(), thirds.end()), thirds.end());
+  }
+
+  const VertexTriangleAdjacency& Adjacency;
+  const std::vector<std::int32_t>& Members;
+  const std::vector<std::uint8_t>& Shown;
+  std::vector<std::int32_t>& Labels;
+  std::int32_t Label = 0;                              // the growing piece's
+  std::vector<std::int32_t> Piece;                     // its vertices
+  std::unordered_map<std::int32_t, std::int32_t> Near; // its neighbours: their triangles with it
+  Thirds Ends, PieceEnds;
+};
+
 class Clusterer
 {
 public:
@@ -105,6 +311,7 @@ private:
   /// Under a count target (the octree's own convention: a negative target is a bound).
   bool Counting() const { return !this->Options.Goal.Bounded(); }
   void PrepareGeometry();
+  void ClassifyVertices();
   void PrepareQuadrics();
   Plane BoundaryPlane(std::int32_t a, std::int32_t b, std::int32_t triangle, double& weight) const;
   bool InRange(std::int32_t v, std::int32_t begin, std::int32_t end) const
@@ -130,7 +337,13 @@ private:
   void SetKey(HeapEntry& entry, bool counting) const;
   Quadric ClusterQuadric(const std::int32_t* members, std::int32_t count) const;
   Vec3 ClusterCentre(const std::int32_t* members, std::int32_t count) const;
-  Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
+  /// Where a cluster of the cell's may have its point: the cell within the input's box.
+  Box Region(const OctreeNode& cell) const
+  {
+    const Vec3 half = Vec3::Constant(cell.Half);
+    return { (cell.Center - half).cwiseMax(this->Bounds.Lower), (cell.Center + half).cwiseMin(this->Bounds.Upper) };
+  }
+  Vec3 PlaceRepresentative(const Quadric& q, const Vec3& centre, const Box& region,
     const std::int32_t* members, std::int32_t count) const;
   double ClusterError(const Vec3& x, const std::int32_t* members, std::int32_t count,
     bool folded, const Vec3* ring) const;
@@ -142,7 +355,7 @@ private:
   template <typename Member>
   bool ProtrudingTip(const Member& member, const std::int32_t* members, std::int32_t count,
     std::int32_t& tip, Vec3& ring) const;
-  double Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
+  double Represent(std::int32_t cluster, const Quadric& q, const Box& region,
     const std::int32_t* members, std::int32_t count, Vec3& x) const;
   std::int32_t PartitionNode(std::int32_t node);
   /// A leaf just made, to be clustered and scanned by ClusterLeaves.
@@ -176,7 +389,60 @@ private:
     std::int32_t Triangle;
     std::array<std::int32_t, 3> Corners;
   };
-  std::vector<Survivor> SurvivingTriangles() const;
+  /// The output triangles when each vertex goes to the point of its label (a cluster, or what
+  /// it joined or split into; see Settle).
+  std::vector<Survivor> SurvivingTriangles(const std::vector<std::int32_t>& labels) const;
+  /// Kinds of vertices a label holds (LabelKinds).
+  enum LabelKind : std::uint8_t
+  {
+    OnBorder = 1,  // an open-border vertex
+    NotSurface = 2 // a vertex where the input is not a surface (Irregular)
+  };
+  /// Per label below count, the LabelKind flags of its vertices.
+  std::vector<std::uint8_t> LabelKinds(const std::vector<std::int32_t>& labels, std::size_t count) const;
+  /// Each vertex's label once flaps joined their neighbours (see the body): its cluster, or the
+  /// one its cluster joined.
+  std::vector<std::int32_t> JoinFlaps(const std::vector<Survivor>& survivors) const;
+  /// The cluster a flap joins, of its triangle's other corners (its own is corners[k]): the
+  /// nearer point of a cluster that may take it (see JoinFlaps); −1 for none.
+  std::int32_t FlapTarget(const std::array<std::int32_t, 3>& corners, int k) const;
+  /// The label pairs (a < b) that an input border edge joins.
+  Thirds BorderPairs(const std::vector<std::int32_t>& labels) const;
+  /// The labels (below count) to split into pieces: one at each output edge that tears the
+  /// surface (see the body).
+  std::vector<std::int32_t> TornLabels(const std::vector<Survivor>& survivors,
+    const std::vector<std::int32_t>& labels, const std::vector<std::uint8_t>& tried,
+    std::vector<std::int32_t>& explode) const;
+  /// Vertices to make pieces of their own so that no locked vertex is left without a triangle
+  /// (see the body), sorted.
+  std::vector<std::int32_t> BareLocks(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& labels) const;
+  /// Splits the vertices of one label (members) into pieces that each merge without tearing the
+  /// surface (see the body); new pieces take labels next, next + 1, ...
+  std::size_t SplitIntoPieces(const std::vector<std::int32_t>& members, const std::vector<std::int32_t>& joined,
+    const std::vector<std::uint8_t>& shown, std::vector<std::int32_t>& labels, std::int32_t& next) const;
+  /// What Settle makes of the clustering: each vertex's cluster (its leaf cluster, or a piece
+  /// split off one: ids from the number of clusters on, PieceNodes giving their leaves) and its
+  /// label (the cluster whose point it goes to: its own, or the one a flap joined).
+  struct Mending
+  {
+    std::vector<std::int32_t> Cluster, Label, PieceNodes;
+  };
+  /// Refines to the target, then joins flaps and splits what still tears into pieces while the
+  /// output has at most budget triangles (< 0: no limit; see the body); survivors are the
+  /// output triangles. Returns false when aborted.
+  bool Settle(std::int64_t target, std::int64_t budget, std::vector<Survivor>& survivors, Mending& mending);
+  /// One mending step: splits the torn labels into pieces, the exploded ones into single points,
+  /// then makes each detached vertex a piece of its own.
+  void MendOnce(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& torn,
+    const std::vector<std::int32_t>& explode, const std::vector<std::int32_t>& detach,
+    std::vector<std::uint8_t>& tried, Mending& mending) const;
+  /// Keeps the largest connected group of the vertices (sorted) in their label; the others go
+  /// back to their clusters' labels (each is a flap that joined, and may join again).
+  void KeepLargestGroup(std::vector<std::int32_t>& vertices, const std::vector<std::int32_t>& clusters,
+    std::vector<std::int32_t>& labels) const;
+  /// Makes the pieces clusters of their own in their leaves, placed; returns the cluster each
+  /// cluster's vertices go to (−1 for those without a triangle).
+  std::vector<std::int32_t> CommitPieces(const Mending& mending, const std::vector<Survivor>& survivors);
   /// The leaves to split next, best first (see Refine); empty when refinement is done.
   std::vector<HeapEntry>& NextBatch(std::int64_t target, double bound, double wanted);
   /// How many leaves to split together now (see Refine).
@@ -192,30 +458,32 @@ private:
   bool Refine(std::int64_t target, double bound);
   /// The root and the top levels of the tree (see PlantTree's body), clustered and queued.
   void PlantTree(std::int64_t target);
-  /// Refines to the target and returns the surviving triangles (see the body), or false when
-  /// aborted.
-  bool RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors);
-  /// The output points being made (Finalize): each one's cluster, its vertices (CSR) and the
-  /// state of its representative.
+  /// Refines to the target and returns the surviving triangles and the mended clustering (see
+  /// Settle), or false when aborted.
+  bool RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors, Mending& mending);
+  /// The output points being made (Finalize): each one's cluster, its vertices (CSR), the
+  /// state of its representative and where it may lie (the box of its clusters' regions).
   struct OutputPoints
   {
     std::vector<std::int32_t> PointOf;   // vertex → output point, −1 for none
     std::vector<std::int32_t> ClusterOf; // output point → its cluster
     std::vector<std::int32_t> Offsets, Members;
     std::vector<Vec3> Position, Centre, Ring; // Ring: where a protruding one meets the rest
+    std::vector<Box> Regions;
     std::vector<Quadric> FaceQuadric;
     std::vector<std::uint8_t> Folded, Protruding; // see Folded; Protruding keeps its tip
     std::int64_t Size() const { return static_cast<std::int64_t>(this->ClusterOf.size()); }
     const std::int32_t* MembersOf(std::int64_t p) const { return this->Members.data() + this->Offsets[p]; }
     std::int32_t Count(std::int64_t p) const { return this->Offsets[p + 1] - this->Offsets[p]; }
   };
-  std::vector<std::int32_t> JoinStrandedCaps(const std::vector<Survivor>& survivors) const;
+  std::vector<std::int32_t> JoinStrandedCaps(std::vector<std::int32_t> owner) const;
   OutputPoints NumberPoints(const std::vector<std::int32_t>& owner) const;
   void PlaceRepresentatives(OutputPoints& points) const;
   void IterateSecondError(const std::vector<Survivor>& survivors, OutputPoints& points) const;
   void WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
     OctreeClusteringResult& result) const;
-  void Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result);
+  void Finalize(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& owner,
+    OctreeClusteringResult& result);
   /// The outcome of the count: why it is where it is when it misses the target.
   void JudgeCount(OctreeClusteringResult& result) const;
 
@@ -227,6 +495,7 @@ private:
   PreparedMesh Prepared;
   Outcome Start; // the prepared mesh's report
   std::vector<Vec3> P;
+  Box Bounds; // of P
   std::vector<HeapEntry> Batch; // NextBatch's
   VertexTriangleAdjacency Adjacency;
   // Unit normal of each triangle, zero for a zero-area one; its plane passes through each of its
@@ -236,8 +505,9 @@ private:
   std::vector<Quadric> VertexQuadrics;
   std::vector<double> VertexWeights; // a third of the incident area
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
-  std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot, empty without boundary planes
+  std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot (BoundaryCorner flags)
   std::vector<std::uint8_t> BoundaryVertices; // per vertex: one of its slots has a flag
+  std::vector<std::uint8_t> Irregular; // per vertex: the input is no surface there (SurfaceVertex)
   std::vector<std::uint8_t> Locked; // per vertex: a cluster of its own (locks of the options)
   std::vector<std::int32_t> Regions; // per vertex: clusters never join two (empty: one region)
 
@@ -282,6 +552,12 @@ void Clusterer::PrepareGeometry()
   this->P = std::move(this->Prepared.Mesh.Points);
   this->Locked = std::move(this->Prepared.Locks);
   this->Regions = std::move(this->Prepared.Regions);
+  this->Bounds = { Vec3::Constant(std::numeric_limits<double>::infinity()),
+    Vec3::Constant(-std::numeric_limits<double>::infinity()) };
+  for (const Vec3& p : this->P)
+  {
+    this->Bounds = this->Bounds.Joined({ p, p });
+  }
 
   this->TriangleNormals.assign(m, Vec3::Zero());
   this->TriangleAreas.assign(m, 0.0);
@@ -322,6 +598,71 @@ Plane Clusterer::BoundaryPlane(
   return plane;
 }
 
+/// Whether the triangles around v form one fan (a disk, or a half-disk along an open border)
+/// in which no edge has more than two triangles: the input is a surface at v. Corners that
+/// share a far end are joined (union-find over the sorted ends); a fan is one set. ends and
+/// parent are scratch.
+bool SurfaceVertex(const VertexTriangleAdjacency& adjacency, std::int64_t v,
+  std::vector<std::pair<std::int32_t, std::int32_t>>& ends, std::vector<std::int32_t>& parent)
+{
+  const Corner* first = adjacency.Begin(v);
+  const std::int32_t degree = static_cast<std::int32_t>(adjacency.End(v) - first);
+  ends.clear();
+  for (std::int32_t i = 0; i < degree; ++i)
+  {
+    ends.emplace_back(first[i].Next, i);
+    ends.emplace_back(first[i].Previous, i);
+  }
+  std::sort(ends.begin(), ends.end());
+  parent.resize(degree);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&parent](std::int32_t i) {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  std::int32_t fans = degree;
+  for (std::size_t k = 0; k < ends.size();)
+  {
+    std::size_t same = k + 1;
+    while (same < ends.size() && ends[same].first == ends[k].first)
+    {
+      ++same;
+    }
+    if (same - k > 2)
+    {
+      return false; // an edge of three or more triangles
+    }
+    const std::int32_t a = root(ends[k].second), b = root(ends[same - 1].second);
+    fans -= a != b ? 1 : 0;
+    parent[a] = b;
+    k = same;
+  }
+  return fans == 1;
+}
+
+void Clusterer::ClassifyVertices()
+{
+  // Per vertex: its open-border corners (MarkBoundaryCorners), and whether the input is a
+  // surface around it (SurfaceVertex); the tear rule judges only surfaces.
+  const std::int64_t n = static_cast<std::int64_t>(this->P.size());
+  this->BoundaryCorners.resize(this->Adjacency.Corners.size());
+  this->BoundaryVertices.resize(n);
+  this->Irregular.resize(n);
+  this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
+    std::vector<std::pair<std::int32_t, std::int32_t>> ends;
+    std::vector<std::int32_t> parent;
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
+      this->BoundaryVertices[v] = MarkBoundaryCorners(this->Adjacency, v, flags) ? 1 : 0;
+      this->Irregular[v] = SurfaceVertex(this->Adjacency, v, ends, parent) ? 0 : 1;
+    }
+  }, 32 * static_cast<std::int64_t>(this->Adjacency.Corners.size()));
+}
+
 void Clusterer::PrepareQuadrics()
 {
   // Vertex quadrics, gathered per vertex (eq. 6): each triangle gives a third of its
@@ -330,11 +671,6 @@ void Clusterer::PrepareQuadrics()
   this->VertexQuadrics.resize(n);
   this->VertexWeights.resize(n);
   this->VertexAreaNormals.resize(n);
-  if (this->Options.BoundaryPlanes)
-  {
-    this->BoundaryCorners.resize(this->Adjacency.Corners.size());
-    this->BoundaryVertices.resize(n);
-  }
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
@@ -350,12 +686,10 @@ void Clusterer::PrepareQuadrics()
         weight += third;
         areaNormal += third * normal;
       }
-      if (this->Options.BoundaryPlanes)
+      if (this->Options.BoundaryPlanes && this->BoundaryVertices[v])
       {
-        std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
-        this->BoundaryVertices[v] = MarkBoundaryCorners(this->Adjacency, v, flags) ? 1 : 0;
-        for (const Corner* c = this->Adjacency.Begin(v);
-             this->BoundaryVertices[v] && c != this->Adjacency.End(v); ++c, ++flags)
+        const std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
+        for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c, ++flags)
         {
           double edgeWeight;
           if (*flags & OutgoingBoundaryEdge)
@@ -380,29 +714,37 @@ void Clusterer::PrepareQuadrics()
   std::vector<double>().swap(this->TriangleAreas);
 }
 
-Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const OctreeNode& cell,
+Vec3 Clusterer::PlaceRepresentative(const Quadric& q, const Vec3& centre, const Box& region,
   const std::int32_t* members, std::int32_t count) const
 {
-  // Eq. (3) when the system is well conditioned and its solution stays near the cell (the
-  // cell grown by half its size on each side); otherwise the paper's fallback: the weighted
-  // centre or one of the cluster's vertices, whichever has the least error. Ties keep the centre.
+  // Eq. (3) when the system is well conditioned and its solution lies in the region (the
+  // cluster's cell within the input's box), so that a point never leaves its cell; otherwise
+  // the paper's fallback, the weighted centre or one of the cluster's vertices, or the solution
+  // clamped into the region, whichever has the least error. Ties keep the centre.
   Vec3 x;
-  if (MinimizeQuadric(q, x) &&
-    (x - cell.Center).cwiseAbs().maxCoeff() <= 2.0 * cell.Half)
+  const bool solved = MinimizeQuadric(q, x);
+  if (solved && region.Contains(x))
   {
     return x;
   }
   Vec3 best = centre;
   double bestError = q.Evaluate(centre);
   const double tolerance = 1e-12 * (q.A00 + q.A11 + q.A22);
-  for (std::int32_t i = 0; i < count; ++i)
-  {
-    const double error = q.Evaluate(this->P[members[i]]);
+  const auto consider = [&](const Vec3& candidate) {
+    const double error = q.Evaluate(candidate);
     if (error < bestError - tolerance)
     {
-      best = this->P[members[i]];
+      best = candidate;
       bestError = error;
     }
+  };
+  if (solved)
+  {
+    consider(region.Clamp(x));
+  }
+  for (std::int32_t i = 0; i < count; ++i)
+  {
+    consider(this->P[members[i]]);
   }
   return best;
 }
@@ -490,7 +832,7 @@ bool Clusterer::ProtrudingTip(const Member& member, const std::int32_t* members,
   return (this->P[tip] - ring).norm() > radius;
 }
 
-double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const OctreeNode& cell,
+double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Box& region,
   const std::int32_t* members, std::int32_t count, Vec3& x) const
 {
   // A protruding cluster collapses to its tip, so a leg becomes a cone instead of vanishing
@@ -506,7 +848,7 @@ double Clusterer::Represent(std::int32_t cluster, const Quadric& q, const Octree
     x = this->P[tip];
     return this->ClusterError(x, members, count, true, &ring);
   }
-  x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), cell, members, count);
+  x = this->PlaceRepresentative(q, this->ClusterCentre(members, count), region, members, count);
   return this->ClusterError(x, members, count, folded, nullptr);
 }
 
@@ -523,7 +865,7 @@ double Clusterer::ClusterError(const Vec3& x, const std::int32_t* members, std::
     {
       error = std::max(error, std::abs(this->TriangleNormals[c->Triangle].dot(offset)));
     }
-    if (this->BoundaryVertices.empty() || !this->BoundaryVertices[v])
+    if (!this->Options.BoundaryPlanes || !this->BoundaryVertices[v])
     {
       continue;
     }
@@ -626,6 +968,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
     this->VertexCluster[v] = firstCluster + root[i - begin];
   }
   key = 0.0;
+  const Box region = this->Region(cell);
   for (std::int32_t c = 0; c < count; ++c)
   {
     const std::int32_t* members = scratch.Members.data() + scratch.Offsets[c];
@@ -638,7 +981,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
       continue; // a lone vertex stays where it is: no error
     }
     key = std::max(key,
-      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), cell, members, size, x));
+      this->Represent(firstCluster + c, this->ClusterQuadric(members, size), region, members, size, x));
   }
 
   canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
@@ -742,7 +1085,8 @@ LeafScan Clusterer::ScanLeaf(std::int32_t node, bool forEntry, std::int32_t coun
     for (auto k = std::lower_bound(neighbours.begin(), neighbours.end(), static_cast<std::int64_t>(c) << 32);
          k != neighbours.end() && (*k >> 32) == c; ++k)
     {
-      const double d = (this->P[v] - this->ClusterPositions[static_cast<std::int32_t>(*k & 0xffffffff)]).norm();
+      const std::int32_t other = static_cast<std::int32_t>(*k & 0xffffffff);
+      const double d = (this->P[v] - this->ClusterPositions[other]).norm();
       nearest = found ? std::min(nearest, d) : d;
       found = true;
     }
@@ -1161,9 +1505,9 @@ bool Clusterer::Refine(std::int64_t target, double bound)
   return true;
 }
 
-std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
+std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles(const std::vector<std::int32_t>& labels) const
 {
-  // Triangles with three distinct clusters, minus duplicates (the same three clusters in either
+  // Triangles with three distinct labels, minus duplicates (the same three labels in either
   // orientation): the lowest input triangle of each set survives. In input triangle order. The
   // triangle list itself is gone by now: each triangle is read at its lowest corner.
   struct Key
@@ -1187,13 +1531,12 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
       const std::int32_t last = static_cast<std::int32_t>(std::min(n, (chunk + 1) * ChunkSize));
       for (std::int32_t v = static_cast<std::int32_t>(chunk * ChunkSize); v < last; ++v)
       {
-        const std::int32_t c0 = this->VertexCluster[v];
+        const std::int32_t c0 = labels[v];
         for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
         {
           // Tested without branches (& rather than &&): the tests are unpredictable, the rare
           // survivors are not.
-          std::array<std::int32_t, 3> c = { c0, this->VertexCluster[corner->Next],
-            this->VertexCluster[corner->Previous] };
+          std::array<std::int32_t, 3> c = { c0, labels[corner->Next], labels[corner->Previous] };
           const bool lowest = (v < corner->Next) & (v < corner->Previous);
           if (lowest & (c[0] != c[1]) & (c[1] != c[2]) & (c[0] != c[2]))
           {
@@ -1225,10 +1568,538 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles() const
   return survivors;
 }
 
-std::vector<std::int32_t> Clusterer::JoinStrandedCaps(const std::vector<Survivor>& survivors) const
+std::vector<std::uint8_t> Clusterer::LabelKinds(const std::vector<std::int32_t>& labels, std::size_t count) const
 {
-  // The surviving cluster each cluster's vertices go to: its own when it keeps a triangle. With
-  // a count target, a cluster that lost every triangle and touches a single surviving cluster
+  std::vector<std::uint8_t> kinds(count, 0);
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    if (static_cast<std::size_t>(labels[v]) < count)
+    {
+      kinds[labels[v]] |= (this->BoundaryVertices[v] ? OnBorder : 0) | (this->Irregular[v] ? NotSurface : 0);
+    }
+  }
+  return kinds;
+}
+
+std::int32_t Clusterer::FlapTarget(const std::array<std::int32_t, 3>& corners, int k) const
+{
+  // Joined, the flap's vertices go to the target's point: one farther from its own point than
+  // half its cell's edge would cost more than the cell's error, so the flap is split as a tear.
+  const Vec3& from = this->ClusterPositions[this->VertexCluster[corners[k]]];
+  const double reach = this->Nodes[this->ClusterNodes[this->VertexCluster[corners[k]]]].Half;
+  std::int32_t target = -1;
+  for (const int j : { (k + 1) % 3, (k + 2) % 3 })
+  {
+    const std::int32_t o = this->VertexCluster[corners[j]];
+    const bool sameRegion = this->Regions.empty() || this->Regions[corners[j]] == this->Regions[corners[k]];
+    const bool nearer = target < 0 ||
+      (this->ClusterPositions[o] - from).squaredNorm() < (this->ClusterPositions[target] - from).squaredNorm();
+    const bool within = (this->ClusterPositions[o] - from).norm() <= reach;
+    target = !this->Locked[corners[j]] && sameRegion && nearer && within ? o : target;
+  }
+  return target;
+}
+
+std::vector<std::int32_t> Clusterer::JoinFlaps(const std::vector<Survivor>& survivors) const
+{
+  // A cluster that keeps a single triangle (c, x, y) is a flap: its two edges have that
+  // triangle alone, and the edge (x, y) one more than the surface has there (an island of a
+  // coarse cell poking into another, a sliver between two clusters, the end of a thin part) -
+  // unless the input is no surface there, or both edges stand for open borders (a corner). With
+  // a count target it joins x or y, whichever point is nearer its own (not a locked point, nor
+  // one of another region): its triangle goes, and (x, y) keeps the others. Only that triangle
+  // changes, so x and y are looked at again (the lowest cluster first), unless they took a flap
+  // (a thin part is not eaten from its end); one that loses its last triangle is left without
+  // (a stranded cap, see JoinStrandedCaps). Under an error bound or cell limits nothing joins:
+  // a joined point's error is not bounded, nor its extent.
+  std::vector<std::int32_t> labels = this->VertexCluster;
+  const bool cellLimits = (this->Options.MaximumCellSize > 0 && this->Options.MaximumCellSize < 1) ||
+    this->Options.MaximumVerticesPerCell > 0;
+  if (!this->Counting() || cellLimits)
+  {
+    return labels; // a joined flap would cross its cell's limits
+  }
+  const std::int32_t count = static_cast<std::int32_t>(this->ClusterPositions.size());
+  std::vector<std::int32_t> offsets(count + 1, 0);
+  for (const Survivor& survivor : survivors)
+  {
+    for (const std::int32_t v : survivor.Corners)
+    {
+      ++offsets[labels[v] + 1];
+    }
+  }
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::int32_t> incident(offsets.back()), fill(offsets.begin(), offsets.end() - 1), triangles(count), joined(count);
+  for (std::size_t t = 0; t < survivors.size(); ++t)
+  {
+    for (const std::int32_t v : survivors[t].Corners)
+    {
+      incident[fill[labels[v]]++] = static_cast<std::int32_t>(t);
+    }
+  }
+  for (std::int32_t c = 0; c < count; ++c)
+  {
+    triangles[c] = offsets[c + 1] - offsets[c];
+    joined[c] = c;
+  }
+  const std::vector<std::uint8_t> kinds = this->LabelKinds(labels, count);
+  const Thirds borders = this->BorderPairs(labels);
+  const auto border = [&borders](std::int32_t a, std::int32_t b) {
+    return std::binary_search(borders.begin(), borders.end(), std::make_pair(std::min(a, b), std::max(a, b)));
+  };
+  std::vector<std::uint8_t> alive(survivors.size(), 1), took(count, 0);
+  const auto isFlap = [&](std::int32_t c) {
+    return joined[c] == c && triangles[c] == 1 && !(kinds[c] & NotSurface) && !took[c];
+  };
+  std::priority_queue<std::int32_t, std::vector<std::int32_t>, std::greater<std::int32_t>> flaps;
+  for (std::int32_t c = 0; c < count; ++c)
+  {
+    if (isFlap(c))
+    {
+      flaps.push(c);
+    }
+  }
+  for (; !flaps.empty(); flaps.pop())
+  {
+    const std::int32_t c = flaps.top();
+    const std::int32_t* t = incident.data() + offsets[c];
+    while (isFlap(c) && !alive[*t])
+    {
+      ++t; // a flap keeps one
+    }
+    // The triangle's corners: c's (k), then the candidates'.
+    const std::array<std::int32_t, 3>& corners = survivors[*t].Corners;
+    const int k = labels[corners[0]] == c ? 0 : labels[corners[1]] == c ? 1 : 2;
+    const std::int32_t x = labels[corners[(k + 1) % 3]], y = labels[corners[(k + 2) % 3]];
+    if (!isFlap(c) || this->Locked[corners[k]] || (border(c, x) && border(c, y)))
+    {
+      continue;
+    }
+    const std::int32_t target = this->FlapTarget(corners, k);
+    if (target >= 0)
+    {
+      joined[c] = target;
+      took[target] = 1;
+      alive[*t] = 0;
+      for (const std::int32_t o : { x, y })
+      {
+        if (--triangles[o] == 1 && isFlap(o))
+        {
+          flaps.push(o);
+        }
+      }
+    }
+  }
+  for (std::int32_t& l : labels)
+  {
+    while (joined[l] != l)
+    {
+      l = joined[l];
+    }
+  }
+  return labels;
+}
+
+Thirds Clusterer::BorderPairs(const std::vector<std::int32_t>& labels) const
+{
+  Thirds borders;
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    const std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
+    for (const Corner* c = this->Adjacency.Begin(v); this->BoundaryVertices[v] && c != this->Adjacency.End(v); ++c, ++flags)
+    {
+      const std::int32_t a = labels[v], b = labels[c->Next];
+      if ((*flags & OutgoingBoundaryEdge) && a != b)
+      {
+        borders.emplace_back(std::min(a, b), std::max(a, b));
+      }
+    }
+  }
+  std::sort(borders.begin(), borders.end());
+  borders.erase(std::unique(borders.begin(), borders.end()), borders.end());
+  return borders;
+}
+
+std::vector<std::int32_t> Clusterer::TornLabels(const std::vector<Survivor>& survivors,
+  const std::vector<std::int32_t>& labels, const std::vector<std::uint8_t>& tried,
+  std::vector<std::int32_t>& explode) const
+{
+  const std::size_t count = tried.size();
+  // Each output edge (a, b) carries one triangle per distinct third label. Where the input is a
+  // surface (neither a nor b holds a vertex where it is not), it must keep two, or one where an
+  // input border edge joins a and b (it stands for an open border): else the output gets an
+  // open or a non-manifold edge that the input did not have. Of such an edge's labels, the one
+  // of most vertices is split (a single vertex cannot be): a, b, or else one of the thirds.
+  const Thirds borders = this->BorderPairs(labels);
+  std::vector<std::int32_t> sizes(count, 0);
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    ++sizes[labels[v]];
+  }
+  std::vector<std::array<std::int32_t, 3>> edges; // a < b, third
+  for (const Survivor& survivor : survivors)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::int32_t a = labels[survivor.Corners[k]], b = labels[survivor.Corners[(k + 1) % 3]];
+      edges.push_back({ std::min(a, b), std::max(a, b), labels[survivor.Corners[(k + 2) % 3]] });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  const std::vector<std::uint8_t> kinds = this->LabelKinds(labels, count);
+  const std::vector<std::uint8_t> none(count, 0);
+  const auto smaller = [&sizes](std::int32_t a, std::int32_t b, const std::vector<std::uint8_t>& skip) {
+    return sizes[a] > 1 && !skip[a] && (b < 0 || sizes[a] < sizes[b] || (sizes[a] == sizes[b] && a < b)) ? a : b;
+  };
+  std::vector<std::int32_t> torn;
+  explode.clear();
+  for (std::size_t k = 0, end = 0; k < edges.size(); k = end)
+  {
+    const std::int32_t a = edges[k][0], b = edges[k][1];
+    for (end = k; end < edges.size() && edges[end][0] == a && edges[end][1] == b; ++end)
+    {
+    }
+    const bool border = std::binary_search(borders.begin(), borders.end(), std::make_pair(a, b));
+    if (((kinds[a] | kinds[b]) & NotSurface) || end - k == 2 || (end - k == 1 && border))
+    {
+      continue;
+    }
+    std::int32_t split = smaller(a, smaller(b, -1, tried), tried);
+    for (std::size_t j = k; j < end && split < 0; ++j)
+    {
+      split = smaller(edges[j][2], split, tried);
+    }
+    if (split >= 0)
+    {
+      torn.push_back(split);
+      continue;
+    }
+    // Every label there re-formed whole: the smallest goes to single points.
+    split = smaller(a, smaller(b, -1, none), none);
+    for (std::size_t j = k; j < end; ++j)
+    {
+      split = smaller(edges[j][2], split, none);
+    }
+    if (split >= 0)
+    {
+      explode.push_back(split);
+    }
+  }
+  for (std::vector<std::int32_t>* list : { &torn, &explode })
+  {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  return torn;
+}
+
+std::size_t Clusterer::SplitIntoPieces(const std::vector<std::int32_t>& members, const std::vector<std::int32_t>& joined,
+  const std::vector<std::uint8_t>& shown, std::vector<std::int32_t>& labels, std::int32_t& next) const
+{
+  // Pieces grow (PieceGrowth) from the flaps the label took, which keep it, then from the
+  // members left in member order; without flaps the piece of most members keeps the label.
+  // The others take next, next + 1, ...
+  const std::int32_t label = labels[members[0]];
+  PieceGrowth growth(this->Adjacency, members, shown, labels);
+  if (!joined.empty())
+  {
+    growth.Grow(label, joined.data(), joined.data() + joined.size());
+  }
+  for (const std::int32_t& seed : members)
+  {
+    if (growth.Single(seed))
+    {
+      growth.Grow(labels[seed], &seed, &seed + 1);
+    }
+  }
+  std::map<std::int32_t, std::int32_t> sizes;
+  for (const std::int32_t v : members)
+  {
+    ++sizes[labels[v]];
+  }
+  std::int32_t largest = labels[members[0]];
+  for (const std::int32_t v : members)
+  {
+    largest = sizes[labels[v]] > sizes[largest] ? labels[v] : largest;
+  }
+  std::map<std::int32_t, std::int32_t> renamed = { { joined.empty() ? largest : label, label } };
+  for (const std::int32_t v : members)
+  {
+    const auto found = renamed.emplace(labels[v], next);
+    next += found.second ? 1 : 0;
+    labels[v] = found.first->second;
+  }
+  return sizes.size();
+}
+
+bool Clusterer::Settle(std::int64_t target, std::int64_t budget, std::vector<Survivor>& survivors, Mending& mending)
+{
+  // Refined to the target, flaps join their neighbours (JoinFlaps), and what still tears is
+  // split into pieces (MendOnce), again while a split leaves a tear. With a count target,
+  // mending stops before the count passes the budget (back to the last state without a bare
+  // lock): the count then wins over the tears left, and the next round of RefineToTarget
+  // coarsens. A locked vertex without a triangle (BareLocks) is mended whatever the budget.
+  if (!this->Refine(target, this->Bound()))
+  {
+    return false;
+  }
+  mending.Cluster = this->VertexCluster;
+  mending.Label = this->JoinFlaps(this->SurvivingTriangles(this->VertexCluster));
+  mending.PieceNodes.clear();
+  const std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
+  std::vector<std::uint8_t> tried;
+  std::vector<std::int32_t> torn, explode;
+  Mending before;
+  std::vector<Survivor> previous;
+  bool saved = false, locksOnly = false;
+  for (;;)
+  {
+    survivors = this->SurvivingTriangles(mending.Label);
+    const std::vector<std::int32_t> detach = this->BareLocks(survivors, mending.Label);
+    if (!locksOnly && budget >= 0 && static_cast<std::int64_t>(survivors.size()) > budget)
+    {
+      if (saved)
+      {
+        mending = std::move(before);
+        survivors = std::move(previous);
+        return true;
+      }
+      locksOnly = true;
+    }
+    tried.resize(clusters + mending.PieceNodes.size(), 0);
+    torn.clear();
+    explode.clear();
+    if (!locksOnly)
+    {
+      torn = this->TornLabels(survivors, mending.Label, tried, explode);
+    }
+    if (torn.empty() && explode.empty() && detach.empty())
+    {
+      return true;
+    }
+    if (budget >= 0 && detach.empty())
+    {
+      before = mending;
+      previous = survivors;
+      saved = true;
+    }
+    this->MendOnce(survivors, torn, explode, detach, tried, mending);
+  }
+}
+
+std::vector<std::int32_t> Clusterer::BareLocks(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& labels) const
+{
+  // A locked vertex v stays an output point used by the output's triangles, as in the collapse
+  // filters. It is a label of its own, so it has none left only where each triangle (v, a, b)
+  // at it has a and b in one label. Its nearest such ring neighbour a is detached (a piece of
+  // its own): the triangles (v, a, b) then keep three labels, and a detach takes no triangle
+  // from a locked vertex. Tears it may make are mended like any other.
+  std::vector<std::uint8_t> used(this->P.size(), 0);
+  for (const Survivor& survivor : survivors)
+  {
+    for (const std::int32_t v : survivor.Corners)
+    {
+      used[v] = 1;
+    }
+  }
+  std::vector<std::int32_t> detach;
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    std::int32_t nearest = -1;
+    double best = std::numeric_limits<double>::infinity();
+    for (const Corner* c = this->Adjacency.Begin(v); this->Locked[v] && !used[v] && c != this->Adjacency.End(v); ++c)
+    {
+      for (const std::int32_t u : { c->Next, c->Previous })
+      {
+        const double d = (this->P[u] - this->P[v]).squaredNorm();
+        if (labels[c->Next] == labels[c->Previous] && (d < best || (d == best && u < nearest)))
+        {
+          best = d;
+          nearest = u;
+        }
+      }
+    }
+    if (nearest >= 0)
+    {
+      detach.push_back(nearest);
+    }
+  }
+  std::sort(detach.begin(), detach.end());
+  detach.erase(std::unique(detach.begin(), detach.end()), detach.end());
+  return detach;
+}
+
+void Clusterer::MendOnce(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& torn,
+  const std::vector<std::int32_t>& explode, const std::vector<std::int32_t>& detach,
+  std::vector<std::uint8_t>& tried, Mending& mending) const
+{
+  // Each torn label is split into pieces that merge without tearing (SplitIntoPieces), the
+  // flaps it took seeding the piece that keeps it. A label that tears although every label at
+  // its torn edge re-formed whole when split goes to single points: around single points the
+  // output is the input, so mending ends without a tear. A piece is part of one cluster, in
+  // its cell.
+  const std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
+  std::vector<std::int32_t>& labels = mending.Label;
+  std::int32_t next = clusters + static_cast<std::int32_t>(mending.PieceNodes.size());
+  std::vector<std::uint8_t> shown(next, 0); // labels that keep triangles
+  for (const Survivor& survivor : survivors)
+  {
+    for (const std::int32_t v : survivor.Corners)
+    {
+      shown[labels[v]] = 1;
+    }
+  }
+  // Per label to split, its own cluster's vertices and those of the flaps it took.
+  std::map<std::int32_t, std::array<std::vector<std::int32_t>, 2>> members;
+  for (std::size_t v = 0; v < labels.size(); ++v)
+  {
+    const std::int32_t l = labels[v];
+    if (std::binary_search(torn.begin(), torn.end(), l) || std::binary_search(explode.begin(), explode.end(), l))
+    {
+      members[l][mending.Cluster[v] == l ? 0 : 1].push_back(static_cast<std::int32_t>(v));
+    }
+  }
+  for (auto& label : members)
+  {
+    const std::int32_t node = label.first < clusters ? this->ClusterNodes[label.first]
+                                                       : mending.PieceNodes[label.first - clusters];
+    if (std::binary_search(explode.begin(), explode.end(), label.first))
+    {
+      for (const std::int32_t v : label.second[1])
+      {
+        labels[v] = mending.Cluster[v]; // the flaps it took go back
+      }
+      for (std::size_t i = 1; i < label.second[0].size(); ++i)
+      {
+        labels[label.second[0][i]] = next++;
+      }
+    }
+    else
+    {
+      this->KeepLargestGroup(label.second[1], mending.Cluster, labels);
+      tried[label.first] = this->SplitIntoPieces(label.second[0], label.second[1], shown, labels, next) == 1;
+    }
+    mending.PieceNodes.resize(next - clusters, node);
+    for (const std::int32_t v : label.second[0])
+    {
+      mending.Cluster[v] = labels[v];
+    }
+  }
+  for (const std::int32_t v : detach)
+  {
+    const std::int32_t from = mending.Cluster[v];
+    mending.PieceNodes.push_back(from < clusters ? this->ClusterNodes[from] : mending.PieceNodes[from - clusters]);
+    labels[v] = mending.Cluster[v] = next++;
+  }
+}
+
+void Clusterer::KeepLargestGroup(std::vector<std::int32_t>& vertices, const std::vector<std::int32_t>& clusters,
+  std::vector<std::int32_t>& labels) const
+{
+  std::vector<std::int32_t> group(vertices.size(), -1), stack, sizes;
+  const auto at = [&vertices](std::int32_t v) {
+    const auto found = std::lower_bound(vertices.begin(), vertices.end(), v);
+    return found != vertices.end() && *found == v ? found - vertices.begin() : -1;
+  };
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    if (group[i] >= 0)
+    {
+      continue;
+    }
+    const std::int32_t g = static_cast<std::int32_t>(sizes.size());
+    sizes.push_back(0);
+    group[i] = g;
+    for (stack.assign(1, vertices[i]); !stack.empty();)
+    {
+      const std::int32_t u = stack.back();
+      stack.pop_back();
+      ++sizes[g];
+      for (const Corner* c = this->Adjacency.Begin(u); c != this->Adjacency.End(u); ++c)
+      {
+        const std::ptrdiff_t k = at(c->Next);
+        if (k >= 0 && group[k] < 0)
+        {
+          group[k] = g;
+          stack.push_back(c->Next);
+        }
+      }
+    }
+  }
+  const std::int32_t kept = sizes.empty() ? 0 : static_cast<std::int32_t>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+  std::size_t left = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    if (group[i] == kept)
+    {
+      vertices[left++] = vertices[i];
+    }
+    else
+    {
+      labels[vertices[i]] = clusters[vertices[i]];
+    }
+  }
+  vertices.resize(left);
+}
+
+std::vector<std::int32_t> Clusterer::CommitPieces(const Mending& mending, const std::vector<Survivor>& survivors)
+{
+  // Each piece becomes a cluster of its leaf; the pieces and what is left of the clusters they
+  // came from are placed again, each at the better (smaller cluster error) of its own point and
+  // its original cluster's, so that a bound met stays met. A cluster goes to its label's point
+  // when the label keeps triangles.
+  const std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
+  const std::int32_t count = clusters + static_cast<std::int32_t>(mending.PieceNodes.size());
+  this->ClusterPositions.resize(count);
+  this->ClusterNodes.resize(count);
+  std::copy(mending.PieceNodes.begin(), mending.PieceNodes.end(), this->ClusterNodes.begin() + clusters);
+  std::vector<Vec3> before(this->ClusterPositions);
+  std::vector<std::uint8_t> changed(count, 0), shown(count, 0);
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    const std::int32_t from = this->VertexCluster[v], to = mending.Cluster[v];
+    if (from != to)
+    {
+      changed[from] = changed[to] = 1;
+      before[to] = this->ClusterPositions[from];
+    }
+    this->VertexCluster[v] = to;
+  }
+  for (const Survivor& survivor : survivors)
+  {
+    for (const std::int32_t v : survivor.Corners)
+    {
+      shown[mending.Label[v]] = 1;
+    }
+  }
+  std::vector<std::int32_t> owner(count, -1);
+  std::map<std::int32_t, std::vector<std::int32_t>> members; // of the clusters placed again
+  for (std::size_t v = 0; v < this->P.size(); ++v)
+  {
+    const std::int32_t c = this->VertexCluster[v];
+    owner[c] = shown[mending.Label[v]] ? mending.Label[v] : -1;
+    if (changed[c])
+    {
+      members[c].push_back(static_cast<std::int32_t>(v));
+    }
+  }
+  for (const auto& cluster : members)
+  {
+    const std::int32_t c = cluster.first, size = static_cast<std::int32_t>(cluster.second.size());
+    const std::int32_t* set = cluster.second.data();
+    Vec3 x = this->P[set[0]];
+    const double error = size == 1 ? 0.0
+      : this->Represent(c, this->ClusterQuadric(set, size), this->Region(this->Nodes[this->ClusterNodes[c]]), set, size, x);
+    this->ClusterPositions[c] = error <= this->ClusterError(before[c], set, size, this->Folded(set, size), nullptr) ? x : before[c];
+  }
+  return owner;
+}
+
+std::vector<std::int32_t> Clusterer::JoinStrandedCaps(std::vector<std::int32_t> owner) const
+{
+  // The surviving cluster each cluster's vertices go to: owner's (its own when it keeps a
+  // triangle, or the one a flap joined). With a count target, a cluster that lost every
+  // triangle and touches a single surviving cluster
   // (a cap on a thin part: a trunk's or a finger's end) has its vertices represented by that
   // cluster's point, so they join it: its point then accounts for them, and the protruding-tip
   // rule can put it at the part's end instead of leaving the part cut off. Repeated, so chains
@@ -1237,14 +2108,6 @@ std::vector<std::int32_t> Clusterer::JoinStrandedCaps(const std::vector<Survivor
   // joined, and a cap joins no cluster of another region.
   const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   const std::size_t clusters = this->ClusterPositions.size();
-  std::vector<std::int32_t> owner(clusters, -1);
-  for (const Survivor& survivor : survivors)
-  {
-    for (const std::int32_t v : survivor.Corners)
-    {
-      owner[this->VertexCluster[v]] = this->VertexCluster[v];
-    }
-  }
   constexpr std::int32_t Several = -2;
   std::vector<std::int32_t> candidate(clusters, -1);
   std::vector<std::int32_t> stranded; // the vertices of clusters without an owner yet
@@ -1352,6 +2215,7 @@ void Clusterer::PlaceRepresentatives(OutputPoints& points) const
   points.FaceQuadric.resize(count);
   points.Folded.assign(count, 0);
   points.Protruding.assign(count, 0);
+  points.Regions.resize(count);
   this->Context.For(count, [&](std::int64_t b, std::int64_t e) {
     std::vector<std::int32_t> own;
     for (std::int64_t p = b; p < e; ++p)
@@ -1361,6 +2225,15 @@ void Clusterer::PlaceRepresentatives(OutputPoints& points) const
       const std::int32_t size = points.Count(p);
       points.Centre[p] = this->ClusterCentre(members, size);
       points.FaceQuadric[p] = this->ClusterQuadric(members, size);
+      points.Regions[p] = this->Region(this->Nodes[this->ClusterNodes[cluster]]);
+      for (std::int32_t i = 0; i < size; ++i)
+      {
+        const std::int32_t joined = this->VertexCluster[members[i]];
+        if (joined != cluster)
+        {
+          points.Regions[p] = points.Regions[p].Joined(this->Region(this->Nodes[this->ClusterNodes[joined]]));
+        }
+      }
       points.Folded[p] = this->Folded(members, size) ? 1 : 0;
       // The point of the given members: their tip when they protrude, else the cluster's.
       const auto place = [&](const std::int32_t* set, std::int32_t setSize, bool isFolded,
@@ -1445,9 +2318,8 @@ void Clusterer::IterateSecondError(const std::vector<Survivor>& survivors, Outpu
         {
           continue;
         }
-        const OctreeNode& cell = this->Nodes[this->ClusterNodes[points.ClusterOf[p]]];
-        const Vec3 x =
-          this->PlaceRepresentative(quadric[p], points.Centre[p], cell, points.MembersOf(p), points.Count(p));
+        const Vec3 x = this->PlaceRepresentative(
+          quadric[p], points.Centre[p], points.Regions[p], points.MembersOf(p), points.Count(p));
         if (!bounded || this->ClusterError(x, points.MembersOf(p), points.Count(p), points.Folded[p], nullptr) <= bound)
         {
           next[p] = x;
@@ -1461,11 +2333,13 @@ void Clusterer::IterateSecondError(const std::vector<Survivor>& survivors, Outpu
 void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
   OctreeClusteringResult& result) const
 {
-  // Points in input coordinates (locked ones exactly as they were), their cluster errors, and
-  // their sources: the cluster's input points by area weight, the heaviest first.
+  // Points in input coordinates (locked ones exactly as they were) and their cells, their
+  // cluster errors, and their sources: the cluster's input points by area weight, the heaviest
+  // first.
   const std::int64_t count = points.Size();
   const std::vector<std::int32_t>& inputVertex = this->Prepared.Mesh.InputVertex;
   result.Points.resize(3 * count);
+  result.PointCells.resize(6 * count);
   result.SourceOffsets = points.Offsets;
   result.SourcePoints.resize(points.Members.size());
   result.SourceWeights.resize(points.Members.size());
@@ -1475,11 +2349,18 @@ void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const Output
     {
       const std::int32_t* members = points.MembersOf(p);
       const std::int32_t size = points.Count(p);
-      const Vec3 x = this->Locked[members[0]] ? this->Input.Point(inputVertex[members[0]])
-                                               : this->Prepared.ToInput(points.Position[p]);
+      // Clamped: the way back to input units may round a point on the box's face out of it.
+      const auto toInput = [this](const Vec3& y) {
+        return Vec3(this->Prepared.ToInput(y).cwiseMax(this->Prepared.Mesh.Lower).cwiseMin(this->Prepared.Mesh.Upper));
+      };
+      const Vec3 x =
+        this->Locked[members[0]] ? this->Input.Point(inputVertex[members[0]]) : toInput(points.Position[p]);
+      const Vec3 lower = toInput(points.Regions[p].Lower), upper = toInput(points.Regions[p].Upper);
       for (int k = 0; k < 3; ++k)
       {
         result.Points[3 * p + k] = x[k];
+        result.PointCells[6 * p + k] = lower[k];
+        result.PointCells[6 * p + 3 + k] = upper[k];
       }
       clusterSize[p] = size;
       clusterError[p] = this->ClusterError(points.Position[p], members, size, points.Folded[p],
@@ -1522,9 +2403,10 @@ void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const Output
   }
 }
 
-void Clusterer::Finalize(const std::vector<Survivor>& survivors, OctreeClusteringResult& result)
+void Clusterer::Finalize(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& owner,
+  OctreeClusteringResult& result)
 {
-  OutputPoints points = this->NumberPoints(this->JoinStrandedCaps(survivors));
+  OutputPoints points = this->NumberPoints(this->JoinStrandedCaps(owner));
   this->PlaceRepresentatives(points);
   this->IterateSecondError(survivors, points);
   this->WriteResult(survivors, points, result);
@@ -1633,28 +2515,49 @@ void Clusterer::PlantTree(std::int64_t target)
   }
 }
 
-bool Clusterer::RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors)
+bool Clusterer::RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors, Mending& mending)
 {
   // A count target is approached on the estimate (triangles with three distinct clusters).
-  // Duplicates removed at the end make the real count lower, so the estimate's target is
-  // corrected and refinement resumes, or the latest splits are undone, until the real count is
-  // within 2 % of the target (at most 6 rounds). The first split of a clustering without
-  // triangles is never undone: no count is nearer the target.
-  std::int64_t internalTarget = target;
-  for (int round = 0;; ++round)
+  // Duplicates removed at the end, flaps that join and leaves split so that nothing tears
+  // (Settle) make the real count differ, so the estimate's target is corrected and refinement
+  // resumes, or the latest splits are undone, until the real count is within 2 % of the target
+  // (at most 6 rounds). Mending moves the count in steps, so corrections stay between the
+  // estimate targets seen to fall short and to overshoot; when they meet, or in the last
+  // round, the target of the nearest count so far is taken again. The first split of a
+  // clustering without triangles is never undone. An undone split made against a tear goes
+  // back to the heap under its error: Settle splits it again if it still tears.
+  std::int64_t internalTarget = target, below = 0, above = std::numeric_limits<std::int64_t>::max();
+  std::int64_t best = target, nearest = std::numeric_limits<std::int64_t>::max();
+  const std::int64_t budget = target < 0 ? -1 : target + target / 4;
+  for (int round = 0, last = 0;; ++round)
   {
-    if (!this->Refine(internalTarget, this->Bound()))
+    if (!this->Settle(internalTarget, budget, survivors, mending))
     {
       return false;
     }
-    survivors = this->SurvivingTriangles();
     const std::int64_t excess = static_cast<std::int64_t>(survivors.size()) - target;
-    if (target < 0 || round == 5 || std::abs(excess) <= target / 50)
+    if (target < 0 || last || std::abs(excess) <= target / 50)
     {
       return true;
     }
-    internalTarget = this->SurvivingCount - excess;
-    if (excess < 0)
+    best = std::abs(excess) < nearest ? internalTarget : best;
+    nearest = std::min(nearest, std::abs(excess));
+    (excess < 0 ? below : above) = internalTarget;
+    // The estimate's target scaled by the ratio of estimate to real count, a count (positive).
+    std::int64_t next = std::max<std::int64_t>(1,
+      std::llround(static_cast<double>(this->SurvivingCount) * target / std::max<std::size_t>(1, survivors.size())));
+    if (next <= below || next >= above)
+    {
+      next = below + (above - below) / 2;
+    }
+    last = round == 4 || next <= below || next >= above;
+    next = last ? best : next;
+    if (next == internalTarget)
+    {
+      return true;
+    }
+    internalTarget = next;
+    if (this->SurvivingCount <= internalTarget)
     {
       if (this->Heap.empty())
       {
@@ -1684,6 +2587,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   {
     return false;
   }
+  this->ClassifyVertices();
   this->PrepareQuadrics();
   if (!this->Context.Report(0.15))
   {
@@ -1699,11 +2603,12 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   }
   this->PlantTree(target);
   std::vector<Survivor> survivors;
-  if (!this->RefineToTarget(target, survivors) || !this->Context.Report(0.85))
+  Mending mending;
+  if (!this->RefineToTarget(target, survivors, mending) || !this->Context.Report(0.85))
   {
     return false;
   }
-  this->Finalize(survivors, result);
+  this->Finalize(survivors, this->CommitPieces(mending, survivors), result);
   this->JudgeCount(result);
   std::vector<std::uint8_t> isLeaf(this->Nodes.size(), 0);
   for (const std::int32_t v : this->Order)

@@ -16,8 +16,10 @@
  *  - vertices of a leaf that are not connected by edges inside it form separate clusters, so
  *    distinct parts of the surface are never merged (the distortion of Figure 1);
  *  - the representative minimises the quadric of its related triangles' planes (eq. 2–3, 5–7)
- *    plus boundary planes perpendicular to boundary edges; when that system is near singular
- *    it falls back to the best of the cluster's vertices and its weighted centre;
+ *    plus boundary planes perpendicular to boundary edges; when that system is near singular,
+ *    or its solution lies outside the cluster's cell (within the input's bounding box), it
+ *    falls back to the best of the cluster's vertices, its weighted centre and the solution
+ *    clamped into the cell, so that no point leaves its cell or the input's box;
  *  - the second error term e2 (squared distances of the cluster's vertices to the new triangles
  *    around the representative, eq. 8–11) is added by the paper's fixed-point iteration.
  *
@@ -31,6 +33,12 @@
  * cap of a trunk or a finger) joins that cluster, whose point then represents both: the
  * point of the joined set (its tip when it protrudes) or the cluster's own, whichever has the
  * smaller cluster error over the set.
+ *
+ * Where the input is a surface, clustering makes no open or non-manifold edge that it did not
+ * have: a cluster left with one triangle (a flap) joins a neighbour, and a cluster at an edge
+ * that tears is split into pieces (parts of its cell) that merge under the link condition, as
+ * a last resort into single points. With a count target this mending may add at most a quarter
+ * of the target's triangles; past that the count wins and some tears stay.
  *
  * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
  * the supporting plane of any triangle of its cluster's related set (every input triangle with
@@ -83,6 +91,10 @@ struct OctreeClusteringResult : SimplifiedMesh
   /// Input vertex → output point, −1 for vertices whose cluster has no surviving triangle and
   /// joined none (see above).
   std::vector<std::int32_t> VertexToPoint;
+  /// Per output point, the box it lies in (6 values: lower corner, upper corner, input units):
+  /// its cluster's octree cell within the input's bounding box (with joined caps, the box
+  /// around their cells too).
+  std::vector<double> PointCells;
   std::int64_t NumberOfLeaves = 0;
   int Depth = 0;
 };

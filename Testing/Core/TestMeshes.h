@@ -500,6 +500,46 @@ void CheckCollapseRun(const Result& result, const Mesh& mesh, bool closed,
     std::abs(count - result.Report.TargetTriangles) <= std::max(2.0, tolerance * result.Report.UsableTriangles));
 }
 
+/// Output edges that are open (one triangle) or non-manifold (three or more) although no input
+/// edge of that kind maps onto them (VertexToPoint): the tears a clustering made.
+inline std::array<std::int64_t, 2> NewTears(const std::vector<std::int32_t>& input,
+  const std::vector<std::int32_t>& output, const std::vector<std::int32_t>& vertexToPoint)
+{
+  using Edge = std::pair<std::int32_t, std::int32_t>;
+  const auto count = [](const std::vector<std::int32_t>& triangles, const std::vector<std::int32_t>* map) {
+    std::map<Edge, int> edges;
+    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        std::int32_t a = triangles[t + k], b = triangles[t + (k + 1) % 3];
+        ++edges[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+    std::map<Edge, int> mapped; // an input edge's kind at its image, 1 (open) or 3 (more than two)
+    for (const auto& edge : edges)
+    {
+      const std::int32_t a = map ? (*map)[edge.first.first] : edge.first.first;
+      const std::int32_t b = map ? (*map)[edge.first.second] : edge.first.second;
+      if (a >= 0 && b >= 0 && a != b && edge.second != 2)
+      {
+        mapped[{ std::min(a, b), std::max(a, b) }] |= edge.second == 1 ? 1 : 2;
+      }
+    }
+    return mapped;
+  };
+  const std::map<Edge, int> before = count(input, &vertexToPoint), after = count(output, nullptr);
+  std::array<std::int64_t, 2> tears = { 0, 0 };
+  for (const auto& edge : after)
+  {
+    const auto found = before.find(edge.first);
+    const int had = found == before.end() ? 0 : found->second;
+    tears[0] += (edge.second & 1) && !(had & 1) ? 1 : 0;
+    tears[1] += (edge.second & 2) && !(had & 2) ? 1 : 0;
+  }
+  return tears;
+}
+
 #ifdef MESHSIMPLIFICATION_TEST_DATA
 /// A triangle mesh of Testing/Data.
 Mesh ReadData(const std::string& name)
