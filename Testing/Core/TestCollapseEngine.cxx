@@ -645,6 +645,16 @@ void VolumeCollapseKeepsSphereClosed()
   CHECK(std::all_of(merged.begin(), merged.end(), [](int m) { return m == 1; }));
 }
 
+void VolumeCollapseMendsOrientationAndDuplicates()
+{
+  // Turned-over and repeated triangles are mended before the collapse: the sphere is
+  // simplified to its target and comes out closed and consistently oriented.
+  const Mesh sphere = Misoriented(Sphere(16)); // 3072 triangles and 280 copies
+  const meshsimp::VolumeCollapseResult result = Collapse(sphere, 307);
+  CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - 307) <= 3);
+  CHECK(ClosedOriented(result.Triangles));
+}
+
 void VolumeCollapseBatchesDoNotDependOnThreads()
 {
   // Batches of collapses (BatchSize, at most one per 1000 triangles) are evaluated, checked and
@@ -1027,6 +1037,7 @@ int main()
     { "AttributesFollowWeights", AttributesFollowWeights },
     { "PlaneBoundMeasuresMergedPlanes", PlaneBoundMeasuresMergedPlanes },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
+    { "VolumeCollapseMendsOrientationAndDuplicates", VolumeCollapseMendsOrientationAndDuplicates },
     { "VolumeCollapseBatchesDoNotDependOnThreads", VolumeCollapseBatchesDoNotDependOnThreads },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
     { "VolumeCollapseKeepsTubeOnItsCylinder", VolumeCollapseKeepsTubeOnItsCylinder },
