@@ -29,7 +29,7 @@
  *   triangles merged into it (SurfaceErrorWeight), which keeps the Hausdorff distance down;
  * - every collapse keeps the mesh manifold (link condition), never folds a triangle over and
  *   never makes one degenerate; a closed 2-manifold input gives a closed 2-manifold output;
- *   an angle guard (MinimumAngle, default 10°) keeps new slivers out.
+ *   an angle guard (MinimumAngle, default 10°) keeps new slivers out where they are not needed.
  *
  * The target, the constraints (PreserveBoundary, Locked Points, attribute borders, the points a
  * piece shares with other pieces under MPI), the input and the output mapping are the common
@@ -135,8 +135,10 @@ public:
 
   ///@{
   /**
-   * The angle guard, in degrees (default 10; 0 turns it off): no collapse may create an angle
-   * below it unless the collapsed neighbourhood already had one as small. A collapse that
+   * The angle guard, in degrees (default 10; 0 turns it off): a collapse that creates an angle
+   * a below it (where the collapsed neighbourhood had none as small) waits until every collapse
+   * that creates none costs (MinimumAngle / a)² times more, so thin triangles are made only
+   * where the shape needs them (steep terrain, creases). A collapse that
    * leaves the surface where it was (a plane, a straight crease) may still make thin triangles
    * when no placement on a corner avoids them: CAD meshes need them along their creases.
    * When the guard refuses every collapse left before the target, it is lowered in steps

@@ -239,14 +239,171 @@ void OrderTriangles(const View& input, const std::vector<std::uint8_t>& usable,
   }, 30 * m);
 }
 
+/// Marks every triangle whose three vertices an earlier one (in input order) already has, in
+/// either orientation, unusable; returns whether any was. Such triangles share their lowest
+/// vertex, whose run of triangles (OrderTriangles) they are compared in.
+bool DropDuplicateTriangles(const CompactMesh& mesh, std::vector<std::uint8_t>& usable)
+{
+  bool any = false;
+  std::vector<std::pair<std::int32_t, std::int32_t>> run; // the other two corners, sorted
+  std::int32_t runLowest = -1;
+  for (std::size_t t = 0; t < mesh.InputTriangle.size(); ++t)
+  {
+    const std::int32_t* tri = mesh.Triangles.data() + 3 * t;
+    const std::int32_t lowest = std::min({ tri[0], tri[1], tri[2] });
+    const std::int32_t highest = std::max({ tri[0], tri[1], tri[2] });
+    const auto low = static_cast<std::int32_t>( // the middle one
+      static_cast<std::int64_t>(tri[0]) + tri[1] + tri[2] - lowest - highest);
+    const std::int32_t high = highest;
+    if (lowest != runLowest)
+    {
+      run.clear();
+      runLowest = lowest;
+    }
+    if (std::find(run.begin(), run.end(), std::make_pair(low, high)) != run.end())
+    {
+      usable[mesh.InputTriangle[t]] = 0;
+      any = true;
+    }
+    else
+    {
+      run.emplace_back(low, high);
+    }
+  }
+  return any;
+}
+
+/// Whether some edge is used twice in one direction (two triangles both go from v to w): the
+/// triangles around it face against each other.
+bool HasMisorientedEdge(const VertexTriangleAdjacency& adjacency, const ExecutionContext& context)
+{
+  const std::int64_t n = static_cast<std::int64_t>(adjacency.Offsets.size()) - 1;
+  std::vector<std::uint8_t> found(
+    static_cast<std::size_t>(std::max<std::int64_t>(1, context.Threads)), 0);
+  context.ForEachWithScratch(found, n, 20, [&](std::int64_t v, std::uint8_t& any) {
+    if (any)
+    {
+      return;
+    }
+    FanLookup byNext;
+    const Corner* first = adjacency.Begin(v);
+    const auto nextAt = [first](std::int32_t i) { return first[i].Next; };
+    const std::int32_t degree = static_cast<std::int32_t>(adjacency.End(v) - first);
+    byNext.Reset(degree, nextAt);
+    for (std::int32_t i = 0; i < degree && !any; ++i)
+    {
+      int holders = 0;
+      byNext.Find(first[i].Next, nextAt, &holders);
+      any = holders > 1;
+    }
+  });
+  return std::find(found.begin(), found.end(), 1) != found.end();
+}
+
+/// The triangles across each edge of t that is shared with exactly one other triangle, with
+/// whether that one runs along the edge in the same direction (so faces against t).
+template <typename F>
+void ForEachManifoldNeighbour(const CompactMesh& mesh, std::int32_t t, F&& f)
+{
+  const std::int32_t* tri = mesh.Triangles.data() + 3 * static_cast<std::size_t>(t);
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
+    std::int32_t other = -1, count = 0;
+    bool same = false;
+    for (const Corner* c = mesh.Adjacency.Begin(a); c != mesh.Adjacency.End(a); ++c)
+    {
+      if (c->Triangle != t && (c->Next == b || c->Previous == b))
+      {
+        other = c->Triangle;
+        same = c->Next == b;
+        ++count;
+      }
+    }
+    if (count == 1)
+    {
+      f(other, same);
+    }
+  }
+}
+
+/// Turns triangle t over: its corners b and c swap, in the list and in its corners' slots.
+void Flip(CompactMesh& mesh, std::int32_t t)
+{
+  std::int32_t* tri = mesh.Triangles.data() + 3 * static_cast<std::size_t>(t);
+  std::swap(tri[1], tri[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    for (Corner* c = mesh.Adjacency.Corners.data() + mesh.Adjacency.Offsets[tri[k]];
+         c != mesh.Adjacency.Corners.data() + mesh.Adjacency.Offsets[tri[k] + 1]; ++c)
+    {
+      if (c->Triangle == t)
+      {
+        std::swap(c->Next, c->Previous);
+      }
+    }
+  }
+}
+
+/// Makes the orientation consistent across manifold edges where some edge is used twice in one
+/// direction: each connected part is walked from its first triangle, a triangle facing against
+/// a visited neighbour being marked to turn over; then the part keeps the orientation most of
+/// its triangles have, and the others turn. On a non-orientable part (a Moebius strip) the walk
+/// leaves the edges it cannot mend as they were.
+void OrientConsistently(CompactMesh& mesh, const ExecutionContext& context)
+{
+  if (!HasMisorientedEdge(mesh.Adjacency, context))
+  {
+    return;
+  }
+  const std::int32_t m = static_cast<std::int32_t>(mesh.InputTriangle.size());
+  std::vector<std::int8_t> flip(static_cast<std::size_t>(m), -1); // -1: not reached yet
+  std::vector<std::int32_t> part;
+  for (std::int32_t seed = 0; seed < m; ++seed)
+  {
+    if (flip[seed] >= 0)
+    {
+      continue;
+    }
+    flip[seed] = 0;
+    part.assign(1, seed);
+    for (std::size_t next = 0; next < part.size(); ++next)
+    {
+      const std::int32_t t = part[next];
+      ForEachManifoldNeighbour(mesh, t, [&](std::int32_t s, bool same) {
+        if (flip[s] < 0)
+        {
+          flip[s] = static_cast<std::int8_t>(flip[t] ^ (same ? 1 : 0));
+          part.push_back(s);
+        }
+      });
+    }
+    const std::size_t flipped = static_cast<std::size_t>(
+      std::count_if(part.begin(), part.end(), [&](std::int32_t t) { return flip[t] == 1; }));
+    const std::int8_t turn = 2 * flipped > part.size() ? 0 : 1; // the minority turns over
+    for (const std::int32_t t : part)
+    {
+      if (flip[t] == turn)
+      {
+        Flip(mesh, t);
+      }
+    }
+  }
+}
+
 template <typename PointType, typename IdType>
 CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const ExecutionContext& context)
 {
   CompactMesh mesh;
-  const std::vector<std::uint8_t> usable = MarkUsable(input, mesh, context);
+  std::vector<std::uint8_t> usable = MarkUsable(input, mesh, context);
   std::vector<std::int32_t> vertexOf;
   OrderVertices(input, usable, mesh, vertexOf, context);
   OrderTriangles(input, usable, vertexOf, mesh, context);
+  if (DropDuplicateTriangles(mesh, usable))
+  {
+    OrderTriangles(input, usable, vertexOf, mesh, context);
+  }
+  OrientConsistently(mesh, context);
   return mesh;
 }
 } // namespace

@@ -153,6 +153,12 @@ private:
   bool OntoCheapestCorner(Candidate& candidate, Scratch& scratch) const;
   /// Whether the collapse leaves the surface where it was (see FlatTolerance).
   bool IsFlat(const Candidate& candidate) const;
+  /// The smallest angle (degrees) of the triangles plan changes, at its position.
+  double NewSmallestAngle(const CollapsePlan& plan) const;
+  /// The heap key of a collapse refused by the angle guard alone: its priority times the square
+  /// of how far below the guard its smallest new angle falls, (GuardAngle / angle)², so it waits
+  /// until the collapses that make no sliver cost that much more.
+  double SliverKey(const Candidate& candidate) const;
   /// What the engine's checks say of a popped triangle's plan.
   enum class Verdict : std::uint8_t
   {
@@ -160,6 +166,7 @@ private:
     Stale,    // its key grew past the next triangle's: queued again
     Legal,    // as evaluated
     Fallback, // illegal as evaluated; legal onto a corner, or as a flat collapse with slivers
+    Sliver,   // illegal only by the angle guard
     Illegal
   };
   /// Evaluates t, queued with queuedKey, and checks its plan (the candidate becomes the
@@ -731,6 +738,37 @@ bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate, Scratch& scratch)
   return found;
 }
 
+double VolumeCollapser::NewSmallestAngle(const CollapsePlan& plan) const
+{
+  double largestCosine = -1.0;
+  for (int i = 0; i < plan.Count; ++i)
+  {
+    const std::int32_t s = plan.Vertices[i];
+    this->Mesh.ForEachTriangle(s, [&](std::int32_t t) {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      int inside = 0;
+      for (int j = 0; j < plan.Count; ++j)
+      {
+        inside += (tri[0] == plan.Vertices[j] || tri[1] == plan.Vertices[j] || tri[2] == plan.Vertices[j]) ? 1 : 0;
+      }
+      if (inside == 1) // kept, with s moved to the plan's position
+      {
+        const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
+        largestCosine = std::max(largestCosine, SmallestAngleCosine(plan.Position,
+          this->Mesh.Point(tri[(k + 1) % 3]), this->Mesh.Point(tri[(k + 2) % 3])));
+      }
+    });
+  }
+  return std::acos(std::min(1.0, largestCosine)) * 180.0 / Pi;
+}
+
+double VolumeCollapser::SliverKey(const Candidate& candidate) const
+{
+  const double angle = std::max(NewSmallestAngle(candidate.Plan), 0.01 * this->GuardAngle);
+  const double below = std::max(1.0, this->GuardAngle / angle);
+  return candidate.Priority * below * below;
+}
+
 VolumeCollapser::Verdict VolumeCollapser::Examine(std::int32_t t, double queuedKey, double nextKey,
   Candidate& candidate, double& evaluatedPriority, Scratch& scratch) const
 {
@@ -758,8 +796,11 @@ VolumeCollapser::Verdict VolumeCollapser::Examine(std::int32_t t, double queuedK
   }
   candidate = original;
   candidate.Plan.GuardAngles = false;
-  return this->IsFlat(candidate) && this->Mesh.IsLegal(candidate.Plan, scratch.Check) ? Verdict::Fallback
-                                                                                      : Verdict::Illegal;
+  if (!this->Mesh.IsLegal(candidate.Plan, scratch.Check))
+  {
+    return Verdict::Illegal;
+  }
+  return this->IsFlat(candidate) ? Verdict::Fallback : Verdict::Sliver;
 }
 
 void VolumeCollapser::RefreshAround(
@@ -1176,6 +1217,11 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
       this->Heap.Set(t, item.EvaluatedPriority); // its neighbourhood changed since it was queued
       continue;
     }
+    if (item.Check == Verdict::Sliver && item.QueuedKey < this->SliverKey(item.Chosen))
+    {
+      this->Heap.Set(t, this->SliverKey(item.Chosen));
+      continue;
+    }
     if (item.Check == Verdict::Illegal)
     {
       continue; // until a collapse nearby requeues it
@@ -1215,6 +1261,10 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
       }
       this->Bound.Merge(plan, distance);
     }
+    if (item.Check == Verdict::Sliver)
+    {
+      result.FinalMinimumAngle = std::min(result.FinalMinimumAngle, this->NewSmallestAngle(plan));
+    }
     this->Apply(plan, candidate.Cost, result);
     this->Applied.push_back(plan.Vertices[0]);
   }
@@ -1242,7 +1292,7 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
         // requeue every triangle and go on, rather than stop short of the target.
         this->GuardAngle = this->GuardAngle >= 2.0 ? 0.5 * this->GuardAngle : 0.0;
         this->Mesh.SetMinimumAngle(this->GuardAngle);
-        result.FinalMinimumAngle = this->GuardAngle;
+        result.FinalMinimumAngle = std::min(result.FinalMinimumAngle, this->GuardAngle);
         this->QueueAll();
         continue;
       }
@@ -1321,11 +1371,11 @@ void VolumeCollapser::Judge(VolumeCollapseResult& result) const
     report.Stop = StopReason::NothingRemovable;
     report.Reason = "no collapse is left that keeps the mesh valid";
   }
-  if (result.FinalMinimumAngle < this->Options.MinimumAngle)
+  if (this->GuardAngle < std::min(60.0, this->Options.MinimumAngle))
   {
     std::ostringstream note;
     note << "the angle guard refused every collapse left before the target: lowered from "
-         << this->Options.MinimumAngle << " to " << result.FinalMinimumAngle << " degrees";
+         << this->Options.MinimumAngle << " to " << this->GuardAngle << " degrees";
     report.Notes.push_back(note.str());
   }
 }

@@ -186,6 +186,28 @@ Mesh Sphere(int n)
   return mesh;
 }
 
+/// mesh as scans and exported CAD files come: every fifth triangle turned over and every
+/// eleventh given again at the end (every other copy turned over too).
+Mesh Misoriented(Mesh mesh)
+{
+  const std::size_t triangles = mesh.Triangles.size() / 3;
+  for (std::size_t t = 0; t < triangles; ++t)
+  {
+    std::int32_t* tri = mesh.Triangles.data() + 3 * t;
+    if (t % 5 == 0)
+    {
+      std::swap(tri[1], tri[2]);
+    }
+    if (t % 11 == 0)
+    {
+      const std::int32_t a = tri[0], b = tri[1], c = tri[2];
+      const bool turn = (t / 11) % 2 == 1;
+      mesh.Triangles.insert(mesh.Triangles.end(), { a, turn ? c : b, turn ? b : c });
+    }
+  }
+  return mesh;
+}
+
 /// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
 double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c)
