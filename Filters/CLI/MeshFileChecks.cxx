@@ -1163,12 +1163,12 @@ std::string FindRun(XmlFile& file, vtkXMLDataElement* array, const std::string& 
   {
     return "its appended data offset is " + Quote(text ? text : "missing");
   }
-  run.Position = file.AppendedPosition + offset;
-  run.Base64 = file.AppendedBase64;
-  if (static_cast<std::uintmax_t>(run.Position) >= file.Size)
+  if (static_cast<std::uintmax_t>(offset) >= file.Size - static_cast<std::uintmax_t>(file.AppendedPosition))
   {
     return "its appended data offset " + std::to_string(offset) + " is beyond the file";
   }
+  run.Position = file.AppendedPosition + offset;
+  run.Base64 = file.AppendedBase64;
   run.Length = run.Base64 ? RunLength(file, run.Position) : file.Size - run.Position;
   return "";
 }
@@ -1339,7 +1339,7 @@ std::string CheckPiece(XmlFile& file, vtkXMLDataElement* piece)
     const std::string attribute = std::string("NumberOf") + (k < 0 ? "Points" : kinds[k]);
     const char* text = piece->GetAttribute(attribute.c_str());
     long long& count = k < 0 ? points : counts[k];
-    if (text && !ParseCount(text, count))
+    if (text && (!ParseCount(text, count) || static_cast<std::uintmax_t>(count) > file.Size))
     {
       return "a Piece has " + attribute + " " + Quote(text);
     }
@@ -1574,6 +1574,14 @@ std::string CheckFieldLine(Scan& scan, const std::vector<std::string>& words, bo
     return "field array line " + Quote(words[0]) +
       " is not 'name components tuples type' with a known type";
   }
+  const std::string type = Lower(words[3]);
+  if (type == "string" || type == "utf8_string" || type == "variant")
+  {
+    // One value a line (empty ones too) or two words a value: the rest of the block is not
+    // walked; vtkDataReader reads these types safely.
+    scan.FieldArrays = 0;
+    return "";
+  }
   long long count = 0;
   const std::string problem = components > INT_MAX
     ? "field array " + Quote(words[0]) + " with " + words[1] + " components"
@@ -1769,7 +1777,7 @@ std::string CheckLegacyVTK(const std::string& path)
     {
       problem = legacy::CheckCountLine(scan, words);
     }
-    if (problem.empty() && !words.empty() && legacy::IsCellSection(words[0]) &&
+    if (problem.empty() && !fieldLine && !words.empty() && legacy::IsCellSection(words[0]) &&
       scan.Version < 50 && ParseCount(words.size() > 2 ? words[2] : "", size))
     {
       problem = legacy::CheckLegacyCells(in, scan, size);

@@ -218,6 +218,8 @@ std::vector<Case> SoundFiles()
     { "sound_field.vtk",
       LegacyVTKWithField("FIELD FieldData 2\nuv 2 2 double\n1 2\n3 4\nMETADATA\n"
                          "COMPONENT_NAMES\nu\nv\n\nn 1 1 int\n5\n") },
+    { "sound_field_named_lines.vtk",
+      LegacyVTKWithField("FIELD FieldData 1\nlines 1 3 int\n1 2 3\n") },
     { "sound_field.vtp",
       VTPWithField("      <DataArray type=\"Float64\" Name=\"x\" NumberOfTuples=\"1\" "
                    "format=\"ascii\">1</DataArray>\n") } };
@@ -273,6 +275,17 @@ std::vector<Case> DamagedFiles()
     { "garbage.vtk", Garbage(1000) },
     { "field_type_garbled.vtk", LegacyVTKWithField("FIELD FieldData 1\nx 1 1 d0ouble\n1\n") },
     { "field_type_a_number.vtk", LegacyVTKWithField("FIELD FieldData 1\nx 1 1 8e-12\n") },
+    { "offset_beyond_everything.vtp",
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n  <PolyData>\n"
+      "    <Piece NumberOfPoints=\"4\" NumberOfPolys=\"1\">\n      <Points>\n"
+      "        <DataArray type=\"Float32\" NumberOfComponents=\"3\" format=\"appended\" "
+      "offset=\"9223372036854775807\"/>\n      </Points>\n    </Piece>\n  </PolyData>\n"
+      "  <AppendedData encoding=\"raw\">\n   _0123\n  </AppendedData>\n</VTKFile>\n" },
+    { "cells_beyond_everything.vtp", [] {
+        std::string vtp = VTP();
+        const std::size_t at = vtp.find("NumberOfPolys=\"4\"");
+        return vtp.replace(at, 18, "NumberOfVerts=\"9223372036854775807\" NumberOfPolys=\"4\"");
+      }() },
     { "field_without_type.vtp",
       VTPWithField("      <DataArray Name=\"x\" NumberOfTuples=\"1\" format=\"ascii\">1"
                    "</DataArray>\n") },
