@@ -2,6 +2,7 @@
 #include "TriangleMesh.h"
 
 #include <algorithm>
+#include <tuple>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -241,33 +242,44 @@ void OrderTriangles(const View& input, const std::vector<std::uint8_t>& usable,
 
 /// Marks every triangle whose three vertices an earlier one (in input order) already has, in
 /// either orientation, unusable; returns whether any was. Such triangles share their lowest
-/// vertex, whose run of triangles (OrderTriangles) they are compared in.
+/// vertex, whose run of triangles (OrderTriangles: contiguous, in input order) is sorted by the
+/// other two corners, so a fan of any size costs d log d.
 bool DropDuplicateTriangles(const CompactMesh& mesh, std::vector<std::uint8_t>& usable)
 {
   bool any = false;
-  std::vector<std::pair<std::int32_t, std::int32_t>> run; // the other two corners, sorted
-  std::int32_t runLowest = -1;
-  for (std::size_t t = 0; t < mesh.InputTriangle.size(); ++t)
+  struct Entry
   {
-    const std::int32_t* tri = mesh.Triangles.data() + 3 * t;
+    std::int32_t Low, High, Triangle; // the other two corners, sorted; the position in the run
+  };
+  std::vector<Entry> run;
+  const std::size_t m = mesh.InputTriangle.size();
+  for (std::size_t first = 0, last = 0; first < m; first = last)
+  {
+    const std::int32_t* tri = mesh.Triangles.data() + 3 * first;
     const std::int32_t lowest = std::min({ tri[0], tri[1], tri[2] });
-    const std::int32_t highest = std::max({ tri[0], tri[1], tri[2] });
-    const auto low = static_cast<std::int32_t>( // the middle one
-      static_cast<std::int64_t>(tri[0]) + tri[1] + tri[2] - lowest - highest);
-    const std::int32_t high = highest;
-    if (lowest != runLowest)
+    run.clear();
+    for (last = first; last < m; ++last)
     {
-      run.clear();
-      runLowest = lowest;
+      const std::int32_t* t = mesh.Triangles.data() + 3 * last;
+      if (std::min({ t[0], t[1], t[2] }) != lowest)
+      {
+        break;
+      }
+      const std::int32_t highest = std::max({ t[0], t[1], t[2] });
+      const auto middle = static_cast<std::int32_t>(
+        static_cast<std::int64_t>(t[0]) + t[1] + t[2] - lowest - highest);
+      run.push_back({ middle, highest, static_cast<std::int32_t>(last) });
     }
-    if (std::find(run.begin(), run.end(), std::make_pair(low, high)) != run.end())
+    std::sort(run.begin(), run.end(), [](const Entry& a, const Entry& b) {
+      return std::tie(a.Low, a.High, a.Triangle) < std::tie(b.Low, b.High, b.Triangle);
+    });
+    for (std::size_t k = 1; k < run.size(); ++k)
     {
-      usable[mesh.InputTriangle[t]] = 0;
-      any = true;
-    }
-    else
-    {
-      run.emplace_back(low, high);
+      if (run[k].Low == run[k - 1].Low && run[k].High == run[k - 1].High)
+      {
+        usable[mesh.InputTriangle[run[k].Triangle]] = 0;
+        any = true;
+      }
     }
   }
   return any;
