@@ -312,29 +312,44 @@ bool HasMisorientedEdge(const VertexTriangleAdjacency& adjacency, const Executio
   return std::find(found.begin(), found.end(), 1) != found.end();
 }
 
-/// The triangles across each edge of t that is shared with exactly one other triangle, with
-/// whether that one runs along the edge in the same direction (so faces against t).
-template <typename F>
-void ForEachManifoldNeighbour(const CompactMesh& mesh, std::int32_t t, F&& f)
+/// Across each edge k of each triangle t, at 3 t + k: the one other triangle sharing it (-1 when
+/// the edge is open or has more), and whether that one runs along it in the same direction (so
+/// faces against t). The edges are sorted by their ends, so a fan of any size costs d log d.
+void ManifoldNeighbours(const CompactMesh& mesh, std::vector<std::int32_t>& across,
+  std::vector<std::uint8_t>& same)
 {
-  const std::int32_t* tri = mesh.Triangles.data() + 3 * static_cast<std::size_t>(t);
-  for (int k = 0; k < 3; ++k)
+  struct Edge
   {
-    const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
-    std::int32_t other = -1, count = 0;
-    bool same = false;
-    for (const Corner* c = mesh.Adjacency.Begin(a); c != mesh.Adjacency.End(a); ++c)
+    std::int32_t Low, High, Slot; // Slot = 3 t + k
+    bool Upward;                  // runs from Low to High
+  };
+  const std::size_t slots = mesh.Triangles.size();
+  std::vector<Edge> edges(slots);
+  for (std::size_t slot = 0; slot < slots; ++slot)
+  {
+    const std::int32_t a = mesh.Triangles[slot];
+    const std::int32_t b = mesh.Triangles[slot - slot % 3 + (slot % 3 + 1) % 3];
+    edges[slot] = { std::min(a, b), std::max(a, b), static_cast<std::int32_t>(slot), a < b };
+  }
+  std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) {
+    return std::tie(x.Low, x.High, x.Slot) < std::tie(y.Low, y.High, y.Slot);
+  });
+  across.assign(slots, -1);
+  same.assign(slots, 0);
+  for (std::size_t first = 0, last = 0; first < slots; first = last)
+  {
+    for (last = first + 1; last < slots && edges[last].Low == edges[first].Low &&
+         edges[last].High == edges[first].High;
+         ++last)
     {
-      if (c->Triangle != t && (c->Next == b || c->Previous == b))
-      {
-        other = c->Triangle;
-        same = c->Next == b;
-        ++count;
-      }
     }
-    if (count == 1)
+    if (last - first == 2)
     {
-      f(other, same);
+      const Edge& x = edges[first];
+      const Edge& y = edges[first + 1];
+      across[x.Slot] = y.Slot / 3;
+      across[y.Slot] = x.Slot / 3;
+      same[x.Slot] = same[y.Slot] = x.Upward == y.Upward ? 1 : 0;
     }
   }
 }
@@ -369,6 +384,9 @@ void OrientConsistently(CompactMesh& mesh, const ExecutionContext& context)
     return;
   }
   const std::int32_t m = static_cast<std::int32_t>(mesh.InputTriangle.size());
+  std::vector<std::int32_t> across;
+  std::vector<std::uint8_t> same;
+  ManifoldNeighbours(mesh, across, same); // parts are independent: one part's flips change none
   std::vector<std::int8_t> flip(static_cast<std::size_t>(m), -1); // -1: not reached yet
   std::vector<std::int32_t> part;
   for (std::int32_t seed = 0; seed < m; ++seed)
@@ -382,13 +400,15 @@ void OrientConsistently(CompactMesh& mesh, const ExecutionContext& context)
     for (std::size_t next = 0; next < part.size(); ++next)
     {
       const std::int32_t t = part[next];
-      ForEachManifoldNeighbour(mesh, t, [&](std::int32_t s, bool same) {
-        if (flip[s] < 0)
+      for (std::size_t slot = 3 * static_cast<std::size_t>(t); slot < 3 * static_cast<std::size_t>(t) + 3; ++slot)
+      {
+        const std::int32_t s = across[slot];
+        if (s >= 0 && flip[s] < 0)
         {
-          flip[s] = static_cast<std::int8_t>(flip[t] ^ (same ? 1 : 0));
+          flip[s] = static_cast<std::int8_t>(flip[t] ^ same[slot]);
           part.push_back(s);
         }
-      });
+      }
     }
     const std::size_t flipped = static_cast<std::size_t>(
       std::count_if(part.begin(), part.end(), [&](std::int32_t t) { return flip[t] == 1; }));
