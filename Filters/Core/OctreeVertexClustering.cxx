@@ -177,6 +177,14 @@ public:
   }
 
 private:
+  /// Whether a label keeps triangles. Labels past Shown are pieces made by earlier splits in the
+  /// same pass: like caps, they count as neighbours from the next pass on, when Shown has them
+  /// (reading past Shown was a heap overflow, found by AddressSanitizer).
+  bool IsShown(std::int32_t label) const
+  {
+    return static_cast<std::size_t>(label) < this->Shown.size() && this->Shown[label] != 0;
+  }
+
   /// How many of w's triangles the piece holds.
   std::int32_t Held(std::int32_t w) const
   {
@@ -229,7 +237,7 @@ private:
     {
       const auto found = this->Near.find(end.first);
       if (end.first != this->Label && found != this->Near.end() && found->second > 0 &&
-        (end.first < 0 || this->Shown[end.first]) &&
+        (end.first < 0 || this->IsShown(end.first)) &&
         std::none_of(first, last, [&end](const auto& e) { return e.second == end.first; }))
       {
         return false; // a common neighbour beyond the shared triangles
