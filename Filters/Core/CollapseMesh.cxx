@@ -381,17 +381,15 @@ void CollapseMesh::ScanAroundNext(std::int32_t next, LinkState& link, CheckScrat
   });
 }
 
-bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
+template <typename F>
+bool CollapseMesh::ForEachChangedTriangle(const CollapsePlan& plan, F&& f) const
 {
-  const Eigen::Vector3d& x = plan.Position;
-  const bool guardAngles = plan.GuardAngles && this->MinimumAngleCosine < 1.0;
-  double worstAfter = -1.0; // cosine of the smallest new angle
   for (int i = 0; i < plan.Count; ++i)
   {
     const std::int32_t s = plan.Vertices[i];
     // A vertex that stays where it is (the kept end of a half-edge) changes only the triangles
     // it shares with the other merged vertices, and those are removed.
-    if (x == this->Points[s])
+    if (plan.Position == this->Points[s])
     {
       continue;
     }
@@ -407,14 +405,39 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       {
         inside += Contains(tri, plan.Vertices[j]) ? 1 : 0;
       }
-      const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
-      const Eigen::Vector3d& p = this->Points[tri[(k + 1) % 3]];
-      const Eigen::Vector3d& q = this->Points[tri[(k + 2) % 3]];
-      const Eigen::Vector3d& old = this->Points[s];
       if (inside > 1)
       {
         return; // removed by the collapse
       }
+      const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
+      ok = f(s, this->Points[tri[(k + 1) % 3]], this->Points[tri[(k + 2) % 3]]);
+    });
+    if (!ok)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+double CollapseMesh::SmallestNewAngleCosine(const CollapsePlan& plan) const
+{
+  double worst = -1.0;
+  this->ForEachChangedTriangle(plan, [&](std::int32_t, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+    worst = std::max(worst, SmallestAngleCosine(plan.Position, p, q));
+    return true;
+  });
+  return worst;
+}
+
+bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
+{
+  const Eigen::Vector3d& x = plan.Position;
+  const bool guardAngles = plan.GuardAngles && this->MinimumAngleCosine < 1.0;
+  double worstAfter = -1.0; // cosine of the smallest new angle
+  const bool valid = this->ForEachChangedTriangle(plan,
+    [&](std::int32_t s, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+      const Eigen::Vector3d& old = this->Points[s];
       const Eigen::Vector3d edge = q - p;
       const Eigen::Vector3d normal = (p - old).cross(q - old);
       // Paper 001 §5.3: the plane through the opposite edge, perpendicular to the triangle.
@@ -423,22 +446,20 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       const double sideNew = inward.dot(x - p);
       if (!(sideOld > 0.0 && sideNew > 0.0) && !(sideOld < 0.0 && sideNew < 0.0))
       {
-        ok = false;
-        return;
+        return false;
       }
-      // Degenerate: a new triangle of (almost) zero area. (A turned-over one has failed the
-      // plane-side test already: both measure which side of the edge x is on.)
-      const Eigen::Vector3d newNormal = (p - x).cross(q - x);
-      ok = newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm();
       if (guardAngles)
       {
         worstAfter = std::max(worstAfter, SmallestAngleCosine(x, p, q));
       }
+      // Degenerate: a new triangle of (almost) zero area. (A turned-over one has failed the
+      // plane-side test already: both measure which side of the edge x is on.)
+      const Eigen::Vector3d newNormal = (p - x).cross(q - x);
+      return newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm();
     });
-    if (!ok)
-    {
-      return false;
-    }
+  if (!valid)
+  {
+    return false;
   }
   // The angle guard: no new angle below the minimum unless the neighbourhood had one as small
   // (measured only when a new angle is below the minimum).

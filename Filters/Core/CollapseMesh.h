@@ -231,6 +231,9 @@ public:
 
   /// The angle guard's minimum in degrees; 0 (default) turns it off.
   void SetMinimumAngle(double degrees);
+  /// The cosine of the smallest angle among the triangles the plan keeps but changes, at its
+  /// position: the angle guard's measure (-1 when it changes none).
+  double SmallestNewAngleCosine(const CollapsePlan& plan) const;
 
   /// One region id per vertex (see IsLegal), or none (empty, the default).
   void SetRegions(std::vector<std::int32_t> regions) { this->Regions = std::move(regions); }
@@ -302,6 +305,10 @@ private:
   int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo,
     std::int64_t& droppedRefs);
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
+  /// Calls f(s, p, q) for each triangle the plan keeps but changes: s its merged vertex that
+  /// moves, p and q its other corners in order; f returns false to stop, and so does this.
+  template <typename F>
+  bool ForEachChangedTriangle(const CollapsePlan& plan, F&& f) const;
   /// No new edge between the kept vertex and another shared one, when the kept one is shared.
   bool KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);

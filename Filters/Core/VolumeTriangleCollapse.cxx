@@ -740,26 +740,7 @@ bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate, Scratch& scratch)
 
 double VolumeCollapser::NewSmallestAngle(const CollapsePlan& plan) const
 {
-  double largestCosine = -1.0;
-  for (int i = 0; i < plan.Count; ++i)
-  {
-    const std::int32_t s = plan.Vertices[i];
-    this->Mesh.ForEachTriangle(s, [&](std::int32_t t) {
-      const std::int32_t* tri = this->Mesh.Triangle(t);
-      int inside = 0;
-      for (int j = 0; j < plan.Count; ++j)
-      {
-        inside += (tri[0] == plan.Vertices[j] || tri[1] == plan.Vertices[j] || tri[2] == plan.Vertices[j]) ? 1 : 0;
-      }
-      if (inside == 1) // kept, with s moved to the plan's position
-      {
-        const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
-        largestCosine = std::max(largestCosine, SmallestAngleCosine(plan.Position,
-          this->Mesh.Point(tri[(k + 1) % 3]), this->Mesh.Point(tri[(k + 2) % 3])));
-      }
-    });
-  }
-  return std::acos(std::min(1.0, largestCosine)) * 180.0 / Pi;
+  return std::acos(std::min(1.0, this->Mesh.SmallestNewAngleCosine(plan))) * 180.0 / Pi;
 }
 
 double VolumeCollapser::SliverKey(const Candidate& candidate) const
