@@ -1198,9 +1198,10 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
       this->Heap.Set(t, item.EvaluatedPriority); // its neighbourhood changed since it was queued
       continue;
     }
-    if (item.Check == Verdict::Sliver && item.QueuedKey < this->SliverKey(item.Chosen))
+    const double sliverKey = item.Check == Verdict::Sliver ? this->SliverKey(item.Chosen) : 0.0;
+    if (item.Check == Verdict::Sliver && item.QueuedKey < sliverKey)
     {
-      this->Heap.Set(t, this->SliverKey(item.Chosen));
+      this->Heap.Set(t, sliverKey);
       continue;
     }
     if (item.Check == Verdict::Illegal)
