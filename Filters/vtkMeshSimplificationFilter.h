@@ -39,7 +39,8 @@
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
+#include <memory>  // for std::unique_ptr
+#include <utility> // for std::move
 
 namespace meshsimp
 {
@@ -181,6 +182,27 @@ protected:
    */
   virtual bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) = 0;
+
+  /**
+   * What RunCore does in every filter: the core's options made of the common ones and the
+   * filter's own parameters (its Options derives from both), its core run, and its result kept as
+   * the common SimplifiedMesh. The core's header must be included where this is used.
+   */
+  template <class Options, class Result, class Parameters>
+  static bool RunWith(bool (*core)(const meshsimp::TriangleMeshView&, const Options&, Result&,
+                        const meshsimp::ExecutionContext&),
+    const Parameters& own, const meshsimp::TriangleMeshView& mesh,
+    const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
+    meshsimp::SimplifiedMesh& result)
+  {
+    Options options;
+    static_cast<meshsimp::SimplificationOptions&>(options) = common;
+    static_cast<Parameters&>(options) = own;
+    Result full;
+    const bool finished = core(mesh, options, full, context);
+    result = std::move(static_cast<meshsimp::SimplifiedMesh&>(full));
+    return finished;
+  }
 
   /// How far from a count target the subclass's algorithm may end (a fraction of the count).
   double TargetTolerance = 0.01;

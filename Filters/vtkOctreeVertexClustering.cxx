@@ -16,18 +16,8 @@ bool vtkOctreeVertexClustering::RunCore(const meshsimp::TriangleMeshView& mesh,
   const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
   meshsimp::SimplifiedMesh& result)
 {
-  meshsimp::OctreeClusteringOptions options;
-  static_cast<meshsimp::SimplificationOptions&>(options) = common;
-  options.MaximumCellSize = this->MaximumCellSize;
-  options.MaximumVerticesPerCell = this->MaximumVerticesPerCell;
-  options.ErrorIterations = this->ErrorIterations;
-  options.BoundaryPlanes = this->BoundaryPlanes;
-  options.BoundaryWeight = this->BoundaryWeight;
-  options.PreventFlips = this->PreventFlips;
-  meshsimp::OctreeClusteringResult clustered;
-  const bool finished = meshsimp::OctreeVertexClustering(mesh, options, clustered, context);
-  result = std::move(static_cast<meshsimp::SimplifiedMesh&>(clustered));
-  return finished;
+  const meshsimp::OctreeClusteringParameters& own = *this;
+  return RunWith(meshsimp::OctreeVertexClustering, own, mesh, common, context, result);
 }
 
 void vtkOctreeVertexClustering::PrintSelf(ostream& os, vtkIndent indent)

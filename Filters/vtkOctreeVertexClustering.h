@@ -57,7 +57,10 @@
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkMeshSimplificationFilter.h"
 
+#include "OctreeClusteringParameters.h" // the filter's own settings and defaults
+
 class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOctreeVertexClustering : public vtkMeshSimplificationFilter
+  , protected meshsimp::OctreeClusteringParameters
 {
 public:
   static vtkOctreeVertexClustering* New();
@@ -117,13 +120,6 @@ protected:
 
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
-
-  double MaximumCellSize = 1.0;
-  int MaximumVerticesPerCell = 0;
-  int ErrorIterations = 3;
-  bool BoundaryPlanes = true;
-  double BoundaryWeight = 10.0;
-  bool PreventFlips = true;
 
 private:
   vtkOctreeVertexClustering(const vtkOctreeVertexClustering&) = delete;

@@ -5,6 +5,8 @@
 
 #include "vtkObjectFactory.h"
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkParallelDecimation);
 
 vtkParallelDecimation::vtkParallelDecimation()
@@ -16,24 +18,48 @@ bool vtkParallelDecimation::RunCore(const meshsimp::TriangleMeshView& mesh,
   const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
   meshsimp::SimplifiedMesh& result)
 {
-  meshsimp::ParallelDecimationOptions options;
-  static_cast<meshsimp::SimplificationOptions&>(options) = common;
-  options.FeatureAngle = this->FeatureAngle;
-  options.BoundaryCornerAngle = this->BoundaryCornerAngle;
-  options.Measure = this->ImportanceMeasure == QUADRIC ? meshsimp::ImportanceMeasure::Quadric
-                                                       : meshsimp::ImportanceMeasure::AveragePlane;
-  options.AccumulateError = this->AccumulateError;
-  options.MoveSurvivors = this->MoveSurvivors;
-  options.Choice = this->HalfEdgeChoice == SHORTEST_EDGE ? meshsimp::HalfEdgeChoice::ShortestEdge
-                                                         : meshsimp::HalfEdgeChoice::LeastAreaChange;
-  options.MaximumNormalDeviation = this->MaximumNormalDeviation;
-  options.BucketImportance = this->BucketImportance;
-  options.BucketShare = this->BucketShare;
-  options.RoundFraction = this->RoundFraction;
-  meshsimp::ParallelDecimationResult decimated;
-  const bool finished = meshsimp::ParallelDecimation(mesh, options, decimated, context);
-  result = std::move(static_cast<meshsimp::SimplifiedMesh&>(decimated));
-  return finished;
+  const meshsimp::ParallelDecimationParameters& own = *this;
+  return RunWith(meshsimp::ParallelDecimation, own, mesh, common, context, result);
+}
+
+namespace
+{
+/// A setter's clamp for the core's enumerations, which VTK's macros do not take: false when the
+/// value does not change.
+template <class Enumeration>
+bool SetClamped(Enumeration& member, int value, int last)
+{
+  const auto clamped = static_cast<Enumeration>(std::clamp(value, 0, last));
+  const bool changed = member != clamped;
+  member = clamped;
+  return changed;
+}
+}
+
+void vtkParallelDecimation::SetImportanceMeasure(int measure)
+{
+  if (SetClamped(this->Measure, measure, QUADRIC))
+  {
+    this->Modified();
+  }
+}
+
+int vtkParallelDecimation::GetImportanceMeasure() const
+{
+  return static_cast<int>(this->Measure);
+}
+
+void vtkParallelDecimation::SetHalfEdgeChoice(int choice)
+{
+  if (SetClamped(this->Choice, choice, SHORTEST_EDGE))
+  {
+    this->Modified();
+  }
+}
+
+int vtkParallelDecimation::GetHalfEdgeChoice() const
+{
+  return static_cast<int>(this->Choice);
 }
 
 void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
@@ -41,10 +67,10 @@ void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";
-  os << indent << "ImportanceMeasure: " << this->ImportanceMeasure << "\n";
+  os << indent << "ImportanceMeasure: " << this->GetImportanceMeasure() << "\n";
   os << indent << "AccumulateError: " << this->AccumulateError << "\n";
   os << indent << "MoveSurvivors: " << this->MoveSurvivors << "\n";
-  os << indent << "HalfEdgeChoice: " << this->HalfEdgeChoice << "\n";
+  os << indent << "HalfEdgeChoice: " << this->GetHalfEdgeChoice() << "\n";
   os << indent << "MaximumNormalDeviation: " << this->MaximumNormalDeviation << "\n";
   os << indent << "BucketImportance: " << this->BucketImportance << "\n";
   os << indent << "BucketShare: " << this->BucketShare << "\n";

@@ -63,7 +63,10 @@
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkMeshSimplificationFilter.h"
 
+#include "ParallelDecimationParameters.h" // the filter's own settings and defaults
+
 class MESHSIMPLIFICATIONFILTERS_EXPORT vtkParallelDecimation : public vtkMeshSimplificationFilter
+  , protected meshsimp::ParallelDecimationParameters
 {
 public:
   static vtkParallelDecimation* New();
@@ -72,13 +75,13 @@ public:
 
   enum ImportanceMeasures
   {
-    AVERAGE_PLANE = 0,
-    QUADRIC = 1
+    AVERAGE_PLANE = static_cast<int>(meshsimp::ImportanceMeasure::AveragePlane),
+    QUADRIC = static_cast<int>(meshsimp::ImportanceMeasure::Quadric)
   };
   enum HalfEdgeChoices
   {
-    LEAST_AREA_CHANGE = 0,
-    SHORTEST_EDGE = 1
+    LEAST_AREA_CHANGE = static_cast<int>(meshsimp::HalfEdgeChoice::LeastAreaChange),
+    SHORTEST_EDGE = static_cast<int>(meshsimp::HalfEdgeChoice::ShortestEdge)
   };
 
   ///@{
@@ -104,8 +107,8 @@ public:
    * AVERAGE_PLANE whether a survivor adds the importance of the vertices collapsed into it
    * (AccumulateError, default on).
    */
-  vtkSetClampMacro(ImportanceMeasure, int, AVERAGE_PLANE, QUADRIC);
-  vtkGetMacro(ImportanceMeasure, int);
+  virtual void SetImportanceMeasure(int measure);
+  virtual int GetImportanceMeasure() const;
   vtkSetMacro(AccumulateError, bool);
   vtkGetMacro(AccumulateError, bool);
   vtkBooleanMacro(AccumulateError, bool);
@@ -130,8 +133,8 @@ public:
    * those that turn no remaining triangle by more than MaximumNormalDeviation degrees (default
    * 90; also a limit for QUADRIC), or SHORTEST_EDGE (§5.5).
    */
-  vtkSetClampMacro(HalfEdgeChoice, int, LEAST_AREA_CHANGE, SHORTEST_EDGE);
-  vtkGetMacro(HalfEdgeChoice, int);
+  virtual void SetHalfEdgeChoice(int choice);
+  virtual int GetHalfEdgeChoice() const;
   vtkSetClampMacro(MaximumNormalDeviation, double, 0.0, 180.0);
   vtkGetMacro(MaximumNormalDeviation, double);
   ///@}
@@ -162,17 +165,6 @@ protected:
 
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
-
-  double FeatureAngle = 75.0;
-  double BoundaryCornerAngle = 60.0;
-  int ImportanceMeasure = QUADRIC;
-  bool AccumulateError = true;
-  bool MoveSurvivors = true;
-  int HalfEdgeChoice = LEAST_AREA_CHANGE;
-  double MaximumNormalDeviation = 90.0;
-  double BucketImportance = 0.02;
-  double BucketShare = 0.8;
-  double RoundFraction = 0.1;
 
 private:
   vtkParallelDecimation(const vtkParallelDecimation&) = delete;

@@ -16,21 +16,8 @@ bool vtkVolumeTriangleCollapse::RunCore(const meshsimp::TriangleMeshView& mesh,
   const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
   meshsimp::SimplifiedMesh& result)
 {
-  meshsimp::VolumeCollapseOptions options;
-  static_cast<meshsimp::SimplificationOptions&>(options) = common;
-  options.FeatureCurvature = this->FeatureCurvature;
-  options.BoundaryCornerAngle = this->BoundaryCornerAngle;
-  options.UseNormalFactor = this->UseNormalFactor;
-  options.UseShapeFactor = this->UseShapeFactor;
-  options.UseVolumeWeights = this->UseVolumeWeights;
-  options.EdgeCollapses = this->EdgeCollapses;
-  options.SurfaceErrorWeight = this->SurfaceErrorWeight;
-  options.MinimumAngle = this->MinimumAngle;
-  options.BatchSize = this->BatchSize;
-  meshsimp::VolumeCollapseResult collapsed;
-  const bool finished = meshsimp::VolumeTriangleCollapse(mesh, options, collapsed, context);
-  result = std::move(static_cast<meshsimp::SimplifiedMesh&>(collapsed));
-  return finished;
+  const meshsimp::VolumeCollapseParameters& own = *this;
+  return RunWith(meshsimp::VolumeTriangleCollapse, own, mesh, common, context, result);
 }
 
 void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)

@@ -57,7 +57,10 @@
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkMeshSimplificationFilter.h"
 
+#include "VolumeCollapseParameters.h" // the filter's own settings and defaults
+
 class MESHSIMPLIFICATIONFILTERS_EXPORT vtkVolumeTriangleCollapse : public vtkMeshSimplificationFilter
+  , protected meshsimp::VolumeCollapseParameters
 {
 public:
   static vtkVolumeTriangleCollapse* New();
@@ -166,16 +169,6 @@ protected:
 
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
-
-  double FeatureCurvature = 0.3;
-  double BoundaryCornerAngle = 60.0;
-  bool UseNormalFactor = true;
-  bool UseShapeFactor = false;
-  bool UseVolumeWeights = true;
-  bool EdgeCollapses = true;
-  double SurfaceErrorWeight = 3000.0;
-  double MinimumAngle = 10.0;
-  int BatchSize = 64;
 
 private:
   vtkVolumeTriangleCollapse(const vtkVolumeTriangleCollapse&) = delete;

@@ -51,6 +51,7 @@
 #ifndef MeshSimplification_OctreeVertexClustering_h
 #define MeshSimplification_OctreeVertexClustering_h
 
+#include "OctreeClusteringParameters.h"
 #include "Simplification.h"
 
 #include <cstdint>
@@ -59,24 +60,13 @@
 namespace meshsimp
 {
 
-/// The octree's own settings; the target, locks, open borders and regions are the common ones
-/// (SimplificationOptions). A count is met within the target's Tolerance (3 % by default here)
-/// unless clustering has no count nearer it (the Outcome says so).
-struct OctreeClusteringOptions : SimplificationOptions
+/// The clustering's settings: its own (OctreeClusteringParameters) and the common ones (the
+/// target, locks, open borders and regions: SimplificationOptions). A count is met within the
+/// target's Tolerance (3 % by default here) unless clustering has no count nearer it (the
+/// Outcome says so).
+struct OctreeClusteringOptions : SimplificationOptions, OctreeClusteringParameters
 {
   OctreeClusteringOptions() { this->Goal.Tolerance = 0.03; }
-  /// Leaves with a larger edge, relative to the bounding-box diagonal, are always split;
-  /// <= 0 or >= 1: no limit.
-  double MaximumCellSize = 0.0;
-  /// Leaves with more vertices are always split; <= 0: no limit.
-  std::int64_t MaximumVerticesPerCell = 0;
-  /// Fixed-point iterations for the e2 term (paper: 3 are enough); 0 uses e1 only.
-  int ErrorIterations = 3;
-  /// Add planes perpendicular to boundary edges (paper §3) so open borders are kept.
-  bool BoundaryPlanes = true;
-  double BoundaryWeight = 10.0;
-  /// Split leaves whose clustering would flip a related triangle (§2.4).
-  bool PreventFlips = true;
 };
 
 /**

@@ -52,6 +52,7 @@
 #ifndef MeshSimplification_ParallelDecimation_h
 #define MeshSimplification_ParallelDecimation_h
 
+#include "ParallelDecimationParameters.h"
 #include "Simplification.h"
 
 #include <cstdint>
@@ -72,51 +73,12 @@ enum class DecimationVertexType : std::uint8_t
   Complex
 };
 
-enum class HalfEdgeChoice : std::uint8_t
-{
-  LeastAreaChange, // §5.3
-  ShortestEdge     // §5.5 step 6
-};
-
-enum class ImportanceMeasure : std::uint8_t
-{
-  AveragePlane, // eq. (5.1)–(5.4)
-  Quadric       // accumulated plane quadrics: the least error of the vertex's own half-edges
-};
-
-/// The decimation's own settings; the target, locks, open borders and regions are the common
-/// ones (SimplificationOptions). A count is met within the target's Tolerance (2 % by default).
-struct ParallelDecimationOptions : SimplificationOptions
+/// The decimation's settings: its own (ParallelDecimationParameters) and the common ones (the
+/// target, locks, open borders and regions: SimplificationOptions). A count is met within the
+/// target's Tolerance (2 % by default).
+struct ParallelDecimationOptions : SimplificationOptions, ParallelDecimationParameters
 {
   ParallelDecimationOptions() { this->Goal.Tolerance = 0.02; }
-  /// An edge whose two triangles' normals differ by more than this (degrees) is sharp. 75 by
-  /// default: at 60 the benchmark's RMS distance is 4 % (Quadric) and 3 % (AveragePlane) larger,
-  /// at 90 the CAD fandisk loses creases under AveragePlane.
-  double FeatureAngle = 75.0;
-  /// A boundary vertex where the boundary turns by more than this is a corner.
-  double BoundaryCornerAngle = 60.0;
-  /// Quadric by default: over the benchmark meshes its RMS distance is about half of
-  /// AveragePlane's (which forgets the error of removed vertices, even accumulated).
-  ImportanceMeasure Measure = ImportanceMeasure::Quadric;
-  /// Quadric: move each survivor to the point of least error of its accumulated quadric after
-  /// the last round (see above). Off: survivors keep their input coordinates (about 1.4x the RMS
-  /// distance on the benchmark meshes at 90 %).
-  bool MoveSurvivors = true;
-  /// AveragePlane: a survivor adds the importance of each vertex collapsed into it to its own,
-  /// so that error does not vanish from the ordering when its vertex goes.
-  bool AccumulateError = true;
-  /// The half-edge of an AveragePlane vertex (Quadric picks the half-edge of least error).
-  HalfEdgeChoice Choice = HalfEdgeChoice::LeastAreaChange;
-  /// §5.3: the largest turn (degrees) of a remaining triangle's normal a collapse may cause.
-  /// 90 by default: at 45 the benchmark's RMS distance under Quadric is 10 % larger (fold-overs
-  /// are the engine's plane-side test's job).
-  double MaximumNormalDeviation = 90.0;
-  /// The bucketing function's a (a fraction of the largest importance) and α (the share of the
-  /// buckets it fills), eq. (5.13); the paper's 2 % and 80 %.
-  double BucketImportance = 0.02;
-  double BucketShare = 0.8;
-  /// The share of the candidates, least important first, that one round considers.
-  double RoundFraction = 0.1;
   /// Called with the mesh and the vertices taken for each round before they are removed (for
   /// tests and diagnostics); may be empty.
   std::function<void(const CollapseMesh&, const std::vector<std::int32_t>&)> RoundObserver;

@@ -92,6 +92,7 @@
 #define MeshSimplification_VolumeTriangleCollapse_h
 
 #include "Simplification.h"
+#include "VolumeCollapseParameters.h"
 
 #include <cstdint>
 #include <vector>
@@ -99,34 +100,11 @@
 namespace meshsimp
 {
 
-/// The volume collapse's own settings; the target, locks, open borders and regions are the
-/// common ones (SimplificationOptions). A count is met within the target's Tolerance (1 % by
-/// default, or one triangle).
-struct VolumeCollapseOptions : SimplificationOptions
+/// The volume collapse's settings: its own (VolumeCollapseParameters) and the common ones
+/// (the target, locks, open borders and regions: SimplificationOptions). A count is met within
+/// the target's Tolerance (1 % by default, or one triangle).
+struct VolumeCollapseOptions : SimplificationOptions, VolumeCollapseParameters
 {
-  /// Threshold of the dimensionless Gauss curvature K_t · (mean triangle area); <= 0 disables
-  /// the feature rule.
-  double FeatureCurvature = 0.3;
-  /// A boundary vertex where the boundary turns by more than this is a corner.
-  double BoundaryCornerAngle = 60.0;
-  /// The engine's angle guard (degrees, at most 60; 0 turns it off): no collapse makes a new
-  /// angle below it unless the neighbourhood had one as small.
-  double MinimumAngle = 10.0;
-  /// Let a triangle collapse its cheapest edge instead when that costs under a quarter of the
-  /// triangle's error (beyond the paper; off gives the paper's triangle collapses only).
-  bool EdgeCollapses = true;
-  /// Weight of the surface term of the heap key (beyond the paper; 0 gives the paper's order):
-  /// the new point's area-weighted squared distance to the input planes merged into the
-  /// collapsing vertices, times the squared mean input triangle area.
-  double SurfaceErrorWeight = 3000.0;
-  bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
-  bool UseNormalFactor = true;
-  bool UseVolumeWeights = true;
-  /// Collapses made per batch (1 or more): the cheapest queued triangles whose neighbourhoods
-  /// (every vertex of the triangles around their corners) are disjoint are evaluated, checked
-  /// and, once collapsed in key order, updated on the context's threads. 1 keeps the strict heap
-  /// order. The result depends on this, never on the thread count.
-  int BatchSize = 64;
 };
 
 /**

@@ -845,7 +845,7 @@ void SurvivesDamagedMeshes()
     const bool relative = random() % 2 == 0;
     count >= 0 ? options.Goal.SetTriangleCount(count) : options.Goal.SetMaximumError(bound, relative);
     options.MaximumCellSize = random() % 3 == 0 ? 0.01 * (random() % 100) : 0.0;
-    options.MaximumVerticesPerCell = random() % 3 == 0 ? static_cast<std::int64_t>(random() % 10) : 0;
+    options.MaximumVerticesPerCell = random() % 3 == 0 ? static_cast<int>(random() % 10) : 0;
     options.ErrorIterations = static_cast<int>(random() % 4);
     options.BoundaryPlanes = random() % 2 == 0;
     options.PreventFlips = random() % 2 == 0;

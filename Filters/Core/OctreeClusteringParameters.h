@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file OctreeClusteringParameters.h
+ * @brief The octree vertex clustering's own settings, with their defaults, in one place.
+ *
+ * Plain data with no dependency, so that the VTK filter can hold them (it derives from this
+ * struct, as TTK's filters derive from their base classes) and nothing repeats the defaults.
+ */
+#ifndef meshsimp_OctreeClusteringParameters_h
+#define meshsimp_OctreeClusteringParameters_h
+
+namespace meshsimp
+{
+
+/// See OctreeVertexClustering.h for what each rule does.
+struct OctreeClusteringParameters
+{
+  /// Leaves with a larger edge, relative to the bounding-box diagonal, are always split;
+  /// <= 0 or >= 1: no limit.
+  double MaximumCellSize = 1.0;
+  /// Leaves with more vertices are always split; <= 0: no limit.
+  int MaximumVerticesPerCell = 0;
+  /// Fixed-point iterations for the e2 term (paper: 3 are enough); 0 uses e1 only.
+  int ErrorIterations = 3;
+  /// Add planes perpendicular to boundary edges (paper §3) so open borders are kept.
+  bool BoundaryPlanes = true;
+  double BoundaryWeight = 10.0;
+  /// Split leaves whose clustering would flip a related triangle (§2.4).
+  bool PreventFlips = true;
+};
+
+} // namespace meshsimp
+
+#endif

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file VolumeCollapseParameters.h
+ * @brief The volume triangle collapse's own settings, with their defaults, in one place.
+ *
+ * Plain data with no dependency, so that the VTK filter can hold them (it derives from this
+ * struct, as TTK's filters derive from their base classes) and nothing repeats the defaults.
+ */
+#ifndef meshsimp_VolumeCollapseParameters_h
+#define meshsimp_VolumeCollapseParameters_h
+
+namespace meshsimp
+{
+
+/// See VolumeTriangleCollapse.h for what each rule does and why its default is what it is.
+struct VolumeCollapseParameters
+{
+  /// Threshold of the dimensionless Gauss curvature K_t · (mean triangle area); <= 0 disables
+  /// the feature rule.
+  double FeatureCurvature = 0.3;
+  /// A boundary vertex where the boundary turns by more than this is a corner.
+  double BoundaryCornerAngle = 60.0;
+  /// The engine's angle guard (degrees, at most 60; 0 turns it off): no collapse makes a new
+  /// angle below it unless the neighbourhood had one as small.
+  double MinimumAngle = 10.0;
+  /// Let a triangle collapse its cheapest edge instead when that costs under a quarter of the
+  /// triangle's error (beyond the paper; off gives the paper's triangle collapses only).
+  bool EdgeCollapses = true;
+  /// Weight of the surface term of the heap key (beyond the paper; 0 gives the paper's order):
+  /// the new point's area-weighted squared distance to the input planes merged into the
+  /// collapsing vertices, times the squared mean input triangle area.
+  double SurfaceErrorWeight = 3000.0;
+  bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
+  bool UseNormalFactor = true;
+  bool UseVolumeWeights = true;
+  /// Collapses made per batch (1 or more): the cheapest queued triangles whose neighbourhoods
+  /// (every vertex of the triangles around their corners) are disjoint are evaluated, checked
+  /// and, once collapsed in key order, updated on the context's threads. 1 keeps the strict heap
+  /// order. The result depends on this, never on the thread count.
+  int BatchSize = 64;
+};
+
+} // namespace meshsimp
+
+#endif
