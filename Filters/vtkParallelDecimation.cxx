@@ -24,6 +24,12 @@ bool vtkParallelDecimation::RunCore(const meshsimp::TriangleMeshView& mesh,
 
 namespace
 {
+static_assert(vtkParallelDecimation::AVERAGE_PLANE == static_cast<int>(meshsimp::ImportanceMeasure::AveragePlane) &&
+    vtkParallelDecimation::QUADRIC == static_cast<int>(meshsimp::ImportanceMeasure::Quadric) &&
+    vtkParallelDecimation::LEAST_AREA_CHANGE == static_cast<int>(meshsimp::HalfEdgeChoice::LeastAreaChange) &&
+    vtkParallelDecimation::SHORTEST_EDGE == static_cast<int>(meshsimp::HalfEdgeChoice::ShortestEdge),
+  "the property values are the core's");
+
 /// A setter's clamp for the core's enumerations, which VTK's macros do not take: false when the
 /// value does not change.
 template <class Enumeration>

@@ -75,13 +75,13 @@ public:
 
   enum ImportanceMeasures
   {
-    AVERAGE_PLANE = static_cast<int>(meshsimp::ImportanceMeasure::AveragePlane),
-    QUADRIC = static_cast<int>(meshsimp::ImportanceMeasure::Quadric)
+    AVERAGE_PLANE = 0,
+    QUADRIC = 1
   };
   enum HalfEdgeChoices
   {
-    LEAST_AREA_CHANGE = static_cast<int>(meshsimp::HalfEdgeChoice::LeastAreaChange),
-    SHORTEST_EDGE = static_cast<int>(meshsimp::HalfEdgeChoice::ShortestEdge)
+    LEAST_AREA_CHANGE = 0,
+    SHORTEST_EDGE = 1
   };
 
   ///@{
