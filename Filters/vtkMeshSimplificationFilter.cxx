@@ -320,6 +320,8 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   }
 
   meshsimp::SimplifiedMesh mesh;
+  this->PieceIndex = i;
+  this->PieceInput = piece.Input;
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, this->NumberOfThreads);
   const bool none = (this->TargetMode == TARGET_REDUCTION && this->TargetReduction == 1.0) ||
     (this->TargetMode == TARGET_TRIANGLE_COUNT && this->TargetTriangleCount == 0);
@@ -338,7 +340,7 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   {
     this->WarnAboutOutcome(run, i, mesh);
   }
-  vtkSimplification::SetOutput(piece.Input, piece.Triangles, mesh, this->OutputPointsPrecision, piece.Output);
+  this->WritePiece(piece.Input, piece.Triangles, mesh, piece.Output);
   if (mesh.Report.MaximumError >= 0.0)
   {
     const double error = goal.InBoundUnits(mesh.Report.MaximumError, mesh.Report.Diagonal);
@@ -349,8 +351,18 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   {
     vtkSimplification::AddDeviation(piece.Input->GetPoints(), piece.Triangles, piece.Output, context);
   }
+  this->PieceDone(piece.Input, piece.Triangles);
+  this->PieceInput = nullptr;
   return true;
 }
+
+void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
+  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+{
+  vtkSimplification::SetOutput(input, triangles, mesh, this->OutputPointsPrecision, output);
+}
+
+void vtkMeshSimplificationFilter::PieceDone(vtkPolyData*, const vtkSimplification::TriangleInput&) {}
 
 void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)
 {

@@ -49,6 +49,10 @@ struct SimplificationOptions;
 struct SimplifiedMesh;
 struct TriangleMeshView;
 }
+namespace vtkSimplification
+{
+struct TriangleInput;
+}
 
 class MESHSIMPLIFICATIONFILTERS_EXPORT vtkMeshSimplificationFilter : public vtkPolyDataAlgorithm
 {
@@ -203,6 +207,21 @@ protected:
     result = std::move(static_cast<meshsimp::SimplifiedMesh&>(full));
     return finished;
   }
+
+  /// Writes piece PieceIndex's output from its core's result: vtkSimplification::SetOutput.
+  virtual void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
+    const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
+
+  /**
+   * Called after piece PieceIndex's output is written, with its input and the triangles the
+   * core saw (for a subclass with more outputs). Does nothing by default.
+   */
+  virtual void PieceDone(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles);
+
+  /// The piece RunCore and PieceDone are called for: its index in the execution's pieces and
+  /// its input (for a subclass that reads arrays of its own).
+  std::size_t PieceIndex = 0;
+  vtkPolyData* PieceInput = nullptr;
 
   /// How far from a count target the subclass's algorithm may end (a fraction of the count).
   double TargetTolerance = 0.01;

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace vtkSimplification
@@ -190,27 +191,29 @@ void RecomputeNormals(const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
   }
 }
 
+/// An array of the type's values, converted as static_cast does.
+template <typename ArrayType>
+vtkSmartPointer<vtkDataArray> MakeTypedArray(const meshsimp::NamedArray& named)
+{
+  auto array = vtkSmartPointer<ArrayType>::New();
+  array->SetName(named.Name.c_str());
+  array->SetNumberOfValues(static_cast<vtkIdType>(named.Values.size()));
+  std::transform(named.Values.begin(), named.Values.end(), array->GetPointer(0),
+    [](double value) { return static_cast<typename ArrayType::ValueType>(value); });
+  return array;
+}
+
 vtkSmartPointer<vtkDataArray> MakeNamedArray(const meshsimp::NamedArray& named)
 {
-  vtkSmartPointer<vtkDataArray> array;
   switch (named.Type)
   {
     case meshsimp::NamedArray::Kind::Integer:
-      array = vtkSmartPointer<vtkIntArray>::New();
-      break;
+      return MakeTypedArray<vtkIntArray>(named);
     case meshsimp::NamedArray::Kind::Byte:
-      array = vtkSmartPointer<vtkUnsignedCharArray>::New();
-      break;
+      return MakeTypedArray<vtkUnsignedCharArray>(named);
     default:
-      array = vtkSmartPointer<vtkDoubleArray>::New();
+      return MakeTypedArray<vtkDoubleArray>(named);
   }
-  array->SetName(named.Name.c_str());
-  array->SetNumberOfTuples(static_cast<vtkIdType>(named.Values.size()));
-  for (std::size_t i = 0; i < named.Values.size(); ++i)
-  {
-    array->SetTuple1(static_cast<vtkIdType>(i), named.Values[i]);
-  }
-  return array;
 }
 }
 
@@ -229,6 +232,66 @@ void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkP
   }
 }
 
+namespace
+{
+/// What every output gets after its points, triangles and input arrays: normals recomputed, the
+/// core's point arrays and field values, the input's field data, AchievedReduction.
+void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
+  vtkPolyData* output)
+{
+  RecomputeNormals(mesh, output);
+  for (const meshsimp::NamedArray& named : mesh.PointArrays)
+  {
+    output->GetPointData()->AddArray(MakeNamedArray(named));
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+  for (const auto& [name, value] : mesh.FieldValues)
+  {
+    AddFieldValue(output, name.c_str(), value);
+  }
+  const double inputTriangles = static_cast<double>(triangles.View.NumberOfTriangles);
+  const double numberOfTriangles = static_cast<double>(mesh.NumberOfTriangles());
+  AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
+}
+
+/// The first tuples of an array, copied as one block where its memory is contiguous.
+vtkSmartPointer<vtkAbstractArray> Prefix(vtkAbstractArray* whole, vtkIdType tuples)
+{
+  auto part = vtk::TakeSmartPointer(whole->NewInstance());
+  part->SetName(whole->GetName());
+  part->SetNumberOfComponents(whole->GetNumberOfComponents());
+  auto* data = vtkDataArray::SafeDownCast(whole);
+  if (data && data->HasStandardMemoryLayout())
+  {
+    part->SetNumberOfTuples(tuples);
+    std::memcpy(part->GetVoidPointer(0), data->GetVoidPointer(0),
+      static_cast<std::size_t>(tuples) * data->GetNumberOfComponents() * data->GetDataTypeSize());
+  }
+  else
+  {
+    part->InsertTuples(0, tuples, 0, whole);
+  }
+  return part;
+}
+
+/// The first tuples of every array of whole in part, with the same active attributes.
+void PrefixArrays(vtkDataSetAttributes* whole, vtkIdType tuples, vtkDataSetAttributes* part)
+{
+  for (int i = 0; i < whole->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* array = whole->GetAbstractArray(i);
+    part->AddArray(Prefix(array, tuples));
+    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    {
+      if (whole->GetAbstractAttribute(attribute) == array)
+      {
+        part->SetActiveAttribute(array->GetName(), attribute);
+      }
+    }
+  }
+}
+}
+
 void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
   int outputPointsPrecision, vtkPolyData* output)
 {
@@ -243,18 +306,20 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
     outCD->CopyData(inCD, triangles.SourceCell(mesh.TriangleSource[i]), i);
   }
   MapPointData(input->GetPointData(), mesh, output->GetPointData());
-  RecomputeNormals(mesh, output);
-  for (const meshsimp::NamedArray& named : mesh.PointArrays)
-  {
-    output->GetPointData()->AddArray(MakeNamedArray(named));
-  }
-  output->GetFieldData()->PassData(input->GetFieldData());
-  for (const auto& [name, value] : mesh.FieldValues)
-  {
-    AddFieldValue(output, name.c_str(), value);
-  }
-  const double inputTriangles = static_cast<double>(triangles.View.NumberOfTriangles);
-  AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
+  FinishOutput(input, triangles, mesh, output);
+}
+
+void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole,
+  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+{
+  const vtkIdType points = static_cast<vtkIdType>(mesh.NumberOfPoints());
+  vtkNew<vtkPoints> prefix;
+  prefix->SetData(vtkDataArray::SafeDownCast(Prefix(whole->GetPoints()->GetData(), points)));
+  output->SetPoints(prefix);
+  output->SetPolys(MakeTriangles(mesh.Triangles));
+  PrefixArrays(whole->GetCellData(), static_cast<vtkIdType>(mesh.NumberOfTriangles()), output->GetCellData());
+  PrefixArrays(whole->GetPointData(), points, output->GetPointData());
+  FinishOutput(input, triangles, mesh, output);
 }
 
 void AddFieldValue(vtkPolyData* output, const char* name, double value)

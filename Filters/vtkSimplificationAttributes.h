@@ -35,6 +35,15 @@ namespace vtkSimplification
 void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
   int outputPointsPrecision, vtkPolyData* output);
 
+/**
+ * The output of a level whose points and triangles are the first ones of a whole mesh made by
+ * SetOutput (a progressive mesh's sequence, points and triangles in the order levels take them):
+ * the points and the point and cell arrays are the first tuples of the whole's, copied in
+ * blocks, so that a level costs its size and not the input's; the rest as SetOutput.
+ */
+void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole,
+  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
+
 /// Every point array of inPD mapped to the mesh's output points by the rule above.
 void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkPointData* outPD);
 
