@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // meshsimplify: run a MeshSimplification filter on a mesh file.
 //
-//   meshsimplify --method octree|volume|parallel [--reduction R | --target-triangles N |
-//                --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]
-//                [--repeat N] [--json] INPUT OUTPUT
+//   meshsimplify --method octree|volume|parallel|progressive [--reduction R |
+//                --target-triangles N | --max-error E [--relative-error]] [--threads T]
+//                [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT
 //
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
 // one JSON object; time_ms is the filter's own work (file I/O excluded), the median of N runs
-// with --repeat N (the protocol of the shared benchmark kit's peers).
+// with --repeat N (the protocol of the shared benchmark kit's peers). --levels (progressive
+// only) builds the sequence once and writes the level of each reduction to OUTPUT with %l
+// replaced by the reduction; the JSON then has build_ms and each level's extract_ms.
 #include "MeshFiles.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
+#include "vtkProgressiveMesh.h"
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkCallbackCommand.h"
@@ -115,11 +118,23 @@ Setters ParallelSetters(vtkParallelDecimation* f)
   };
 }
 
+Setters ProgressiveSetters(vtkProgressiveMesh* f)
+{
+  return {
+    { "LengthWeight", [f](double v) { f->SetLengthWeight(v); } },
+    { "CurvatureWeight", [f](double v) { f->SetCurvatureWeight(v); } },
+    { "QuadricWeight", [f](double v) { f->SetQuadricWeight(v); } },
+    { "AttributeWeight", [f](double v) { f->SetAttributeWeight(v); } },
+  };
+}
+
 const char* Usage =
-  "usage: meshsimplify --method octree|volume|parallel [--reduction R | --target-triangles N |\n"
-  "         --max-error E [--relative-error]] [--threads T] [--set Name=Value ...]\n"
-  "         [--repeat N] [--json] INPUT OUTPUT\n"
-  "  --repeat N  run the filter N times; time_ms is the median\n";
+  "usage: meshsimplify --method octree|volume|parallel|progressive [--reduction R |\n"
+  "         --target-triangles N | --max-error E [--relative-error]] [--threads T]\n"
+  "         [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT\n"
+  "  --repeat N  run the filter N times; time_ms is the median\n"
+  "  --levels    progressive: one build, the level of each reduction written to OUTPUT with\n"
+  "              %l replaced by the reduction\n";
 
 /// The command line.
 struct Arguments
@@ -130,6 +145,7 @@ struct Arguments
   bool RelativeError = false, Json = false;
   int Threads = 0, Repeat = 1;
   std::vector<std::pair<std::string, double>> Settings;
+  std::vector<std::string> Levels; // --levels, as typed (they name the files)
 };
 
 /// An option's effect on the arguments; false for an unknown option.
@@ -151,6 +167,16 @@ bool ParseOption(const std::string& arg, const std::function<std::string()>& val
     a.Repeat = static_cast<int>(ParseNumber(arg, value()));
   else if (arg == "--json")
     a.Json = true;
+  else if (arg == "--levels")
+  {
+    std::string list = value() + ",";
+    for (std::size_t comma = list.find(','); comma != std::string::npos; comma = list.find(','))
+    {
+      a.Levels.push_back(list.substr(0, comma));
+      ParseNumber(arg, a.Levels.back());
+      list.erase(0, comma + 1);
+    }
+  }
   else if (arg == "--set")
   {
     const std::string assignment = value();
@@ -200,8 +226,10 @@ Arguments ParseArguments(int argc, char* argv[])
   }
   const std::pair<bool, const char*> checks[] = {
     { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },
-    { a.Method != "octree" && a.Method != "volume" && a.Method != "parallel",
-      "unknown --method (available: octree, volume, parallel)" },
+    { a.Method != "octree" && a.Method != "volume" && a.Method != "parallel" && a.Method != "progressive",
+      "unknown --method (available: octree, volume, parallel, progressive)" },
+    { !a.Levels.empty() && a.Method != "progressive", "--levels needs --method progressive" },
+    { !a.Levels.empty() && a.Output.find("%l") == std::string::npos, "--levels needs %l in OUTPUT" },
     { reductionGiven + (a.TargetTriangles >= 0) + (a.MaximumError >= 0.0) > 1,
       "give only one of --reduction, --target-triangles, --max-error" },
     { a.MaximumError < 0.0 && a.MaximumError != -1.0, "--max-error must be 0 or more" },
@@ -235,6 +263,12 @@ vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
     auto parallel = vtkSmartPointer<vtkParallelDecimation>::New();
     setters = ParallelSetters(parallel);
     filter = parallel;
+  }
+  else if (a.Method == "progressive")
+  {
+    auto progressive = vtkSmartPointer<vtkProgressiveMesh>::New();
+    setters = ProgressiveSetters(progressive);
+    filter = progressive;
   }
   else
   {
@@ -371,6 +405,40 @@ void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
     a.Method.c_str(), CountTriangles(mesh), static_cast<long long>(result->GetNumberOfPolys()), milliseconds,
     a.Threads > 0 ? a.Threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), extra.c_str());
 }
+/// --levels: the sequence built once (the first Update, build_ms), then each level extracted
+/// from it (extract_ms) and written to OUTPUT with %l replaced by its reduction.
+void RunLevels(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilter* filter)
+{
+  filter->SetTargetModeToReduction();
+  filter->SetTargetReduction(ParseNumber("--levels", a.Levels.front()));
+  const double build = RunRepeated(filter, 1, a.Input);
+  std::string levels;
+  for (const std::string& level : a.Levels)
+  {
+    filter->SetTargetReduction(ParseNumber("--levels", level));
+    filter->Modified(); // re-executes; the cached sequence serves
+    const auto start = std::chrono::steady_clock::now();
+    filter->Update();
+    const double extract = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::string path = a.Output;
+    path.replace(path.find("%l"), 2, level);
+    std::string fileError;
+    if (!meshfiles::WriteMesh(filter->GetOutput(), path, fileError))
+    {
+      Fail(fileError);
+    }
+    char entry[256];
+    std::snprintf(entry, sizeof(entry), "%s{\"reduction\": %s, \"output_triangles\": %lld, \"extract_ms\": %.3f}",
+      levels.empty() ? "" : ", ", level.c_str(), static_cast<long long>(filter->GetOutput()->GetNumberOfPolys()), extract);
+    levels += entry;
+  }
+  if (a.Json)
+  {
+    std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"build_ms\": %.3f, \"builds\": %d, \"levels\": [%s]}\n",
+      a.Method.c_str(), CountTriangles(mesh), build, vtkProgressiveMesh::SafeDownCast(filter)->GetNumberOfBuilds(),
+      levels.c_str());
+  }
+}
 }
 
 int main(int argc, char* argv[])
@@ -384,6 +452,11 @@ int main(int argc, char* argv[])
   }
   vtkSmartPointer<vtkMeshSimplificationFilter> filter = MakeFilter(arguments);
   filter->SetInputData(mesh);
+  if (!arguments.Levels.empty())
+  {
+    RunLevels(arguments, mesh, filter);
+    return 0;
+  }
   const double milliseconds = RunRepeated(filter, arguments.Repeat, arguments.Input);
   if (!meshfiles::WriteMesh(filter->GetOutput(), arguments.Output, fileError))
   {

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Baseline images of the filters: the cow at 90 % reduction (flat shading with edges) and the
 // Jacksboro terrain at 95 % coloured by the carried elevation array.
-//   TestFilterImage Octree|Volume|Parallel Cow|Terrain -V baseline.png -T temporary/
+//   TestFilterImage Octree|Volume|Parallel|Progressive Cow|Terrain -V baseline.png -T temporary/
 #include "vtkOFFReader.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
+#include "vtkProgressiveMesh.h"
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkNew.h"
@@ -18,7 +19,7 @@ int TestFilterImage(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::cerr << "usage: TestFilterImage Octree|Volume|Parallel Cow|Terrain -V baseline -T dir\n";
+    std::cerr << "usage: TestFilterImage Octree|Volume|Parallel|Progressive Cow|Terrain -V baseline -T dir\n";
     return EXIT_FAILURE;
   }
   const bool terrain = std::strcmp(argv[2], "Terrain") == 0;
@@ -34,6 +35,12 @@ int TestFilterImage(int argc, char* argv[])
     auto parallel = vtkSmartPointer<vtkParallelDecimation>::New();
     parallel->SetTargetReduction(terrain ? 0.95 : 0.9);
     filter = parallel;
+  }
+  else if (std::strcmp(argv[1], "Progressive") == 0)
+  {
+    auto progressive = vtkSmartPointer<vtkProgressiveMesh>::New();
+    progressive->SetTargetReduction(terrain ? 0.95 : 0.9);
+    filter = progressive;
   }
   else
   {

@@ -6,8 +6,8 @@
 #   cmake -DHELP=<build>/Plugin/paraview_help -DXML=<source>/Plugin -P TestHelpPages.cmake
 file(GLOB pages "${HELP}/filters.*.html")
 list(LENGTH pages count)
-if (NOT count EQUAL 3)
-  message(FATAL_ERROR "expected the help pages of 3 filters in ${HELP}, found ${count}")
+if (NOT count EQUAL 4)
+  message(FATAL_ERROR "expected the help pages of 4 filters in ${HELP}, found ${count}")
 endif ()
 foreach (page IN LISTS pages)
   file(READ "${page}" text)

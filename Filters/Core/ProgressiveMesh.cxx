@@ -1,0 +1,799 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ProgressiveMesh.h"
+
+#include "CollapseHeap.h"
+#include "Quadric.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+namespace meshsimp
+{
+namespace
+{
+
+/// A vertex's kind, fixed by the input: a closed fan, one open fan along a border, or neither
+/// (locked, on a non-manifold edge, pinched, or where the orientation flips).
+enum Kind : std::uint8_t
+{
+  Interior,
+  Border,
+  Fixed
+};
+
+/// May a vertex of the row's kind move onto one of the column's (§7: border vertices never
+/// collapse into interior ones; fixed vertices never move)?
+constexpr bool KindAllows[3][3] = {
+  { true, true, true },   // Interior
+  { false, true, true },  // Border
+  { false, false, false } // Fixed
+};
+
+/// A neighbour y of the vertex x being measured, with the triangles on the edge xy (two on an
+/// interior edge, one on a border edge).
+struct RingEntry
+{
+  std::int32_t Vertex;
+  std::int32_t Triangles[2];
+  std::int32_t Count;
+};
+
+/// The kind of a vertex from its corners (v, Next, Previous): one fan walked across its edges
+/// covers every corner, closed (Interior) or open at both ends (Border).
+Kind ClassifyFan(const Corner* begin, const Corner* end, std::vector<Corner>& fan)
+{
+  fan.assign(begin, end);
+  const auto byPrevious = [](const Corner& a, const Corner& b) { return a.Previous < b.Previous; };
+  std::sort(fan.begin(), fan.end(), byPrevious);
+  std::vector<std::int32_t> nexts;
+  nexts.reserve(fan.size());
+  for (const Corner& c : fan)
+  {
+    nexts.push_back(c.Next);
+  }
+  std::sort(nexts.begin(), nexts.end());
+  const auto repeated = [](auto first, auto last, auto same) { return std::adjacent_find(first, last, same) != last; };
+  if (repeated(nexts.begin(), nexts.end(), std::equal_to<>()) ||
+    repeated(fan.begin(), fan.end(), [](const Corner& a, const Corner& b) { return a.Previous == b.Previous; }))
+  {
+    return Fixed; // an edge in two triangles of one orientation: non-manifold or flipped
+  }
+  std::size_t start = fan.size(), starts = 0;
+  for (std::size_t i = 0; i < fan.size(); ++i)
+  {
+    if (!std::binary_search(nexts.begin(), nexts.end(), fan[i].Previous))
+    {
+      start = i;
+      ++starts;
+    }
+  }
+  if (starts > 1)
+  {
+    return Fixed; // several open fans
+  }
+  std::size_t current = starts == 1 ? start : 0, walked = 1;
+  for (;; ++walked)
+  {
+    const Corner key{ -1, -1, fan[current].Next };
+    const auto found = std::lower_bound(fan.begin(), fan.end(), key, byPrevious);
+    if (found == fan.end() || found->Previous != key.Previous)
+    {
+      break; // the open end
+    }
+    current = static_cast<std::size_t>(found - fan.begin());
+    if (current == (starts == 1 ? start : 0) || walked > fan.size())
+    {
+      break;
+    }
+  }
+  if (walked != fan.size())
+  {
+    return Fixed; // several closed fans around one point
+  }
+  return starts == 1 ? Border : Interior;
+}
+
+class ProgressiveBuilder
+{
+public:
+  ProgressiveBuilder(const ProgressiveMeshOptions& options, const ExecutionContext& context)
+    : Options(options)
+    , Context(context)
+  {
+  }
+
+  bool Run(const TriangleMeshView& input, ProgressiveMesh& sequence);
+
+private:
+  void Prepare(PreparedMesh& prepared);
+  void BuildQuadrics();
+  void MeasureScales();
+  template <class Visit>
+  void ForEachTriangle(std::int32_t v, Visit&& visit);
+  void GatherRing(std::int32_t x);
+  bool Allowed(std::int32_t x, const RingEntry& entry) const;
+  double Cost(std::int32_t x, const RingEntry& entry) const;
+  void Measure(std::int32_t x);
+  Refusal Check(std::int32_t x, const RingEntry& entry);
+  bool CollapseTop();
+  bool StillCheapest(std::int32_t x, double cost);
+  void Collapse(std::int32_t x, std::int32_t y);
+  void UpdateNormal(std::int32_t t);
+  void WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence) const;
+
+  const ProgressiveMeshOptions& Options;
+  const ExecutionContext& Context;
+  Frame Coordinates;
+
+  // Per vertex.
+  std::vector<Eigen::Vector3d> P;
+  std::vector<std::uint8_t> Kinds;
+  std::vector<std::int32_t> Regions;
+  std::vector<std::int32_t> Head;      // first corner of the vertex's list (-1: none)
+  std::vector<std::int32_t> Triangles; // live triangles at the vertex
+  std::vector<Quadric> Quadrics;
+  std::vector<double> Weights; // the area behind each quadric
+  std::vector<std::uint32_t> Stamp, MarkStamp;
+  std::vector<std::int32_t> Slot;
+  std::vector<double> Extra; // the extra coordinates, scaled, ExtraDimension per vertex
+  // Per corner and triangle.
+  std::vector<std::int32_t> Corners;    // 3 per triangle, the current vertices
+  std::vector<std::int32_t> NextCorner; // the next corner of the same vertex
+  std::vector<Eigen::Vector3d> Normals; // unit, zero when degenerate
+  std::vector<std::int32_t> RemovedStep;
+  // The sequence.
+  std::vector<std::int32_t> Removed, Into;
+  std::vector<double> StepError;
+  double LengthScale = 1.0, QuadricScale = 0.0; // the weights over their terms' units
+  int ExtraDimension = 0;
+  CollapseHeap Heap;
+  std::vector<RingEntry> Ring, Affected;
+  std::vector<std::pair<double, std::int32_t>> Candidates;
+  std::int32_t BorderNeighbours[2] = { -1, -1 };
+  std::uint32_t CurrentStamp = 0, CurrentMark = 0;
+};
+
+template <class Visit>
+void ProgressiveBuilder::ForEachTriangle(std::int32_t v, Visit&& visit)
+{
+  // Walks v's list, unlinking the corners of removed triangles on the way.
+  std::int32_t* link = &this->Head[v];
+  while (*link >= 0)
+  {
+    const std::int32_t corner = *link;
+    if (this->RemovedStep[corner / 3] >= 0)
+    {
+      *link = this->NextCorner[corner];
+      continue;
+    }
+    visit(corner / 3, corner % 3);
+    link = &this->NextCorner[corner];
+  }
+}
+
+bool ProgressiveBuilder::Run(const TriangleMeshView& input, ProgressiveMesh& sequence)
+{
+  sequence = ProgressiveMesh();
+  PreparedMesh prepared = PrepareMesh(input, this->Options, Normalization::CentreAndDiagonal, this->Context);
+  sequence.Report = prepared.Report();
+  this->Prepare(prepared);
+  if (!this->Context.Report(0.1))
+  {
+    return false;
+  }
+  const std::int32_t n = static_cast<std::int32_t>(this->P.size());
+  for (std::int32_t x = 0; x < n; ++x)
+  {
+    this->Measure(x);
+  }
+  const std::size_t reportEvery = std::max<std::size_t>(1024, this->P.size() / 64);
+  while (this->CollapseTop())
+  {
+    if (this->Removed.size() % reportEvery == 0 &&
+      !this->Context.Report(0.1 + 0.85 * static_cast<double>(this->Removed.size()) / std::max(1, n)))
+    {
+      return false;
+    }
+  }
+  this->WriteSequence(prepared, sequence);
+  return this->Context.Report(1.0);
+}
+
+void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
+{
+  // Flat arrays from the prepared mesh: the corner lists, normals, kinds, quadrics and scales.
+  CompactMesh& mesh = prepared.Mesh;
+  this->Coordinates = prepared;
+  this->P = std::move(mesh.Points);
+  this->Corners = mesh.Triangles;
+  this->Regions = std::move(prepared.Regions);
+  const std::size_t n = this->P.size(), m = this->Corners.size() / 3;
+  this->Head.assign(n, -1);
+  this->NextCorner.assign(3 * m, -1);
+  this->Triangles.assign(n, 0);
+  for (std::size_t c = 3 * m; c-- > 0;)
+  {
+    const std::int32_t v = this->Corners[c];
+    this->NextCorner[c] = this->Head[v];
+    this->Head[v] = static_cast<std::int32_t>(c);
+    ++this->Triangles[v];
+  }
+  this->RemovedStep.assign(m, -1);
+  this->Normals.resize(m);
+  for (std::size_t t = 0; t < m; ++t)
+  {
+    this->UpdateNormal(static_cast<std::int32_t>(t));
+  }
+  this->Kinds.resize(n);
+  std::vector<Corner> fan;
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    this->Kinds[v] = prepared.Locks[v] ? Fixed : ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), fan);
+  }
+  mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
+  this->ExtraDimension = this->Options.ExtraCoordinates ? std::max(0, this->Options.ExtraDimension) : 0;
+  this->Extra.resize(n * this->ExtraDimension);
+  const double extraScale = this->Options.AttributeWeight / (this->Options.ExtraScale > 0.0 ? this->Options.ExtraScale : 1.0);
+  for (std::size_t v = 0; v < n && this->ExtraDimension > 0; ++v)
+  {
+    for (int k = 0; k < this->ExtraDimension; ++k)
+    {
+      const double value = this->Options.ExtraCoordinates[static_cast<std::size_t>(mesh.InputVertex[v]) * this->ExtraDimension + k];
+      this->Extra[v * this->ExtraDimension + k] = std::isfinite(value) ? extraScale * value : 0.0;
+    }
+  }
+  this->Stamp.assign(n, 0);
+  this->MarkStamp.assign(n, 0);
+  this->Slot.assign(n, 0);
+  this->BuildQuadrics();
+  this->MeasureScales();
+  this->Heap.Reset(static_cast<std::int32_t>(n));
+}
+
+void ProgressiveBuilder::UpdateNormal(std::int32_t t)
+{
+  const Eigen::Vector3d& a = this->P[this->Corners[3 * t]];
+  const Eigen::Vector3d normal = (this->P[this->Corners[3 * t + 1]] - a).cross(this->P[this->Corners[3 * t + 2]] - a);
+  const double length = normal.norm();
+  this->Normals[t] = length > 0.0 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();
+}
+
+void ProgressiveBuilder::BuildQuadrics()
+{
+  // Garland-Heckbert: each triangle's plane weighted by its area at its corners, and at an open
+  // border the plane through the edge perpendicular to the triangle, weighted by the squared
+  // edge length, so that borders keep their shape.
+  this->Quadrics.assign(this->P.size(), Quadric());
+  this->Weights.assign(this->P.size(), 0.0);
+  for (std::size_t t = 0; t < this->Normals.size(); ++t)
+  {
+    const std::int32_t* c = &this->Corners[3 * t];
+    const Eigen::Vector3d& n = this->Normals[t];
+    const double area = 0.5 * (this->P[c[1]] - this->P[c[0]]).cross(this->P[c[2]] - this->P[c[0]]).norm();
+    const Quadric plane = Quadric::FromPlane(n, -n.dot(this->P[c[0]]), area);
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Quadrics[c[k]] += plane;
+      this->Weights[c[k]] += area;
+    }
+  }
+  for (std::int32_t v = 0; v < static_cast<std::int32_t>(this->P.size()); ++v)
+  {
+    this->GatherRing(v);
+    for (const RingEntry& entry : this->Ring)
+    {
+      const std::int32_t w = entry.Vertex;
+      if (entry.Count != 1 || w < v)
+      {
+        continue; // not a border edge, or seen from its other end
+      }
+      const Eigen::Vector3d edge = this->P[w] - this->P[v];
+      const Eigen::Vector3d side = edge.cross(this->Normals[entry.Triangles[0]]);
+      const double length = side.norm();
+      if (!(length > 0.0))
+      {
+        continue;
+      }
+      const Eigen::Vector3d m = side / length;
+      const Quadric plane = Quadric::FromPlane(m, -m.dot(this->P[v]), edge.squaredNorm());
+      this->Quadrics[v] += plane;
+      this->Quadrics[w] += plane;
+    }
+  }
+}
+
+void ProgressiveBuilder::MeasureScales()
+{
+  // The units of the cost's terms: the mean L1 edge length and the mean area times the mean
+  // squared edge length (the quadric error of one mean triangle one mean edge away).
+  double l1 = 0.0, squared = 0.0;
+  const double area = std::accumulate(this->Weights.begin(), this->Weights.end(), 0.0) / 3.0;
+  const std::size_t m = this->Normals.size();
+  for (std::size_t t = 0; t < m; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d d = this->P[this->Corners[3 * t + (k + 1) % 3]] - this->P[this->Corners[3 * t + k]];
+      l1 += d.cwiseAbs().sum();
+      squared += d.squaredNorm();
+    }
+  }
+  const double edges = std::max<double>(1.0, 3.0 * static_cast<double>(m));
+  const double meanLength = l1 > 0.0 ? l1 / edges : 1.0;
+  const double unit = (area / std::max<double>(1.0, static_cast<double>(m))) * (squared / edges);
+  this->LengthScale = this->Options.LengthWeight / meanLength;
+  this->QuadricScale = this->Options.QuadricWeight / (unit > 0.0 ? unit : 1.0);
+}
+
+void ProgressiveBuilder::GatherRing(std::int32_t x)
+{
+  // x's neighbours, each with the triangles on its edge; the border neighbours on the side.
+  ++this->CurrentStamp;
+  this->Ring.clear();
+  this->ForEachTriangle(x, [&](std::int32_t t, int k) {
+    for (const int step : { 1, 2 })
+    {
+      const std::int32_t w = this->Corners[3 * t + (k + step) % 3];
+      if (this->Stamp[w] != this->CurrentStamp)
+      {
+        this->Stamp[w] = this->CurrentStamp;
+        this->Slot[w] = static_cast<std::int32_t>(this->Ring.size());
+        this->Ring.push_back({ w, { t, -1 }, 1 });
+      }
+      else
+      {
+        RingEntry& entry = this->Ring[this->Slot[w]];
+        entry.Triangles[1] = t;
+        ++entry.Count;
+      }
+    }
+  });
+  this->BorderNeighbours[0] = this->BorderNeighbours[1] = -1;
+  for (const RingEntry& entry : this->Ring)
+  {
+    if (entry.Count == 1)
+    {
+      this->BorderNeighbours[this->BorderNeighbours[0] < 0 ? 0 : 1] = entry.Vertex;
+    }
+  }
+}
+
+bool ProgressiveBuilder::Allowed(std::int32_t x, const RingEntry& entry) const
+{
+  // The first three checks, which need nothing but the ring: the kind table, the regions, and
+  // a border vertex only along its border.
+  const std::int32_t y = entry.Vertex;
+  return KindAllows[this->Kinds[x]][this->Kinds[y]] && (this->Regions.empty() || this->Regions[x] == this->Regions[y]) &&
+    (this->Kinds[x] != Border || entry.Count == 1);
+}
+
+double ProgressiveBuilder::Cost(std::int32_t x, const RingEntry& entry) const
+{
+  // Wu and Fei §4: the L1 length and the curvature 1 - N_ABC . N_ABD, weighted; the L1
+  // distance of the extra coordinates (§7); beyond the paper, the quadric error of y for x's
+  // planes.
+  const std::int32_t y = entry.Vertex;
+  const double length = (this->P[x] - this->P[y]).cwiseAbs().sum();
+  double attributes = 0.0; // the extra coordinates come scaled by AttributeWeight
+  for (int k = 0; k < this->ExtraDimension; ++k)
+  {
+    attributes += std::abs(this->Extra[x * this->ExtraDimension + k] - this->Extra[y * this->ExtraDimension + k]);
+  }
+  double curvature = 0.0;
+  if (entry.Count == 2)
+  {
+    curvature = 1.0 - this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]);
+  }
+  else
+  {
+    const std::int32_t other = this->BorderNeighbours[0] == y ? this->BorderNeighbours[1] : this->BorderNeighbours[0];
+    if (other >= 0)
+    {
+      const Eigen::Vector3d in = (this->P[x] - this->P[other]).normalized(), out = (this->P[y] - this->P[x]).normalized();
+      curvature = 1.0 - in.dot(out);
+    }
+  }
+  double cost = this->LengthScale * length + this->Options.CurvatureWeight * curvature + attributes;
+  if (this->QuadricScale > 0.0)
+  {
+    cost += this->QuadricScale * this->Quadrics[x].Evaluate(this->P[y]);
+  }
+  return std::isfinite(cost) ? cost : std::numeric_limits<double>::max();
+}
+
+void ProgressiveBuilder::Measure(std::int32_t x)
+{
+  // Step 2: the vertex's cost is its cheapest allowed edge's; fixed vertices never queue.
+  double best = std::numeric_limits<double>::infinity();
+  if (this->Kinds[x] != Fixed && this->Triangles[x] > 0)
+  {
+    this->GatherRing(x);
+    for (const RingEntry& entry : this->Ring)
+    {
+      if (this->Allowed(x, entry))
+      {
+        best = std::min(best, this->Cost(x, entry));
+      }
+    }
+  }
+  if (best < std::numeric_limits<double>::infinity())
+  {
+    this->Heap.Set(x, best);
+  }
+  else
+  {
+    this->Heap.Remove(x);
+  }
+}
+
+Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
+{
+  // The ordered checks; the ring of x is gathered. Returns the first that fails.
+  const std::int32_t y = entry.Vertex;
+  if (!KindAllows[this->Kinds[x]][this->Kinds[y]])
+  {
+    return Refusal::Kind;
+  }
+  if (!this->Regions.empty() && this->Regions[x] != this->Regions[y])
+  {
+    return Refusal::Region;
+  }
+  if (this->Kinds[x] == Border && entry.Count != 1)
+  {
+    return Refusal::AcrossBorder;
+  }
+  std::int32_t opposite[2] = { -1, -1 };
+  for (std::int32_t i = 0; i < entry.Count; ++i)
+  {
+    const std::int32_t* c = &this->Corners[3 * entry.Triangles[i]];
+    opposite[i] = c[0] != x && c[0] != y ? c[0] : (c[1] != x && c[1] != y ? c[1] : c[2]);
+  }
+  ++this->CurrentMark;
+  this->ForEachTriangle(y, [&](std::int32_t t, int) {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->MarkStamp[this->Corners[3 * t + k]] = this->CurrentMark;
+    }
+  });
+  for (const RingEntry& other : this->Ring)
+  {
+    const std::int32_t w = other.Vertex;
+    if (w != y && w != opposite[0] && w != opposite[1] && this->MarkStamp[w] == this->CurrentMark)
+    {
+      return Refusal::Link;
+    }
+  }
+  const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Kinds[v] == Interior ? 3 : 1); };
+  if (!keeps(y, this->Triangles[y] + this->Triangles[x] - 2 * entry.Count) ||
+    (opposite[0] >= 0 && !keeps(opposite[0], this->Triangles[opposite[0]] - 1)) ||
+    (opposite[1] >= 0 && !keeps(opposite[1], this->Triangles[opposite[1]] - 1)))
+  {
+    return Refusal::LastTriangles;
+  }
+  bool flips = false;
+  this->ForEachTriangle(x, [&](std::int32_t t, int k) {
+    const std::int32_t a = this->Corners[3 * t + (k + 1) % 3], b = this->Corners[3 * t + (k + 2) % 3];
+    if (a == y || b == y || flips)
+    {
+      return;
+    }
+    const Eigen::Vector3d moved = (this->P[a] - this->P[y]).cross(this->P[b] - this->P[y]);
+    const double scale = (this->P[a] - this->P[y]).norm() * (this->P[b] - this->P[y]).norm();
+    flips = !(moved.norm() > 1e-12 * scale) || moved.dot(this->Normals[t]) < 0.0;
+  });
+  return flips ? Refusal::Flip : Refusal::None;
+}
+
+bool ProgressiveBuilder::CollapseTop()
+{
+  // Step 4: the top vertex's candidates in cost order, the first legal one collapsed. A key may
+  // be stale (Collapse leaves the ring's keys as they were): one that rose goes back to the heap
+  // under its true cost, unchecked, and waits unless it is still the cheapest; so does one whose
+  // cheapest edges are illegal. A vertex with no legal edge leaves the heap until a collapse
+  // changes its ring.
+  while (!this->Heap.Empty())
+  {
+    const std::int32_t x = this->Heap.Top();
+    this->GatherRing(x);
+    std::vector<std::pair<double, std::int32_t>>& order = this->Candidates;
+    order.clear();
+    for (const RingEntry& entry : this->Ring)
+    {
+      if (this->Allowed(x, entry))
+      {
+        order.emplace_back(this->Cost(x, entry), entry.Vertex);
+      }
+    }
+    // The cheapest first; the others sorted only when it is illegal (seldom).
+    std::iter_swap(order.begin(), std::min_element(order.begin(), order.end()));
+    if (!order.empty() && !this->StillCheapest(x, order.front().first))
+    {
+      continue;
+    }
+    const auto isLegal = [&](const std::pair<double, std::int32_t>& candidate) {
+      return this->Check(x, this->Ring[this->Slot[candidate.second]]) == Refusal::None;
+    };
+    auto legal = order.begin();
+    if (legal != order.end() && !isLegal(*legal))
+    {
+      std::sort(order.begin() + 1, order.end());
+      legal = std::find_if(order.begin() + 1, order.end(), isLegal);
+    }
+    if (legal == order.end())
+    {
+      this->Heap.Remove(x);
+      continue;
+    }
+    if (this->StillCheapest(x, legal->first))
+    {
+      this->Collapse(x, legal->second);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool ProgressiveBuilder::StillCheapest(std::int32_t x, double cost)
+{
+  // The top vertex x costs cost: false when that exceeds its key and, requeued under it, x is no
+  // longer on top.
+  if (cost > this->Heap.TopCost())
+  {
+    this->Heap.Set(x, cost);
+    return this->Heap.Top() == x;
+  }
+  return true;
+}
+
+void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
+{
+  // Step 4: x's triangles on the edge xy are removed, the others move onto y; y takes x's
+  // quadric.
+  const std::int32_t step = static_cast<std::int32_t>(this->Removed.size());
+  const double error = std::sqrt(this->Quadrics[x].Evaluate(this->P[y]) / std::max(this->Weights[x], 1e-300));
+  this->StepError.push_back(std::max(this->StepError.empty() ? 0.0 : this->StepError.back(), error));
+  this->Removed.push_back(x);
+  this->Into.push_back(y);
+  std::int32_t corner = this->Head[x];
+  this->Head[x] = -1;
+  while (corner >= 0)
+  {
+    const std::int32_t next = this->NextCorner[corner], t = corner / 3;
+    const std::int32_t* c = &this->Corners[3 * t];
+    if (this->RemovedStep[t] < 0 && (c[0] == y || c[1] == y || c[2] == y))
+    {
+      this->RemovedStep[t] = step;
+      for (int k = 0; k < 3; ++k)
+      {
+        --this->Triangles[c[k]];
+      }
+    }
+    else if (this->RemovedStep[t] < 0)
+    {
+      this->Corners[corner] = y;
+      this->NextCorner[corner] = this->Head[y];
+      this->Head[y] = corner;
+      --this->Triangles[x];
+      ++this->Triangles[y];
+      this->UpdateNormal(t);
+    }
+    corner = next;
+  }
+  this->Quadrics[y] += this->Quadrics[x];
+  this->Weights[y] += this->Weights[x];
+  this->Heap.Remove(x);
+  // Step 5, lazily: the keys of y and its ring stay until they reach the top, where CollapseTop
+  // costs them anew (and queues a vertex again when its cost rose); only vertices out of the
+  // heap (none of their edges was allowed or legal) are measured now, as their ring changed.
+  this->Measure(y);
+  this->Affected.assign(this->Ring.begin(), this->Ring.end()); // y's ring, gathered by Measure
+  for (const RingEntry& entry : this->Affected)
+  {
+    if (!this->Heap.Contains(entry.Vertex) && this->Kinds[entry.Vertex] != Fixed)
+    {
+      this->Measure(entry.Vertex);
+    }
+  }
+}
+
+void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence) const
+{
+  // Points: those never removed in vertex order, then the removed ones, last removed first.
+  const std::int32_t n = static_cast<std::int32_t>(this->P.size());
+  const std::int32_t collapses = static_cast<std::int32_t>(this->Removed.size());
+  std::vector<std::int32_t> index(n, -1);
+  for (std::int32_t s = 0; s < collapses; ++s)
+  {
+    index[this->Removed[s]] = n - 1 - s;
+  }
+  std::int32_t base = 0;
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    index[v] = index[v] < 0 ? base++ : index[v];
+  }
+  sequence.BasePoints = base;
+  sequence.InputPoint.resize(n);
+  sequence.Parent.assign(n, -1);
+  sequence.Error.assign(n, 0.0);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    sequence.InputPoint[index[v]] = prepared.Mesh.InputVertex[v];
+  }
+  for (std::int32_t s = 0; s < collapses; ++s)
+  {
+    sequence.Parent[n - 1 - s] = index[this->Into[s]];
+    sequence.Error[n - 1 - s] = this->StepError[s] / this->Coordinates.Scale;
+  }
+  // Triangles: the input corners renumbered, ordered by the point that removes them.
+  const std::size_t m = this->RemovedStep.size();
+  std::vector<std::pair<std::int32_t, std::int32_t>> order(m);
+  for (std::size_t t = 0; t < m; ++t)
+  {
+    const std::int32_t step = this->RemovedStep[t];
+    order[t] = { step < 0 ? -1 : n - 1 - step, static_cast<std::int32_t>(t) };
+  }
+  std::sort(order.begin(), order.end());
+  sequence.Triangles.resize(3 * m);
+  sequence.InputTriangle.resize(m);
+  sequence.RemovedBy.resize(m);
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const std::int32_t t = order[i].second;
+    for (int k = 0; k < 3; ++k)
+    {
+      sequence.Triangles[3 * i + k] = index[prepared.Mesh.Triangles[3 * t + k]];
+    }
+    sequence.InputTriangle[i] = prepared.Mesh.InputTriangle[t];
+    sequence.RemovedBy[i] = order[i].first;
+  }
+}
+
+} // namespace
+
+std::int64_t ProgressiveMesh::TrianglesAt(std::int64_t points) const
+{
+  return std::lower_bound(this->RemovedBy.begin(), this->RemovedBy.end(), points) - this->RemovedBy.begin();
+}
+
+std::vector<double> ProgressiveMesh::CollapseLevel(std::int64_t points) const
+{
+  const std::int64_t n = this->NumberOfPoints(), collapses = this->NumberOfCollapses();
+  std::vector<double> level(std::min(points, n), 1.0);
+  for (std::int64_t p = this->BasePoints; p < static_cast<std::int64_t>(level.size()); ++p)
+  {
+    level[p] = static_cast<double>(n - p) / static_cast<double>(collapses);
+  }
+  return level;
+}
+
+std::string ProgressiveMesh::Validate(std::int64_t inputPoints) const
+{
+  // The checks in order, the first failure named.
+  const std::int64_t n = this->NumberOfPoints(), m = static_cast<std::int64_t>(this->RemovedBy.size());
+  if (static_cast<std::int64_t>(this->InputPoint.size()) != n || static_cast<std::int64_t>(this->Error.size()) != n ||
+    static_cast<std::int64_t>(this->Triangles.size()) != 3 * m || static_cast<std::int64_t>(this->InputTriangle.size()) != m)
+  {
+    return "its arrays differ in length";
+  }
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    const bool base = p < this->BasePoints;
+    if (this->InputPoint[p] < 0 || this->InputPoint[p] >= inputPoints || (base ? this->Parent[p] != -1 : (this->Parent[p] < 0 || this->Parent[p] >= p)))
+    {
+      return "point " + std::to_string(p) + " has no valid parent (each removed point's Parent is a smaller index)";
+    }
+  }
+  for (std::int64_t i = 0; i < m; ++i)
+  {
+    if ((i > 0 && this->RemovedBy[i] < this->RemovedBy[i - 1]) || this->RemovedBy[i] >= n ||
+      (this->RemovedBy[i] >= 0 && this->RemovedBy[i] < this->BasePoints))
+    {
+      return "its triangles are not ordered by RemovedAt";
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (this->Triangles[3 * i + k] < 0 || this->Triangles[3 * i + k] >= n)
+      {
+        return "triangle " + std::to_string(i) + " has a corner out of range";
+      }
+    }
+  }
+  return {};
+}
+
+bool BuildProgressiveMesh(const TriangleMeshView& input, const ProgressiveMeshOptions& options,
+  ProgressiveMesh& sequence, const ExecutionContext& context)
+{
+  ProgressiveBuilder builder(options, context);
+  return builder.Run(input, sequence);
+}
+
+std::int64_t LevelFor(const ProgressiveMesh& sequence, const Target& goal, Outcome& outcome)
+{
+  const std::int64_t n = sequence.NumberOfPoints(), base = sequence.BasePoints;
+  if (goal.Bounded())
+  {
+    // The most collapses whose running error stays within the bound.
+    const double bound = goal.RelativeError ? goal.MaximumError * goal.UnitLength(outcome.Diagonal) : goal.MaximumError;
+    const auto first = sequence.Error.begin() + base;
+    const std::int64_t k = base + (std::partition_point(first, sequence.Error.end(), [bound](double e) { return e > bound; }) - first);
+    outcome.MaximumError = k < n ? sequence.Error[k] : 0.0;
+    return k;
+  }
+  const std::int64_t target = goal.TriangleCountFor(outcome.UsableTriangles);
+  outcome.TargetTriangles = target;
+  std::int64_t low = base, high = n; // the first level with at least target triangles
+  while (low < high)
+  {
+    const std::int64_t middle = low + (high - low) / 2;
+    if (sequence.TrianglesAt(middle) >= target)
+    {
+      high = middle;
+    }
+    else
+    {
+      low = middle + 1;
+    }
+  }
+  std::int64_t k = low;
+  if (k > base && target - sequence.TrianglesAt(k - 1) < sequence.TrianglesAt(k) - target)
+  {
+    k -= 1;
+  }
+  if (sequence.TrianglesAt(k) > target + goal.Slack(target))
+  {
+    outcome.Stop = StopReason::NothingRemovable;
+    outcome.Reason = "no collapse that keeps the mesh valid is left (the coarsest level of the sequence)";
+  }
+  outcome.MaximumError = k < n ? sequence.Error[k] : 0.0;
+  return k;
+}
+
+void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,
+  SimplifiedMesh& level)
+{
+  // Each corner goes to its first ancestor below points: parents have smaller indices, so one
+  // pass upwards from points gives every removed point's.
+  const std::int64_t n = sequence.NumberOfPoints(), k = std::min(std::max(points, sequence.BasePoints), n);
+  std::vector<std::int32_t> ancestor(n - k);
+  for (std::int64_t p = k; p < n; ++p)
+  {
+    const std::int32_t parent = sequence.Parent[p];
+    ancestor[p - k] = parent < k ? parent : ancestor[parent - k];
+  }
+  const auto survivor = [&](std::int32_t p) { return p < k ? p : ancestor[p - k]; };
+  const std::int64_t m = sequence.TrianglesAt(k);
+  level.Triangles.resize(3 * m);
+  for (std::int64_t i = 0; i < 3 * m; ++i)
+  {
+    level.Triangles[i] = survivor(sequence.Triangles[i]);
+  }
+  level.TriangleSource.assign(sequence.InputTriangle.begin(), sequence.InputTriangle.begin() + m);
+  level.Points.resize(3 * k);
+  level.SourceOffsets.resize(k + 1);
+  level.SourcePoints.assign(sequence.InputPoint.begin(), sequence.InputPoint.begin() + k);
+  level.SourceWeights.assign(k, 1.0);
+  for (std::int64_t p = 0; p < k; ++p)
+  {
+    const Eigen::Vector3d x = input.Point(sequence.InputPoint[p]);
+    std::copy(x.data(), x.data() + 3, level.Points.begin() + 3 * p);
+    level.SourceOffsets[p + 1] = static_cast<std::int32_t>(p + 1);
+  }
+  level.AddPointArray("CollapseLevel", sequence.CollapseLevel(k));
+  level.FieldValues.emplace_back("LevelTriangles", static_cast<double>(m));
+  level.FieldValues.emplace_back("LevelPoints", static_cast<double>(k));
+}
+
+void ExtractTarget(const ProgressiveMesh& sequence, const Target& goal, const TriangleMeshView& input,
+  SimplifiedMesh& level)
+{
+  Outcome outcome = sequence.Report;
+  const std::int64_t points = LevelFor(sequence, goal, outcome);
+  ExtractLevel(sequence, points, input, level);
+  level.Report = outcome;
+}
+
+} // namespace meshsimp

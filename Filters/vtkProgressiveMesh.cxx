@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkProgressiveMesh.h"
+
+#include "ProgressiveMesh.h"
+#include "vtkSimplificationAttributes.h"
+#include "vtkSimplificationInput.h"
+
+#include "vtkCellData.h"
+#include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+vtkStandardNewMacro(vtkProgressiveMesh);
+
+/// The sequences of the last input, one per piece, and what they were built from.
+struct vtkProgressiveMesh::Cache
+{
+  std::string Key; // the input's modification time and the properties the build depends on
+  std::vector<meshsimp::ProgressiveMesh> Pieces;
+  std::vector<bool> Ready;
+  /// Per piece, the whole sequence as a mesh (made once, at the first level written): levels are
+  /// copied from its first points and triangles, and output port 1 shows piece 0's.
+  std::vector<vtkSmartPointer<vtkPolyData>> Wholes;
+  vtkPolyData* SequenceOutput = nullptr; // output port 1, for a single-surface input
+};
+
+namespace
+{
+/// The arrays a sequence written by output port 1 carries.
+const char* const ParentName = "Parent";
+const char* const RemovedAtName = "RemovedAt";
+const char* const ErrorName = "CollapseError";
+
+/// The modification times of what a build reads in every leaf of the input: points, cells and
+/// point arrays. Unlike the input's own time they survive shallow copies, such as the one
+/// ParaView's vtkPVPostFilter makes of every filter's input at each update.
+std::string InputStamp(vtkDataObject* input)
+{
+  std::ostringstream stamp;
+  const auto add = [&stamp](vtkDataObject* leaf) {
+    auto* surface = vtkPolyData::SafeDownCast(leaf);
+    if (!surface)
+    {
+      stamp << (leaf ? leaf->GetMTime() : 0) << ';';
+      return;
+    }
+    stamp << (surface->GetPoints() ? surface->GetPoints()->GetMTime() : 0) << ',';
+    for (vtkCellArray* cells : { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+    {
+      stamp << cells->GetMTime() << ',';
+    }
+    vtkPointData* pd = surface->GetPointData();
+    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+    {
+      stamp << (pd->GetAbstractArray(i) ? pd->GetAbstractArray(i)->GetMTime() : 0) << ',';
+    }
+    stamp << ';';
+  };
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> leaf = vtk::TakeSmartPointer(composite->NewIterator());
+    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+    {
+      add(leaf->GetCurrentDataObject());
+    }
+  }
+  else
+  {
+    add(input);
+  }
+  return stamp.str();
+}
+
+bool IsSequence(vtkPolyData* input)
+{
+  return input->GetPointData()->GetArray(ParentName) && input->GetCellData()->GetArray(RemovedAtName);
+}
+
+/// A sequence from the arrays of output port 1 read back: points and triangles as they are.
+/// Empty when the arrays form one, else what is wrong.
+std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& mesh, meshsimp::ProgressiveMesh& sequence)
+{
+  vtkDataArray* parent = input->GetPointData()->GetArray(ParentName);
+  vtkDataArray* removedAt = input->GetCellData()->GetArray(RemovedAtName);
+  vtkDataArray* error = input->GetPointData()->GetArray(ErrorName);
+  const vtkIdType n = mesh.NumberOfPoints, m = mesh.NumberOfTriangles;
+  if (m != input->GetNumberOfCells() || removedAt->GetNumberOfTuples() != m)
+  {
+    return "its cells are not the sequence's triangles";
+  }
+  sequence = meshsimp::ProgressiveMesh();
+  sequence.InputPoint.resize(n);
+  std::iota(sequence.InputPoint.begin(), sequence.InputPoint.end(), 0);
+  sequence.Parent.resize(n);
+  sequence.Error.assign(n, 0.0);
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    sequence.Parent[p] = static_cast<std::int32_t>(parent->GetComponent(p, 0));
+    sequence.Error[p] = error ? error->GetComponent(p, 0) : 0.0;
+  }
+  while (sequence.BasePoints < n && sequence.Parent[sequence.BasePoints] < 0)
+  {
+    ++sequence.BasePoints;
+  }
+  sequence.Triangles.resize(3 * m);
+  for (vtkIdType i = 0; i < 3 * m; ++i)
+  {
+    sequence.Triangles[i] = static_cast<std::int32_t>(mesh.Id(i));
+  }
+  sequence.InputTriangle.resize(m);
+  std::iota(sequence.InputTriangle.begin(), sequence.InputTriangle.end(), 0);
+  sequence.RemovedBy.resize(m);
+  for (vtkIdType t = 0; t < m; ++t)
+  {
+    sequence.RemovedBy[t] = static_cast<std::int32_t>(removedAt->GetComponent(t, 0));
+  }
+  double bounds[6];
+  input->GetBounds(bounds);
+  sequence.Report.UsableTriangles = m;
+  sequence.Report.UsablePoints = n;
+  sequence.Report.Diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  return sequence.Validate(n);
+}
+
+/// The whole sequence as a mesh for output port 1: every point, in collapse order, every
+/// triangle, and the arrays that let it be read back.
+meshsimp::SimplifiedMesh WholeSequence(const meshsimp::ProgressiveMesh& sequence, const meshsimp::TriangleMeshView& mesh)
+{
+  meshsimp::SimplifiedMesh whole;
+  meshsimp::ExtractLevel(sequence, sequence.NumberOfPoints(), mesh, whole);
+  whole.FieldValues.clear();
+  whole.Triangles = sequence.Triangles;
+  whole.TriangleSource = sequence.InputTriangle;
+  whole.AddPointArray(ParentName, std::vector<double>(sequence.Parent.begin(), sequence.Parent.end()),
+    meshsimp::NamedArray::Kind::Integer);
+  whole.AddPointArray(ErrorName, sequence.Error);
+  return whole;
+}
+}
+
+vtkProgressiveMesh::vtkProgressiveMesh()
+  : Sequences(new Cache)
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkProgressiveMesh::~vtkProgressiveMesh() = default;
+
+vtkPolyData* vtkProgressiveMesh::GetSequenceOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkProgressiveMesh::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
+vtkTypeBool vtkProgressiveMesh::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const vtkTypeBool result = this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    vtkInformation* info = outputVector->GetInformationObject(1);
+    if (!vtkPolyData::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
+    {
+      info->Set(vtkDataObject::DATA_OBJECT(), vtkNew<vtkPolyData>());
+    }
+  }
+  return result;
+}
+
+int vtkProgressiveMesh::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The cached sequences serve while the input and every property but the target are unchanged.
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  std::ostringstream key;
+  key.precision(17);
+  key << InputStamp(input) << ' ' << this->LengthWeight << ' ' << this->CurvatureWeight << ' '
+      << this->QuadricWeight << ' ' << this->AttributeWeight << ' ' << this->PreserveBoundary << ' '
+      << this->PreserveAttributeBorders << ' ' << this->OutputPointsPrecision;
+  for (int index = 0; index < 3; ++index)
+  {
+    vtkInformation* selection = this->GetInputArrayInformation(index);
+    key << " '" << (selection->Has(vtkDataObject::FIELD_NAME()) ? selection->Get(vtkDataObject::FIELD_NAME()) : "")
+        << "' " << (selection->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()) ? selection->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()) : -1);
+  }
+  if (key.str() != this->Sequences->Key)
+  {
+    *this->Sequences = Cache();
+    this->Sequences->Key = key.str();
+  }
+  vtkPolyData* sequenceOutput = vtkPolyData::GetData(outputVector, 1);
+  sequenceOutput->Initialize();
+  this->Sequences->SequenceOutput = vtkCompositeDataSet::SafeDownCast(input) ? nullptr : sequenceOutput;
+  return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
+  const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result)
+{
+  // The piece's sequence: read from a sequence given as input, cached, or built; then the level
+  // the target picks.
+  Cache& cache = *this->Sequences;
+  const std::size_t i = this->PieceIndex;
+  cache.Pieces.resize(std::max(cache.Pieces.size(), i + 1));
+  cache.Ready.resize(cache.Pieces.size(), false);
+  meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
+  if (!cache.Ready[i] && IsSequence(this->PieceInput))
+  {
+    const std::string problem = ReadSequence(this->PieceInput, mesh, sequence);
+    cache.Ready[i] = problem.empty();
+    if (!problem.empty())
+    {
+      vtkWarningMacro(<< "The input has the arrays of a sequence, but " << problem << ": building it anew.");
+    }
+  }
+  if (!cache.Ready[i])
+  {
+    meshsimp::ProgressiveMeshOptions options;
+    static_cast<meshsimp::SimplificationOptions&>(options) = common;
+    static_cast<meshsimp::ProgressiveMeshParameters&>(options) = *this;
+    std::vector<double> extra;
+    if (auto* array = vtkDataArray::SafeDownCast(
+          vtkSimplification::SelectedPointArray(this, 2, this->PieceInput, "attribute coordinates")))
+    {
+      const int k = array->GetNumberOfComponents();
+      extra.resize(static_cast<std::size_t>(array->GetNumberOfTuples()) * k);
+      for (vtkIdType p = 0; p < array->GetNumberOfTuples(); ++p)
+      {
+        array->GetTuple(p, extra.data() + p * k);
+      }
+      const auto range = std::minmax_element(extra.begin(), extra.end());
+      const double span = extra.empty() ? 0.0 : *range.second - *range.first;
+      options.ExtraCoordinates = extra.data();
+      options.ExtraDimension = k;
+      options.ExtraScale = vtkUnsignedCharArray::SafeDownCast(array) ? 255.0 : (span > 0.0 ? span : 1.0);
+    }
+    if (!meshsimp::BuildProgressiveMesh(mesh, options, sequence, context))
+    {
+      return false;
+    }
+    cache.Ready[i] = true;
+    ++this->NumberOfBuilds;
+  }
+  meshsimp::ExtractTarget(sequence, common.Goal, mesh, result);
+  return true;
+}
+
+void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
+  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+{
+  // The level from the first points and triangles of the whole sequence's mesh, made now if it
+  // is not yet; a piece without a sequence (aborted, nothing asked for) the usual way.
+  Cache& cache = *this->Sequences;
+  const std::size_t i = this->PieceIndex;
+  if (i >= cache.Ready.size() || !cache.Ready[i] || mesh.NumberOfPoints() == 0)
+  {
+    this->Superclass::WritePiece(input, triangles, mesh, output);
+    return;
+  }
+  cache.Wholes.resize(cache.Ready.size());
+  vtkSmartPointer<vtkPolyData>& whole = cache.Wholes[i];
+  if (!whole)
+  {
+    const meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
+    whole = vtkSmartPointer<vtkPolyData>::New();
+    vtkSimplification::SetOutput(input, triangles, WholeSequence(sequence, triangles.View), this->OutputPointsPrecision, whole);
+    vtkNew<vtkIntArray> removedAt;
+    removedAt->SetName(RemovedAtName);
+    removedAt->SetNumberOfValues(static_cast<vtkIdType>(sequence.RemovedBy.size()));
+    std::copy(sequence.RemovedBy.begin(), sequence.RemovedBy.end(), removedAt->GetPointer(0));
+    whole->GetCellData()->AddArray(removedAt);
+    whole->GetFieldData()->Initialize();
+  }
+  vtkSimplification::SetPrefixOutput(input, triangles, whole, mesh, output);
+  for (const char* name : { ParentName, ErrorName })
+  {
+    output->GetPointData()->RemoveArray(name);
+  }
+  output->GetCellData()->RemoveArray(RemovedAtName);
+}
+
+void vtkProgressiveMesh::PieceDone(vtkPolyData*, const vtkSimplification::TriangleInput&)
+{
+  // Output port 1 shows the sequence of a single-surface input.
+  Cache& cache = *this->Sequences;
+  if (cache.SequenceOutput && this->PieceIndex == 0 && !cache.Wholes.empty() && cache.Wholes[0])
+  {
+    cache.SequenceOutput->ShallowCopy(cache.Wholes[0]);
+  }
+}
+
+void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "LengthWeight: " << this->LengthWeight << "\n";
+  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
+  os << indent << "QuadricWeight: " << this->QuadricWeight << "\n";
+  os << indent << "AttributeWeight: " << this->AttributeWeight << "\n";
+  os << indent << "NumberOfBuilds: " << this->NumberOfBuilds << "\n";
+}

@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Unit tests of the progressive mesh core (ProgressiveMesh.h): the sequence, its levels and
+// their guarantees.
+#include "ProgressiveMesh.h"
+#include "TestHelpers.h"
+#include "TestMeshes.h"
+
+#include <numeric>
+#include <set>
+
+namespace
+{
+meshsimp::ProgressiveMesh Build(const Mesh& mesh, meshsimp::ProgressiveMeshOptions options = {})
+{
+  meshsimp::ProgressiveMesh sequence;
+  CHECK(meshsimp::BuildProgressiveMesh(mesh.View(), options, sequence));
+  CHECK(sequence.Validate(mesh.View().NumberOfPoints).empty());
+  return sequence;
+}
+
+meshsimp::SimplifiedMesh Level(const meshsimp::ProgressiveMesh& sequence, const Mesh& mesh, std::int64_t points)
+{
+  meshsimp::SimplifiedMesh level;
+  meshsimp::ExtractLevel(sequence, points, mesh.View(), level);
+  return level;
+}
+
+/// The level's triangles in input point ids, rotated so that the smallest id comes first.
+std::multiset<std::array<std::int32_t, 3>> InInputIds(const meshsimp::SimplifiedMesh& level)
+{
+  std::multiset<std::array<std::int32_t, 3>> triangles;
+  for (std::size_t t = 0; t < level.Triangles.size(); t += 3)
+  {
+    std::array<std::int32_t, 3> ids;
+    for (int k = 0; k < 3; ++k)
+    {
+      ids[k] = level.Representative(level.Triangles[t + k]);
+    }
+    std::rotate(ids.begin(), std::min_element(ids.begin(), ids.end()), ids.end());
+    triangles.insert(ids);
+  }
+  return triangles;
+}
+
+void FullLevelIsTheInput()
+{
+  // The level with every point replays the sequence back to the input, bit for bit.
+  const Mesh mesh = Sphere(12);
+  const meshsimp::ProgressiveMesh sequence = Build(mesh);
+  const meshsimp::SimplifiedMesh whole = Level(sequence, mesh, sequence.NumberOfPoints());
+  meshsimp::SimplifiedMesh asInput;
+  asInput.Triangles = mesh.Triangles;
+  asInput.SourceOffsets.clear();
+  for (std::int32_t p = 0; p <= static_cast<std::int32_t>(mesh.Points.size() / 3); ++p)
+  {
+    asInput.SourceOffsets.push_back(p);
+    asInput.SourcePoints.push_back(p);
+  }
+  CHECK(InInputIds(whole) == InInputIds(asInput));
+  for (std::int64_t p = 0; p < whole.NumberOfPoints(); ++p)
+  {
+    CHECK(std::equal(whole.Points.begin() + 3 * p, whole.Points.begin() + 3 * p + 3,
+      mesh.Points.begin() + 3 * static_cast<std::size_t>(whole.Representative(p))));
+  }
+}
+
+void LevelsEqualAReplay()
+{
+  // Every level equals the collapses replayed one by one on the input's triangles (each removed
+  // point replaced by its parent, degenerate triangles dropped), and a closed sphere stays a
+  // closed, consistently oriented manifold at every level.
+  const Mesh mesh = Sphere(8);
+  const meshsimp::ProgressiveMesh sequence = Build(mesh);
+  const std::int64_t n = sequence.NumberOfPoints();
+  CHECK(sequence.BasePoints >= 4 && sequence.BasePoints < n / 4);
+  std::vector<std::int32_t> current(mesh.Triangles.size());
+  std::vector<std::int32_t> pointOf(n);
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    pointOf[sequence.InputPoint[p]] = static_cast<std::int32_t>(p);
+  }
+  for (std::size_t i = 0; i < current.size(); ++i)
+  {
+    current[i] = pointOf[mesh.Triangles[i]];
+  }
+  for (std::int64_t k = n; k >= sequence.BasePoints; --k)
+  {
+    if (k < n)
+    {
+      std::replace(current.begin(), current.end(), static_cast<std::int32_t>(k), sequence.Parent[k]);
+    }
+    meshsimp::SimplifiedMesh replayed;
+    for (std::size_t t = 0; t < current.size(); t += 3)
+    {
+      const std::int32_t* c = &current[t];
+      if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2])
+      {
+        replayed.Triangles.insert(replayed.Triangles.end(), c, c + 3);
+      }
+    }
+    replayed.SourceOffsets.clear();
+    for (std::int64_t p = 0; p <= n; ++p)
+    {
+      replayed.SourceOffsets.push_back(static_cast<std::int32_t>(p));
+      replayed.SourcePoints.push_back(static_cast<std::int32_t>(std::min(p, n - 1)));
+    }
+    const meshsimp::SimplifiedMesh level = Level(sequence, mesh, k);
+    CHECK(level.NumberOfPoints() == k);
+    CHECK(static_cast<std::int64_t>(level.Triangles.size() / 3) == sequence.TrianglesAt(k));
+    CHECK(ValidOutput(level.Points, level.Triangles));
+    CHECK(ClosedOriented(level.Triangles));
+    CHECK(InInputIds(level).size() == replayed.Triangles.size() / 3);
+    meshsimp::SimplifiedMesh asSequence = level;
+    asSequence.SourcePoints.resize(k);
+    std::iota(asSequence.SourcePoints.begin(), asSequence.SourcePoints.end(), 0);
+    CHECK(InInputIds(asSequence) == InInputIds(replayed));
+  }
+}
+
+void TargetsPickLevels()
+{
+  // A count gives the nearest level (each collapse removes one or two triangles), a reduction
+  // the same as its count, a bound the most collapses within it; a count below the coarsest
+  // level says why.
+  const Mesh mesh = Grid(20);
+  const meshsimp::ProgressiveMesh sequence = Build(mesh);
+  meshsimp::Target goal;
+  goal.SetTriangleCount(200);
+  meshsimp::SimplifiedMesh level;
+  meshsimp::ExtractTarget(sequence, goal, mesh.View(), level);
+  CHECK(std::abs(level.NumberOfTriangles() - 200) <= 1);
+  CHECK(level.Report.Stop == meshsimp::StopReason::TargetMet);
+  goal.SetReduction(0.75);
+  meshsimp::SimplifiedMesh reduced;
+  meshsimp::ExtractTarget(sequence, goal, mesh.View(), reduced);
+  CHECK(reduced.Triangles == level.Triangles);
+  goal.SetTriangleCount(0);
+  meshsimp::SimplifiedMesh coarsest;
+  meshsimp::ExtractTarget(sequence, goal, mesh.View(), coarsest);
+  CHECK(coarsest.NumberOfPoints() == sequence.BasePoints);
+  // A flat grid: every interior collapse is exact, so a zero bound removes interior points,
+  // and the border (a straight line between corners) shrinks only along itself.
+  goal.SetMaximumError(1e-9, true);
+  meshsimp::SimplifiedMesh exact;
+  meshsimp::ExtractTarget(sequence, goal, mesh.View(), exact);
+  CHECK(exact.NumberOfTriangles() < 800 / 4);
+  CHECK(exact.Report.MaximumError <= 1e-9 * std::sqrt(2.0));
+  for (std::size_t i = 2; i < exact.Points.size(); i += 3)
+  {
+    CHECK(exact.Points[i] == 0.0);
+  }
+}
+
+void BordersAndLocksStay()
+{
+  // §7: a border point never moves into the interior: at every level each border edge joins
+  // two points of the square's outline and no triangle turns over; locked points stay.
+  const Mesh mesh = Grid(12);
+  std::vector<std::uint8_t> locks(mesh.Points.size() / 3, 0);
+  locks[7 * 13 + 6] = 1;
+  meshsimp::ProgressiveMeshOptions options;
+  options.LockedPoints = locks.data();
+  const meshsimp::ProgressiveMesh sequence = Build(mesh, options);
+  const auto onOutline = [](const double* p) { return p[0] == 0.0 || p[0] == 1.0 || p[1] == 0.0 || p[1] == 1.0; };
+  for (std::int64_t k = sequence.BasePoints; k <= sequence.NumberOfPoints(); k += 17)
+  {
+    const meshsimp::SimplifiedMesh level = Level(sequence, mesh, k);
+    const std::vector<std::int32_t> survivors = Survivors(level);
+    CHECK(std::count(survivors.begin(), survivors.end(), 7 * 13 + 6) == 1);
+    std::map<std::pair<std::int32_t, std::int32_t>, int> edges;
+    for (std::size_t t = 0; t < level.Triangles.size(); t += 3)
+    {
+      const auto p = [&](int c) { return Eigen::Vector3d(&level.Points[3 * level.Triangles[t + c]]); };
+      CHECK((p(1) - p(0)).cross(p(2) - p(0)).z() > 0.0);
+      for (int c = 0; c < 3; ++c)
+      {
+        const std::int32_t a = level.Triangles[t + c], b = level.Triangles[t + (c + 1) % 3];
+        ++edges[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+    for (const auto& edge : edges)
+    {
+      CHECK(edge.second == 2 ||
+        (onOutline(&level.Points[3 * edge.first.first]) && onOutline(&level.Points[3 * edge.first.second])));
+    }
+  }
+}
+
+void RegionsNeverMerge()
+{
+  // Points of different regions never collapse into each other: each level's points keep
+  // their input region, and a two-colour grid keeps a point of each colour on every row.
+  const Mesh mesh = Grid(10);
+  std::vector<std::int32_t> regions(mesh.Points.size() / 3);
+  for (std::size_t p = 0; p < regions.size(); ++p)
+  {
+    regions[p] = mesh.Points[3 * p] < 0.45 ? 0 : 1;
+  }
+  meshsimp::ProgressiveMeshOptions options;
+  options.Regions = regions.data();
+  const meshsimp::ProgressiveMesh sequence = Build(mesh, options);
+  for (std::int64_t p = sequence.BasePoints; p < sequence.NumberOfPoints(); ++p)
+  {
+    CHECK(regions[sequence.InputPoint[p]] == regions[sequence.InputPoint[sequence.Parent[p]]]);
+  }
+}
+
+void ColoursAreExtraCoordinates()
+{
+  // §7: colours as extra coordinates of the length make collapses across a colour change
+  // dearer: with a heavy weight the first collapse joining two colours comes later.
+  const Mesh mesh = Grid(16);
+  std::vector<double> colour(mesh.Points.size() / 3);
+  for (std::size_t p = 0; p < colour.size(); ++p)
+  {
+    colour[p] = mesh.Points[3 * p] < 0.5 ? 0.0 : 1.0;
+  }
+  const auto collapsesBeforeMixing = [&](double weight) {
+    meshsimp::ProgressiveMeshOptions options;
+    options.ExtraCoordinates = colour.data();
+    options.ExtraDimension = 1;
+    options.AttributeWeight = weight;
+    const meshsimp::ProgressiveMesh sequence = Build(mesh, options);
+    std::int64_t p = sequence.NumberOfPoints() - 1; // the first collapse's point
+    while (p >= sequence.BasePoints &&
+      colour[sequence.InputPoint[p]] == colour[sequence.InputPoint[sequence.Parent[p]]])
+    {
+      --p;
+    }
+    return sequence.NumberOfPoints() - 1 - p;
+  };
+  CHECK(collapsesBeforeMixing(100.0) > collapsesBeforeMixing(0.0));
+}
+
+void SurvivesDamagedMeshes()
+{
+  // Damaged meshes (TestMeshes.h) with random locks: a valid sequence, valid levels, locked
+  // points kept bit for bit, a closed undamaged mesh closed at every level, the same sequence
+  // on any thread count.
+  std::mt19937 random(7);
+  for (int run = 0; run < 150; ++run)
+  {
+    bool closed = false;
+    const Mesh mesh = DamagedMesh(random, closed);
+    const std::vector<std::uint8_t> locks = RandomLocks(random, mesh, meshsimp::SharedPointLock);
+    meshsimp::ProgressiveMeshOptions options;
+    options.LockedPoints = locks.empty() ? nullptr : locks.data();
+    options.PreserveBoundary = random() % 2 == 0;
+    options.QuadricWeight = random() % 2 == 0 ? 0.0 : 10.0;
+    meshsimp::ProgressiveMesh sequence, threaded;
+    CHECK(meshsimp::BuildProgressiveMesh(mesh.View(), options, sequence));
+    CHECK(meshsimp::BuildProgressiveMesh(mesh.View(), options, threaded, meshsimp_test::Threaded<meshsimp::ExecutionContext>(2)));
+    CHECK(sequence.Validate(mesh.View().NumberOfPoints).empty());
+    CHECK(sequence.Parent == threaded.Parent && sequence.Triangles == threaded.Triangles);
+    for (const double reduction : { 0.0, 0.5, 0.9, 1.0 })
+    {
+      meshsimp::Target goal;
+      goal.SetReduction(reduction);
+      meshsimp::SimplifiedMesh level;
+      meshsimp::ExtractTarget(sequence, goal, mesh.View(), level);
+      CHECK(ValidOutput(level.Points, level.Triangles));
+      CHECK(LockedPointsStay(locks, Survivors(level), level.Points, mesh, closed));
+      CHECK(!closed || ClosedOriented(level.Triangles));
+    }
+  }
+}
+} // namespace
+
+int main()
+{
+  return meshsimp_test::RunTests({
+    { "FullLevelIsTheInput", FullLevelIsTheInput },
+    { "LevelsEqualAReplay", LevelsEqualAReplay },
+    { "TargetsPickLevels", TargetsPickLevels },
+    { "BordersAndLocksStay", BordersAndLocksStay },
+    { "RegionsNeverMerge", RegionsNeverMerge },
+    { "ColoursAreExtraCoordinates", ColoursAreExtraCoordinates },
+    { "SurvivesDamagedMeshes", SurvivesDamagedMeshes },
+  });
+}

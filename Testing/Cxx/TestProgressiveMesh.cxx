@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkProgressiveMesh on the cow: levels from one build (a target change re-extracts, a build
+// property or a modified input rebuilds), each level equal to a fresh build's, points that are
+// input points with their own data, the CollapseLevel array, the sequence port written as .vtp
+// and read back without a build, thread independence, input untouched.
+#include "vtkProgressiveMesh.h"
+
+#include "vtkFieldData.h"
+#include "vtkPoints.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include "TestVTKHelpers.h"
+
+#include <array>
+#include <map>
+
+namespace
+{
+/// The points and triangles of two meshes are the same, in the same order.
+bool SameMesh(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfPolys() != b->GetNumberOfPolys())
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    if (p[0] != q[0] || p[1] != q[1] || p[2] != q[2])
+    {
+      return false;
+    }
+  }
+  vtkNew<vtkIdList> x, y;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellPoints(c, x);
+    b->GetCellPoints(c, y);
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      if (x->GetNumberOfIds() != 3 || y->GetNumberOfIds() != 3 || x->GetId(k) != y->GetId(k))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkPolyData> FreshLevel(vtkPolyData* input, double reduction)
+{
+  vtkNew<vtkProgressiveMesh> filter;
+  filter->SetInputData(input);
+  filter->SetTargetReduction(reduction);
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 1);
+  auto level = vtkSmartPointer<vtkPolyData>::New();
+  level->DeepCopy(filter->GetOutput());
+  return level;
+}
+
+void TestLevelsFromOneBuild(vtkPolyData* cow)
+{
+  vtkNew<vtkProgressiveMesh> filter;
+  filter->SetInputData(cow);
+  const double triangles = cow->GetNumberOfPolys();
+  for (const double reduction : { 0.9, 0.5, 0.98, 0.7, 0.0 })
+  {
+    filter->SetTargetReduction(reduction);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    CHECK(filter->GetNumberOfBuilds() == 1);
+    CHECK(std::abs(out->GetNumberOfPolys() - std::round(triangles * (1 - reduction))) <= 1);
+    CHECK(meshsimp_test::OpenEdges(out) == 0);
+    CHECK(SameMesh(out, FreshLevel(cow, reduction)));
+    meshsimp_test::CheckCarriedData(cow, out);
+    vtkDataArray* level = out->GetPointData()->GetArray("CollapseLevel");
+    CHECK(level && level->GetRange()[0] > 0.0 && level->GetRange()[1] == 1.0);
+    vtkDataArray* count = out->GetFieldData()->GetArray("LevelTriangles");
+    CHECK(count && count->GetTuple1(0) == out->GetNumberOfPolys());
+  }
+  // A build property, or a change of the input's points, builds again.
+  filter->SetCurvatureWeight(1.0);
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 2);
+  filter->SetTargetTriangleCount(300);
+  filter->SetTargetModeToTriangleCount();
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 2 && filter->GetOutput()->GetNumberOfPolys() == 300);
+  cow->GetPoints()->Modified();
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 3);
+}
+
+void TestPointsAreInputPoints(vtkPolyData* cow)
+{
+  std::map<std::array<double, 3>, vtkIdType> ids;
+  for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    cow->GetPoint(i, p.data());
+    ids.emplace(p, i);
+  }
+  vtkSmartPointer<vtkPolyData> out = FreshLevel(cow, 0.9);
+  vtkDataArray* height = out->GetPointData()->GetArray("Height");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    out->GetPoint(i, p.data());
+    const auto found = ids.find(p);
+    CHECK(found != ids.end() && height->GetTuple1(i) == cow->GetPointData()->GetArray("Height")->GetTuple1(found->second));
+  }
+}
+
+void TestSequenceFile(vtkPolyData* cow)
+{
+  // Output port 1 saved as .vtp and read back gives every level without a build.
+  vtkNew<vtkProgressiveMesh> filter;
+  filter->SetInputData(cow);
+  filter->Update();
+  vtkPolyData* sequence = filter->GetSequenceOutput();
+  CHECK(sequence->GetNumberOfPoints() == cow->GetNumberOfPoints());
+  CHECK(sequence->GetNumberOfPolys() == cow->GetNumberOfPolys());
+  CHECK(sequence->GetPointData()->GetArray("Parent") && sequence->GetCellData()->GetArray("RemovedAt"));
+  const std::string path = MESHSIMPLIFICATION_TEST_OUTPUT "/progressive_cow.vtp";
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(sequence);
+  writer->SetFileName(path.c_str());
+  CHECK(writer->Write() == 1);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkProgressiveMesh> fromFile;
+  fromFile->SetInputConnection(reader->GetOutputPort());
+  for (const double reduction : { 0.6, 0.95 })
+  {
+    fromFile->SetTargetReduction(reduction);
+    fromFile->Update();
+    filter->SetTargetReduction(reduction);
+    filter->Update();
+    vtkPolyData* level = fromFile->GetOutput();
+    CHECK(fromFile->GetNumberOfBuilds() == 0);
+    CHECK(level->GetNumberOfPolys() == filter->GetOutput()->GetNumberOfPolys());
+    CHECK(meshsimp_test::PointSet(level) == meshsimp_test::PointSet(filter->GetOutput()));
+    CHECK(!level->GetPointData()->GetArray("Parent") && !level->GetCellData()->GetArray("RemovedAt"));
+    CHECK(level->GetPointData()->GetArray("Height"));
+  }
+}
+}
+
+int TestProgressiveMesh(int, char*[])
+{
+  vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
+  TestLevelsFromOneBuild(cow);
+  TestPointsAreInputPoints(cow);
+  TestSequenceFile(cow);
+  meshsimp_test::CheckPointLabels<vtkProgressiveMesh>(cow);
+  meshsimp_test::CheckThreadIndependence(cow, [&](int threads) {
+    vtkNew<vtkProgressiveMesh> filter;
+    filter->SetInputData(cow);
+    filter->SetNumberOfThreads(threads);
+    filter->Update();
+    return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
+  });
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
