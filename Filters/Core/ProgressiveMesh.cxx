@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 
 namespace meshsimp
@@ -122,6 +123,7 @@ private:
   bool StillCheapest(std::int32_t x, double cost);
   void Collapse(std::int32_t x, std::int32_t y);
   void UpdateNormal(std::int32_t t);
+  void ReleaseBuildState();
   void WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence) const;
 
   const ProgressiveMeshOptions& Options;
@@ -136,13 +138,13 @@ private:
   std::vector<std::int32_t> Triangles; // live triangles at the vertex
   std::vector<Quadric> Quadrics;
   std::vector<double> Weights; // the area behind each quadric
-  std::vector<std::uint32_t> Stamp, MarkStamp;
+  std::vector<std::uint32_t> Stamp; // the last gather or mark that met the vertex (one counter)
   std::vector<std::int32_t> Slot;
   std::vector<double> Extra; // the extra coordinates, scaled, ExtraDimension per vertex
   // Per corner and triangle.
   std::vector<std::int32_t> Corners;    // 3 per triangle, the current vertices
   std::vector<std::int32_t> NextCorner; // the next corner of the same vertex
-  std::vector<Eigen::Vector3d> Normals; // unit, zero when degenerate
+  std::vector<Eigen::Vector3f> Normals; // unit, zero when degenerate (floats: for the checks and the curvature)
   std::vector<std::int32_t> RemovedStep;
   // The sequence.
   std::vector<std::int32_t> Removed, Into;
@@ -153,7 +155,7 @@ private:
   std::vector<RingEntry> Ring, Affected;
   std::vector<std::pair<double, std::int32_t>> Candidates;
   std::int32_t BorderNeighbours[2] = { -1, -1 };
-  std::uint32_t CurrentStamp = 0, CurrentMark = 0;
+  std::uint32_t CurrentStamp = 0;
 };
 
 template <class Visit>
@@ -198,6 +200,7 @@ bool ProgressiveBuilder::Run(const TriangleMeshView& input, ProgressiveMesh& seq
       return false;
     }
   }
+  this->ReleaseBuildState();
   this->WriteSequence(prepared, sequence);
   return this->Context.Report(1.0);
 }
@@ -246,7 +249,6 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
     }
   }
   this->Stamp.assign(n, 0);
-  this->MarkStamp.assign(n, 0);
   this->Slot.assign(n, 0);
   this->BuildQuadrics();
   this->MeasureScales();
@@ -258,7 +260,7 @@ void ProgressiveBuilder::UpdateNormal(std::int32_t t)
   const Eigen::Vector3d& a = this->P[this->Corners[3 * t]];
   const Eigen::Vector3d normal = (this->P[this->Corners[3 * t + 1]] - a).cross(this->P[this->Corners[3 * t + 2]] - a);
   const double length = normal.norm();
-  this->Normals[t] = length > 0.0 ? Eigen::Vector3d(normal / length) : Eigen::Vector3d::Zero();
+  this->Normals[t] = length > 0.0 ? Eigen::Vector3f((normal / length).cast<float>()) : Eigen::Vector3f::Zero();
 }
 
 void ProgressiveBuilder::BuildQuadrics()
@@ -271,8 +273,9 @@ void ProgressiveBuilder::BuildQuadrics()
   for (std::size_t t = 0; t < this->Normals.size(); ++t)
   {
     const std::int32_t* c = &this->Corners[3 * t];
-    const Eigen::Vector3d& n = this->Normals[t];
-    const double area = 0.5 * (this->P[c[1]] - this->P[c[0]]).cross(this->P[c[2]] - this->P[c[0]]).norm();
+    const Eigen::Vector3d normal = (this->P[c[1]] - this->P[c[0]]).cross(this->P[c[2]] - this->P[c[0]]);
+    const double area = 0.5 * normal.norm();
+    const Eigen::Vector3d n = area > 0.0 ? Eigen::Vector3d(normal / (2.0 * area)) : Eigen::Vector3d::Zero();
     const Quadric plane = Quadric::FromPlane(n, -n.dot(this->P[c[0]]), area);
     for (int k = 0; k < 3; ++k)
     {
@@ -291,7 +294,7 @@ void ProgressiveBuilder::BuildQuadrics()
         continue; // not a border edge, or seen from its other end
       }
       const Eigen::Vector3d edge = this->P[w] - this->P[v];
-      const Eigen::Vector3d side = edge.cross(this->Normals[entry.Triangles[0]]);
+      const Eigen::Vector3d side = edge.cross(this->Normals[entry.Triangles[0]].cast<double>());
       const double length = side.norm();
       if (!(length > 0.0))
       {
@@ -385,7 +388,7 @@ double ProgressiveBuilder::Cost(std::int32_t x, const RingEntry& entry) const
   double curvature = 0.0;
   if (entry.Count == 2)
   {
-    curvature = 1.0 - this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]);
+    curvature = 1.0 - static_cast<double>(this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]));
   }
   else
   {
@@ -451,17 +454,17 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
     const std::int32_t* c = &this->Corners[3 * entry.Triangles[i]];
     opposite[i] = c[0] != x && c[0] != y ? c[0] : (c[1] != x && c[1] != y ? c[1] : c[2]);
   }
-  ++this->CurrentMark;
+  const std::uint32_t mark = ++this->CurrentStamp; // the ring keeps its Slot entries
   this->ForEachTriangle(y, [&](std::int32_t t, int) {
     for (int k = 0; k < 3; ++k)
     {
-      this->MarkStamp[this->Corners[3 * t + k]] = this->CurrentMark;
+      this->Stamp[this->Corners[3 * t + k]] = mark;
     }
   });
   for (const RingEntry& other : this->Ring)
   {
     const std::int32_t w = other.Vertex;
-    if (w != y && w != opposite[0] && w != opposite[1] && this->MarkStamp[w] == this->CurrentMark)
+    if (w != y && w != opposite[0] && w != opposite[1] && this->Stamp[w] == mark)
     {
       return Refusal::Link;
     }
@@ -482,7 +485,7 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
     }
     const Eigen::Vector3d moved = (this->P[a] - this->P[y]).cross(this->P[b] - this->P[y]);
     const double scale = (this->P[a] - this->P[y]).norm() * (this->P[b] - this->P[y]).norm();
-    flips = !(moved.norm() > 1e-12 * scale) || moved.dot(this->Normals[t]) < 0.0;
+    flips = !(moved.norm() > 1e-12 * scale) || moved.dot(this->Normals[t].cast<double>()) < 0.0;
   });
   return flips ? Refusal::Flip : Refusal::None;
 }
@@ -599,10 +602,30 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   }
 }
 
+void ProgressiveBuilder::ReleaseBuildState()
+{
+  // What only the build needed goes before the sequence is written, which lowers the peak.
+  const auto release = [](auto& values) { std::decay_t<decltype(values)>().swap(values); };
+  release(this->Quadrics);
+  release(this->Weights);
+  release(this->Normals);
+  release(this->NextCorner);
+  release(this->Corners);
+  release(this->Stamp);
+  release(this->Slot);
+  release(this->Head);
+  release(this->Triangles);
+  release(this->Extra);
+  release(this->P);
+  release(this->Kinds);
+  release(this->Regions);
+  this->Heap = CollapseHeap();
+}
+
 void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence) const
 {
   // Points: those never removed in vertex order, then the removed ones, last removed first.
-  const std::int32_t n = static_cast<std::int32_t>(this->P.size());
+  const std::int32_t n = static_cast<std::int32_t>(prepared.Mesh.InputVertex.size());
   const std::int32_t collapses = static_cast<std::int32_t>(this->Removed.size());
   std::vector<std::int32_t> index(n, -1);
   for (std::int32_t s = 0; s < collapses; ++s)

@@ -4,14 +4,17 @@ whether each target holds (also in the worst class and the worst case).
 
   /usr/bin/python3 Testing/Benchmark/corpus_table.py --kit ../shared/bench \\
       --corpus ../shared/data/corpus --cli build/bin/meshsimplify --workdir /tmp/corpus \\
-      [--filters octree,volume,parallel] [--repeat 3] [--meshes REGEX] [--no-run] [--out table.md]
+      [--filters octree,volume,parallel,progressive] [--repeat 3] [--meshes REGEX] [--no-run] [--out table.md]
 
 Each filter runs through the kit's run_corpus.py (compare.py and metro on every corpus mesh)
 against the peer and at the reductions of its targets:
   octree   vs vtk_qclustering at 90 % and 98 %: Hausdorff, RMS, time, count within 3 %;
   volume   vs vtk_quadric at 70 % and 95 %: mean distance, Hausdorff, |volume change| on
            closed inputs, time, slivers (< 10 degrees) against the peer's, closed stays closed;
-  parallel vs vtk_quadric at 90 %: RMS, Hausdorff, count within 2 %.
+  parallel vs vtk_quadric at 90 %: RMS, Hausdorff, count within 2 %;
+  progressive vs meshopt at 90 % and 98 % (each level from one build, against a meshoptimizer
+           run per level): RMS, Hausdorff, count within 1 % (the worst-class goals, 1.25x and
+           2x, are ours: the issue sets only the means).
 Times are the tools' own in-memory work, medians of --repeat runs in one process. --no-run
 summarises the results already in --workdir.
 """
@@ -33,6 +36,8 @@ FILTERS = {
                            ("volume", 0.6, 1.0, False), ("time", 0.37, 0.6, True)]},
     "parallel": {"peer": "vtk_quadric", "reductions": [0.9], "tolerance": 0.02,
                  "targets": [("rms", 1.5, 2.0, False), ("hausdorff", 2.0, 3.0, False)]},
+    "progressive": {"peer": "meshopt", "reductions": [0.9, 0.98], "tolerance": 0.01,
+                    "targets": [("rms", 1.0, 1.25, False), ("hausdorff", 1.5, 2.0, False)]},
 }
 FLOORS = {"rms": 1e-3, "hausdorff": 1e-3, "mean": 1e-3, "volume": 1e-2, "time": 0.01}
 
@@ -149,7 +154,7 @@ def main():
     ap.add_argument("--corpus", required=True, help="the corpus folder (manifest.json)")
     ap.add_argument("--cli", required=True, help="our meshsimplify")
     ap.add_argument("--workdir", required=True)
-    ap.add_argument("--filters", default="octree,volume,parallel")
+    ap.add_argument("--filters", default="octree,volume,parallel,progressive")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--threads", type=int, default=0, help="--threads for our CLI (0: all cores)")
     ap.add_argument("--meshes", help="regex of corpus meshes to run")
