@@ -116,6 +116,7 @@ private:
   void ForEachTriangle(std::int32_t v, Visit&& visit);
   void GatherRing(std::int32_t x);
   bool Allowed(std::int32_t x, const RingEntry& entry) const;
+  double Curvature(std::int32_t x, const RingEntry& entry) const;
   double Cost(std::int32_t x, const RingEntry& entry) const;
   void Measure(std::int32_t x);
   Refusal Check(std::int32_t x, const RingEntry& entry);
@@ -373,6 +374,24 @@ bool ProgressiveBuilder::Allowed(std::int32_t x, const RingEntry& entry) const
     (this->Kinds[x] != Border || entry.Count == 1);
 }
 
+double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) const
+{
+  // §4: 1 - N_ABC . N_ABD of the edge's two triangles; on an open border, 1 - d1 . d2 of the
+  // border's directions into and out of x (the ring of x is gathered).
+  if (entry.Count == 2)
+  {
+    return 1.0 - static_cast<double>(this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]));
+  }
+  const std::int32_t y = entry.Vertex;
+  const std::int32_t other = this->BorderNeighbours[0] == y ? this->BorderNeighbours[1] : this->BorderNeighbours[0];
+  if (other < 0)
+  {
+    return 0.0;
+  }
+  const Eigen::Vector3d in = (this->P[x] - this->P[other]).normalized(), out = (this->P[y] - this->P[x]).normalized();
+  return 1.0 - in.dot(out);
+}
+
 double ProgressiveBuilder::Cost(std::int32_t x, const RingEntry& entry) const
 {
   // Wu and Fei §4: the L1 length and the curvature 1 - N_ABC . N_ABD, weighted; the L1
@@ -385,21 +404,11 @@ double ProgressiveBuilder::Cost(std::int32_t x, const RingEntry& entry) const
   {
     attributes += std::abs(this->Extra[x * this->ExtraDimension + k] - this->Extra[y * this->ExtraDimension + k]);
   }
-  double curvature = 0.0;
-  if (entry.Count == 2)
+  double cost = this->LengthScale * length + attributes;
+  if (this->Options.CurvatureWeight > 0.0)
   {
-    curvature = 1.0 - static_cast<double>(this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]));
+    cost += this->Options.CurvatureWeight * this->Curvature(x, entry);
   }
-  else
-  {
-    const std::int32_t other = this->BorderNeighbours[0] == y ? this->BorderNeighbours[1] : this->BorderNeighbours[0];
-    if (other >= 0)
-    {
-      const Eigen::Vector3d in = (this->P[x] - this->P[other]).normalized(), out = (this->P[y] - this->P[x]).normalized();
-      curvature = 1.0 - in.dot(out);
-    }
-  }
-  double cost = this->LengthScale * length + this->Options.CurvatureWeight * curvature + attributes;
   if (this->QuadricScale > 0.0)
   {
     cost += this->QuadricScale * this->Quadrics[x].Evaluate(this->P[y]);
