@@ -103,3 +103,14 @@ terrain_parallel = ParallelDecimation(Input=terrain, TargetReduction=0.95)
 SaveData(os.path.join(args.output, "terrain_parallel_95.vtp"), proxy=terrain_parallel)
 side_by_side(terrain, terrain_parallel, "elevation", "terrain-parallel",
              os.path.join(args.output, "terrain_parallel_95.png"), terrain_camera)
+
+# Progressive Mesh: the sequence built once, three levels of the cow from it (coloured by the
+# fraction of the sequence at which each point goes), and the whole sequence saved for later.
+cow_levels = ProgressiveMesh(Input=cow)
+for reduction in (0.5, 0.9, 0.98):
+    cow_levels.TargetReduction = reduction
+    name = "cow_progressive_%d" % round(100 * reduction)
+    SaveData(os.path.join(args.output, name + ".vtp"), proxy=cow_levels)
+    side_by_side(cow, cow_levels, "CollapseLevel", "cow-progressive-%d" % round(100 * reduction),
+                 os.path.join(args.output, name + ".png"), cow_camera)
+SaveData(os.path.join(args.output, "cow_progressive_sequence.vtp"), proxy=OutputPort(cow_levels, 1))
