@@ -19,7 +19,9 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPointSet.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -48,28 +50,44 @@ const char* const ParentName = "Parent";
 const char* const RemovedAtName = "RemovedAt";
 const char* const ErrorName = "CollapseError";
 
-/// The modification times of what a build reads in every leaf of the input: points, cells and
-/// point arrays. Unlike the input's own time they survive shallow copies, such as the one
-/// ParaView's vtkPVPostFilter makes of every filter's input at each update.
+/// The modification times of what a build and its output read in every leaf of the input: points,
+/// cells, point and cell arrays. Unlike the input's own time they survive shallow copies, such
+/// as the one ParaView's vtkPVPostFilter makes of every filter's input at each update.
 std::string InputStamp(vtkDataObject* input)
 {
   std::ostringstream stamp;
   const auto add = [&stamp](vtkDataObject* leaf) {
-    auto* surface = vtkPolyData::SafeDownCast(leaf);
-    if (!surface)
+    auto* points = vtkPointSet::SafeDownCast(leaf);
+    if (!points)
     {
       stamp << (leaf ? leaf->GetMTime() : 0) << ';';
       return;
     }
-    stamp << (surface->GetPoints() ? surface->GetPoints()->GetMTime() : 0) << ',';
-    for (vtkCellArray* cells : { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+    stamp << (points->GetPoints() ? points->GetPoints()->GetMTime() : 0) << ',';
+    if (auto* surface = vtkPolyData::SafeDownCast(leaf))
     {
-      stamp << cells->GetMTime() << ',';
+      for (vtkCellArray* cells : { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+      {
+        stamp << cells->GetMTime() << ',';
+      }
     }
-    vtkPointData* pd = surface->GetPointData();
-    for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+    else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(leaf))
     {
-      stamp << (pd->GetAbstractArray(i) ? pd->GetAbstractArray(i)->GetMTime() : 0) << ',';
+      stamp << (grid->GetCells() ? grid->GetCells()->GetMTime() : 0) << ',' << (grid->GetCellTypesArray() ? grid->GetCellTypesArray()->GetMTime() : 0) << ',';
+    }
+    else
+    {
+      stamp << leaf->GetMTime() << ',';
+    }
+    for (vtkDataSetAttributes* arrays : { static_cast<vtkDataSetAttributes*>(points->GetPointData()),
+           static_cast<vtkDataSetAttributes*>(points->GetCellData()) })
+    {
+      for (int i = 0; i < arrays->GetNumberOfArrays(); ++i)
+      {
+        vtkAbstractArray* array = arrays->GetAbstractArray(i);
+        stamp << (array ? array->GetMTime() : 0) << ',';
+      }
+      stamp << '|';
     }
     stamp << ';';
   };
@@ -105,17 +123,26 @@ std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& m
   {
     return "its cells are not the sequence's triangles";
   }
+  if (!error || error->GetNumberOfTuples() != n || parent->GetNumberOfTuples() != n)
+  {
+    return "its point arrays Parent and CollapseError do not cover its points";
+  }
+  // An index as the file has it, or -2 (which no check accepts) for what is none.
+  const auto index = [](double value) {
+    return value >= -1.0 && value < static_cast<double>(VTK_INT_MAX) && value == std::floor(value)
+      ? static_cast<std::int32_t>(value) : -2;
+  };
   sequence = meshsimp::ProgressiveMesh();
   sequence.InputPoint.resize(n);
   std::iota(sequence.InputPoint.begin(), sequence.InputPoint.end(), 0);
   sequence.Parent.resize(n);
-  sequence.Error.assign(n, 0.0);
+  sequence.Error.resize(n);
   for (vtkIdType p = 0; p < n; ++p)
   {
-    sequence.Parent[p] = static_cast<std::int32_t>(parent->GetComponent(p, 0));
-    sequence.Error[p] = error ? error->GetComponent(p, 0) : 0.0;
+    sequence.Parent[p] = index(parent->GetComponent(p, 0));
+    sequence.Error[p] = error->GetComponent(p, 0);
   }
-  while (sequence.BasePoints < n && sequence.Parent[sequence.BasePoints] < 0)
+  while (sequence.BasePoints < n && sequence.Parent[sequence.BasePoints] == -1)
   {
     ++sequence.BasePoints;
   }
@@ -129,7 +156,7 @@ std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& m
   sequence.RemovedBy.resize(m);
   for (vtkIdType t = 0; t < m; ++t)
   {
-    sequence.RemovedBy[t] = static_cast<std::int32_t>(removedAt->GetComponent(t, 0));
+    sequence.RemovedBy[t] = index(removedAt->GetComponent(t, 0));
   }
   double bounds[6];
   input->GetBounds(bounds);

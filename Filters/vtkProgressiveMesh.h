@@ -36,7 +36,9 @@
  * it collapses into, -1 for the base points) and "CollapseError", and the triangles ordered by
  * their cell array "RemovedAt" (the point whose collapse removes them, -1: none). Saved as .vtp
  * it can be read back: given such a polydata as input, the filter extracts levels from it
- * without rebuilding.
+ * without rebuilding (arrays that do not form a sequence are rebuilt from, with a warning). It
+ * is empty when the target asks for no triangle (TargetReduction 1, TargetTriangleCount 0),
+ * which builds nothing.
  */
 #ifndef vtkProgressiveMesh_h
 #define vtkProgressiveMesh_h

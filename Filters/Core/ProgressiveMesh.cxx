@@ -119,6 +119,7 @@ private:
   double Curvature(std::int32_t x, const RingEntry& entry) const;
   double Cost(std::int32_t x, const RingEntry& entry) const;
   void Measure(std::int32_t x);
+  bool WouldRepeatTriangle(std::int32_t x, std::int32_t y, const std::int32_t opposite[2]);
   Refusal Check(std::int32_t x, const RingEntry& entry);
   bool CollapseTop();
   bool StillCheapest(std::int32_t x, double cost);
@@ -134,6 +135,7 @@ private:
   // Per vertex.
   std::vector<Eigen::Vector3d> P;
   std::vector<std::uint8_t> Kinds;
+  std::vector<std::uint8_t> Fans; // the kind of the fan alone: closed fans keep three triangles, locked or not
   std::vector<std::int32_t> Regions;
   std::vector<std::int32_t> Head;      // first corner of the vertex's list (-1: none)
   std::vector<std::int32_t> Triangles; // live triangles at the vertex
@@ -232,10 +234,12 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
     this->UpdateNormal(static_cast<std::int32_t>(t));
   }
   this->Kinds.resize(n);
+  this->Fans.resize(n);
   std::vector<Corner> fan;
   for (std::size_t v = 0; v < n; ++v)
   {
-    this->Kinds[v] = prepared.Locks[v] ? Fixed : ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), fan);
+    this->Fans[v] = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), fan);
+    this->Kinds[v] = prepared.Locks[v] ? Fixed : this->Fans[v];
   }
   mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
   this->ExtraDimension = this->Options.ExtraCoordinates ? std::max(0, this->Options.ExtraDimension) : 0;
@@ -441,6 +445,35 @@ void ProgressiveBuilder::Measure(std::int32_t x)
   }
 }
 
+bool ProgressiveBuilder::WouldRepeatTriangle(std::int32_t x, std::int32_t y, const std::int32_t opposite[2])
+{
+  // Moving x onto y repeats a triangle only where x has a triangle (x, a, b) and y one with a
+  // and b: a and b are then common neighbours, so (link condition) the edge's opposites. Closed
+  // fans are kept from it by their three triangles; this catches it around non-manifold points.
+  if (opposite[0] < 0 || opposite[1] < 0)
+  {
+    return false;
+  }
+  // x's side from its gathered ring: the triangles on its edge to opposite[0].
+  const RingEntry& toFirst = this->Ring[this->Slot[opposite[0]]];
+  bool atX = false;
+  for (std::int32_t i = 0; i < std::min(toFirst.Count, 2); ++i)
+  {
+    const std::int32_t* c = &this->Corners[3 * toFirst.Triangles[i]];
+    atX |= c[0] == opposite[1] || c[1] == opposite[1] || c[2] == opposite[1];
+  }
+  if (!atX)
+  {
+    return false;
+  }
+  bool atY = false;
+  this->ForEachTriangle(y, [&](std::int32_t t, int) {
+    const std::int32_t* c = &this->Corners[3 * t];
+    atY |= std::count(c, c + 3, opposite[0]) + std::count(c, c + 3, opposite[1]) == 2;
+  });
+  return atY;
+}
+
 Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
 {
   // The ordered checks; the ring of x is gathered. Returns the first that fails.
@@ -463,6 +496,14 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
     const std::int32_t* c = &this->Corners[3 * entry.Triangles[i]];
     opposite[i] = c[0] != x && c[0] != y ? c[0] : (c[1] != x && c[1] != y ? c[1] : c[2]);
   }
+  if (opposite[0] >= 0 && opposite[0] == opposite[1])
+  {
+    return Refusal::Link; // the edge's two triangles share all three points
+  }
+  if (this->WouldRepeatTriangle(x, y, opposite))
+  {
+    return Refusal::Link;
+  }
   const std::uint32_t mark = ++this->CurrentStamp; // the ring keeps its Slot entries
   this->ForEachTriangle(y, [&](std::int32_t t, int) {
     for (int k = 0; k < 3; ++k)
@@ -478,7 +519,7 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
       return Refusal::Link;
     }
   }
-  const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Kinds[v] == Interior ? 3 : 1); };
+  const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Fans[v] == Interior ? 3 : 1); };
   if (!keeps(y, this->Triangles[y] + this->Triangles[x] - 2 * entry.Count) ||
     (opposite[0] >= 0 && !keeps(opposite[0], this->Triangles[opposite[0]] - 1)) ||
     (opposite[1] >= 0 && !keeps(opposite[1], this->Triangles[opposite[1]] - 1)))
@@ -520,8 +561,13 @@ bool ProgressiveBuilder::CollapseTop()
       }
     }
     // The cheapest first; the others sorted only when it is illegal (seldom).
+    if (order.empty())
+    {
+      this->Heap.Remove(x);
+      continue;
+    }
     std::iter_swap(order.begin(), std::min_element(order.begin(), order.end()));
-    if (!order.empty() && !this->StillCheapest(x, order.front().first))
+    if (!this->StillCheapest(x, order.front().first))
     {
       continue;
     }
@@ -627,6 +673,7 @@ void ProgressiveBuilder::ReleaseBuildState()
   release(this->Extra);
   release(this->P);
   release(this->Kinds);
+  release(this->Fans);
   release(this->Regions);
   this->Heap = CollapseHeap();
 }
@@ -696,7 +743,7 @@ std::vector<double> ProgressiveMesh::CollapseLevel(std::int64_t points) const
   std::vector<double> level(std::min(points, n), 1.0);
   for (std::int64_t p = this->BasePoints; p < static_cast<std::int64_t>(level.size()); ++p)
   {
-    level[p] = static_cast<double>(n - p) / static_cast<double>(collapses);
+    level[p] = static_cast<double>(n - 1 - p) / static_cast<double>(collapses); // collapses before its own
   }
   return level;
 }
@@ -717,10 +764,15 @@ std::string ProgressiveMesh::Validate(std::int64_t inputPoints) const
     {
       return "point " + std::to_string(p) + " has no valid parent (each removed point's Parent is a smaller index)";
     }
+    if (!(this->Error[p] >= 0.0) || !std::isfinite(this->Error[p]) ||
+      (p > this->BasePoints && this->Error[p] > this->Error[p - 1]))
+    {
+      return "its CollapseError does not fall with the point index";
+    }
   }
   for (std::int64_t i = 0; i < m; ++i)
   {
-    if ((i > 0 && this->RemovedBy[i] < this->RemovedBy[i - 1]) || this->RemovedBy[i] >= n ||
+    if ((i > 0 && this->RemovedBy[i] < this->RemovedBy[i - 1]) || this->RemovedBy[i] < -1 || this->RemovedBy[i] >= n ||
       (this->RemovedBy[i] >= 0 && this->RemovedBy[i] < this->BasePoints))
     {
       return "its triangles are not ordered by RemovedAt";
@@ -775,7 +827,7 @@ std::int64_t LevelFor(const ProgressiveMesh& sequence, const Target& goal, Outco
   {
     k -= 1;
   }
-  if (sequence.TrianglesAt(k) > target + goal.Slack(target))
+  if (k == base && sequence.TrianglesAt(k) > target + goal.Slack(target))
   {
     outcome.Stop = StopReason::NothingRemovable;
     outcome.Reason = "no collapse that keeps the mesh valid is left (the coarsest level of the sequence)";

@@ -56,8 +56,9 @@ enum class Refusal : std::uint8_t
   Kind,          // the kind table: a fixed vertex, or a border vertex into the interior
   Region,        // the two ends are in different regions
   AcrossBorder,  // a border vertex along an edge that is not a border edge
-  Link,          // the link condition: the ends share a neighbour off the edge's triangles
-  LastTriangles, // a vertex would keep no triangle (a closed fan fewer than three)
+  Link,          // the link condition: the ends share a neighbour off the edge's triangles, or the
+                 // edge's two triangles share all three points
+  LastTriangles, // a point would keep no triangle (a closed fan, locked or not, fewer than three)
   Flip           // a remaining triangle would turn over or degenerate
 };
 
@@ -84,8 +85,8 @@ struct ProgressiveMesh
   std::int64_t NumberOfCollapses() const { return this->NumberOfPoints() - this->BasePoints; }
   /// The triangles of the level with the first points points.
   std::int64_t TrianglesAt(std::int64_t points) const;
-  /// For the first points points, the fraction of the sequence at which each disappears (1:
-  /// never).
+  /// For the first points points, the fraction of the sequence done before each disappears
+  /// (the first removed 0, the last (collapses - 1) / collapses, one never removed 1).
   std::vector<double> CollapseLevel(std::int64_t points) const;
   /// Empty when the arrays form a sequence as described above, else what is wrong.
   std::string Validate(std::int64_t inputPoints) const;

@@ -26,6 +26,17 @@ if (NOT EXISTS "${OUTPUT}")
   message(FATAL_ERROR "no output file ${OUTPUT}")
 endif ()
 
+# The progressive method: one build for several levels, each written to its own file.
+run_tool(--method progressive --levels 0.5,0.9 --json "${INPUT}" "${OUTPUT}.%l.ply")
+string(JSON builds GET "${out}" builds)
+string(JSON first GET "${out}" levels 0 output_triangles)
+string(JSON second GET "${out}" levels 1 output_triangles)
+string(JSON extract ERROR_VARIABLE json_error GET "${out}" levels 1 extract_ms)
+if (NOT builds EQUAL 1 OR NOT first EQUAL 2902 OR NOT second EQUAL 580 OR json_error OR
+    NOT EXISTS "${OUTPUT}.0.5.ply" OR NOT EXISTS "${OUTPUT}.0.9.ply")
+  message(FATAL_ERROR "--levels: ${out}")
+endif ()
+
 # The volume method: counts within 1 %, its own error figure.
 run_tool(--method volume --target-triangles 1000 --json "${INPUT}" "${OUTPUT}")
 string(JSON output_triangles GET "${out}" output_triangles)
@@ -83,7 +94,11 @@ foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--method;volume;--max-error;-0.1;${INPUT};${OUTPUT}"
                       "--method;volume;--set;MaximumCellSize=1;${INPUT};${OUTPUT}"
                       "--method;parallel;--max-error;nan;${INPUT};${OUTPUT}"
-                      "--method;parallel;--set;FeatureCurvature=1;${INPUT};${OUTPUT}")
+                      "--method;parallel;--set;FeatureCurvature=1;${INPUT};${OUTPUT}"
+                      "--method;volume;--levels;0.5;${INPUT};${OUTPUT}.%l.ply"
+                      "--method;progressive;--levels;0.5;${INPUT};${OUTPUT}"
+                      "--method;progressive;--levels;0.5,nan;${INPUT};${OUTPUT}.%l.ply"
+                      "--method;progressive;--levels;0.5;--reduction;0.3;${INPUT};${OUTPUT}.%l.ply")
   execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
     message(FATAL_ERROR "expected a clean failure for '${bad}', got ${code}: ${err}")
