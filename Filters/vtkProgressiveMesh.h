@@ -27,7 +27,7 @@
  * TargetReduction in ParaView updates the view at once (NumberOfBuilds counts the builds).
  * Output points are input points, with their point data unchanged; cell data follows the
  * surviving triangles. Point array "CollapseLevel": the fraction of the sequence at which each
- * point disappears (1: never); field data "LevelTriangles" and "LevelPoints". Under an error
+ * point disappears (0 the first removed, 1 never); field data "LevelTriangles" and "LevelPoints". Under an error
  * bound, the bound is on the quadric distance of the collapses (the RMS distance of a removed
  * point to the planes merged into it), the same measure as "MaximumError" in the field data.
  *

@@ -144,9 +144,10 @@ vtkSmartPointer<vtkCellArray> MakeTriangles(const std::vector<std::int32_t>& tri
   vtkNew<vtkIdTypeArray> connectivity;
   offsets->SetNumberOfValues(count + 1);
   connectivity->SetNumberOfValues(3 * count);
+  vtkIdType* offset = offsets->GetPointer(0);
   for (vtkIdType i = 0; i <= count; ++i)
   {
-    offsets->SetValue(i, 3 * i);
+    offset[i] = 3 * i;
   }
   std::copy(triangles.begin(), triangles.end(), connectivity->GetPointer(0));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
