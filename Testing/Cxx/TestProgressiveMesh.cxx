@@ -5,14 +5,18 @@
 // and read back without a build, thread independence, input untouched.
 #include "vtkProgressiveMesh.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkFieldData.h"
 #include "vtkPoints.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include "TestVTKHelpers.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -134,6 +138,50 @@ void TestPointsAreInputPoints(vtkPolyData* cow)
   }
 }
 
+/// Progress values seen, and whether to abort once one passes 0.3.
+struct ProgressLog
+{
+  vtkProgressiveMesh* Filter = nullptr;
+  std::vector<double> Values;
+  bool AbortMidway = false;
+  static void Receive(vtkObject*, unsigned long, void* self, void* value)
+  {
+    auto* log = static_cast<ProgressLog*>(self);
+    log->Values.push_back(*static_cast<double*>(value));
+    if (log->AbortMidway && log->Values.back() > 0.3)
+    {
+      log->Filter->SetAbortExecute(1);
+    }
+  }
+};
+
+void TestProgressAndAbort(vtkPolyData* cow)
+{
+  // Progress rises from 0 to 1 through the build; Abort during the build leaves the output
+  // empty, with a warning, and no sequence: the next update builds it.
+  vtkNew<vtkProgressiveMesh> filter;
+  filter->SetInputData(cow);
+  ProgressLog log;
+  log.Filter = filter;
+  log.AbortMidway = true;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&log);
+  onProgress->SetCallback(ProgressLog::Receive);
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  vtkNew<vtkTest::ErrorObserver> messages;
+  filter->AddObserver(vtkCommand::WarningEvent, messages);
+  filter->Update();
+  CHECK(filter->GetOutput()->GetNumberOfPolys() == 0 && filter->GetNumberOfBuilds() == 0);
+  CHECK(messages->GetWarning() && messages->GetWarningMessage().find("Aborted") != std::string::npos);
+  log.Values.clear();
+  log.AbortMidway = false;
+  filter->SetAbortExecute(0);
+  filter->Modified();
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 1 && filter->GetOutput()->GetNumberOfPolys() == 580);
+  CHECK(log.Values.size() >= 5 && std::is_sorted(log.Values.begin(), log.Values.end()) && log.Values.back() == 1.0);
+}
+
 void TestSequenceFile(vtkPolyData* cow)
 {
   // Output port 1 saved as .vtp and read back gives every level without a build.
@@ -175,6 +223,7 @@ int TestProgressiveMesh(int, char*[])
   TestLevelsFromOneBuild(cow);
   TestPointsAreInputPoints(cow);
   TestSequenceFile(cow);
+  TestProgressAndAbort(cow);
   meshsimp_test::CheckPointLabels<vtkProgressiveMesh>(cow);
   meshsimp_test::CheckThreadIndependence(cow, [&](int threads) {
     vtkNew<vtkProgressiveMesh> filter;
