@@ -660,21 +660,9 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
 void ProgressiveBuilder::ReleaseBuildState()
 {
   // What only the build needed goes before the sequence is written, which lowers the peak.
-  const auto release = [](auto& values) { std::decay_t<decltype(values)>().swap(values); };
-  release(this->Quadrics);
-  release(this->Weights);
-  release(this->Normals);
-  release(this->NextCorner);
-  release(this->Corners);
-  release(this->Stamp);
-  release(this->Slot);
-  release(this->Head);
-  release(this->Triangles);
-  release(this->Extra);
-  release(this->P);
-  release(this->Kinds);
-  release(this->Fans);
-  release(this->Regions);
+  const auto release = [](auto&... values) { (std::decay_t<decltype(values)>().swap(values), ...); };
+  release(this->Quadrics, this->Weights, this->Normals, this->NextCorner, this->Corners, this->Stamp, this->Slot,
+    this->Head, this->Triangles, this->Extra, this->P, this->Kinds, this->Fans, this->Regions);
   this->Heap = CollapseHeap();
 }
 
