@@ -694,27 +694,35 @@ void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, Progressive
     sequence.Parent[n - 1 - s] = index[this->Into[s]];
     sequence.Error[n - 1 - s] = this->StepError[s] / this->Coordinates.Scale;
   }
-  // Triangles: the input corners renumbered, ordered by the point that removes them.
+  // Triangles: the input corners renumbered, ordered by the point that removes them, by a
+  // counting sort (stable: triangle order within a key): key 0 for those never removed, then
+  // collapses - step, so the last collapse's triangles come first.
   const std::size_t m = this->RemovedStep.size();
-  std::vector<std::pair<std::int32_t, std::int32_t>> order(m);
+  const auto key = [&](std::size_t t) {
+    return this->RemovedStep[t] < 0 ? 0 : static_cast<std::size_t>(collapses - this->RemovedStep[t]);
+  };
+  std::vector<std::int32_t> start(static_cast<std::size_t>(collapses) + 2, 0), order(m);
   for (std::size_t t = 0; t < m; ++t)
   {
-    const std::int32_t step = this->RemovedStep[t];
-    order[t] = { step < 0 ? -1 : n - 1 - step, static_cast<std::int32_t>(t) };
+    ++start[key(t) + 1];
   }
-  std::sort(order.begin(), order.end());
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  for (std::size_t t = 0; t < m; ++t)
+  {
+    order[start[key(t)]++] = static_cast<std::int32_t>(t);
+  }
   sequence.Triangles.resize(3 * m);
   sequence.InputTriangle.resize(m);
   sequence.RemovedBy.resize(m);
   for (std::size_t i = 0; i < m; ++i)
   {
-    const std::int32_t t = order[i].second;
+    const std::int32_t t = order[i];
     for (int k = 0; k < 3; ++k)
     {
       sequence.Triangles[3 * i + k] = index[prepared.Mesh.Triangles[3 * t + k]];
     }
     sequence.InputTriangle[i] = prepared.Mesh.InputTriangle[t];
-    sequence.RemovedBy[i] = order[i].first;
+    sequence.RemovedBy[i] = this->RemovedStep[t] < 0 ? -1 : n - 1 - this->RemovedStep[t];
   }
 }
 
