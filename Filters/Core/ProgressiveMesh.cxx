@@ -169,7 +169,7 @@ void ProgressiveBuilder::ForEachTriangle(std::int32_t v, Visit&& visit)
   while (*link >= 0)
   {
     const std::int32_t corner = *link;
-    if (this->RemovedStep[corner / 3] >= 0)
+    if (this->Corners[corner - corner % 3] < 0) // removed: see Collapse
     {
       *link = this->NextCorner[corner];
       continue;
@@ -621,15 +621,16 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   {
     const std::int32_t next = this->NextCorner[corner], t = corner / 3;
     const std::int32_t* c = &this->Corners[3 * t];
-    if (this->RemovedStep[t] < 0 && (c[0] == y || c[1] == y || c[2] == y))
+    if (c[0] >= 0 && (c[0] == y || c[1] == y || c[2] == y))
     {
       this->RemovedStep[t] = step;
       for (int k = 0; k < 3; ++k)
       {
         --this->Triangles[c[k]];
       }
+      this->Corners[3 * t] = -1; // the mark walks test: on the triangle's own cache line
     }
-    else if (this->RemovedStep[t] < 0)
+    else if (c[0] >= 0)
     {
       this->Corners[corner] = y;
       this->NextCorner[corner] = this->Head[y];
