@@ -349,7 +349,7 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   }
   if (this->ComputeDeviation)
   {
-    vtkSimplification::AddDeviation(piece.Input->GetPoints(), piece.Triangles, piece.Output, context);
+    this->AddDeviation(piece.Input, piece.Triangles, piece.Output, context);
   }
   this->PieceDone(piece.Input, piece.Triangles);
   this->PieceInput = nullptr;
@@ -360,6 +360,12 @@ void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimpli
   const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
   vtkSimplification::SetOutput(input, triangles, mesh, this->OutputPointsPrecision, output);
+}
+
+void vtkMeshSimplificationFilter::AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
+  vtkPolyData* output, const meshsimp::ExecutionContext& context)
+{
+  vtkSimplification::AddDeviation(input->GetPoints(), triangles, output, context);
 }
 
 void vtkMeshSimplificationFilter::PieceDone(vtkPolyData*, const vtkSimplification::TriangleInput&) {}

@@ -212,6 +212,11 @@ protected:
   virtual void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
     const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
 
+  /// Adds the Deviation array with ComputeDeviation: each output point's distance to the input
+  /// surface (vtkSimplification::AddDeviation).
+  virtual void AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
+    vtkPolyData* output, const meshsimp::ExecutionContext& context);
+
   /**
    * Called after piece PieceIndex's output is written, with its input and the triangles the
    * core saw (for a subclass with more outputs). Does nothing by default.

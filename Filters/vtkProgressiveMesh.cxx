@@ -11,6 +11,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -341,6 +342,18 @@ void vtkProgressiveMesh::PieceDone(vtkPolyData*, const vtkSimplification::Triang
   {
     cache.SequenceOutput->ShallowCopy(cache.Wholes[0]);
   }
+}
+
+void vtkProgressiveMesh::AddDeviation(vtkPolyData*, const vtkSimplification::TriangleInput&, vtkPolyData* output,
+  const meshsimp::ExecutionContext&)
+{
+  vtkNew<vtkDoubleArray> deviation;
+  deviation->SetName("Deviation");
+  deviation->SetNumberOfValues(output->GetNumberOfPoints());
+  deviation->FillValue(0.0);
+  output->GetPointData()->AddArray(deviation);
+  vtkSimplification::AddFieldValue(output, "DeviationMaximum", 0.0);
+  vtkSimplification::AddFieldValue(output, "DeviationRMS", 0.0);
 }
 
 void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)

@@ -27,7 +27,9 @@
  * TargetReduction in ParaView updates the view at once (NumberOfBuilds counts the builds).
  * Output points are input points, with their point data unchanged; cell data follows the
  * surviving triangles. Point array "CollapseLevel": the fraction of the sequence at which each
- * point disappears (0 the first removed, 1 never); field data "LevelTriangles" and "LevelPoints". Under an error
+ * point disappears (0 the first removed, 1 never); field data "LevelTriangles" and "LevelPoints". With
+ * ComputeDeviation, "Deviation" is 0 at every point (each is an input point; no cell locator is
+ * built at each target change). Under an error
  * bound, the bound is on the quadric distance of the collapses (the RMS distance of a removed
  * point to the planes merged into it), the same measure as "MaximumError" in the field data.
  *
@@ -103,6 +105,10 @@ protected:
   void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
     const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output) override;
   void PieceDone(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles) override;
+  /// Output points are input points: their Deviation is 0 without a cell locator over the input,
+  /// which would cost more than the level at every target change.
+  void AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles, vtkPolyData* output,
+    const meshsimp::ExecutionContext& context) override;
 
   int NumberOfBuilds = 0;
 

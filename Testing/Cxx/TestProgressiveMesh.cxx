@@ -120,6 +120,16 @@ void TestLevelsFromOneBuild(vtkPolyData* cow)
 
 void TestPointsAreInputPoints(vtkPolyData* cow)
 {
+  // Deviation, the distance of each point to the input surface, is 0: they are input points.
+  {
+    vtkNew<vtkProgressiveMesh> filter;
+    filter->SetInputData(cow);
+    filter->ComputeDeviationOn();
+    filter->Update();
+    vtkDataArray* deviation = filter->GetOutput()->GetPointData()->GetArray("Deviation");
+    CHECK(deviation && deviation->GetNumberOfTuples() == filter->GetOutput()->GetNumberOfPoints() &&
+      deviation->GetRange()[0] == 0.0 && deviation->GetRange()[1] == 0.0);
+  }
   std::map<std::array<double, 3>, vtkIdType> ids;
   for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)
   {
