@@ -119,7 +119,7 @@ private:
   double Curvature(std::int32_t x, const RingEntry& entry) const;
   double Cost(std::int32_t x, const RingEntry& entry) const;
   void Measure(std::int32_t x);
-  bool WouldRepeatTriangle(std::int32_t x, std::int32_t y, const std::int32_t opposite[2]);
+  bool WouldRepeatTriangle(std::int32_t y, const std::int32_t opposite[2]);
   Refusal Check(std::int32_t x, const RingEntry& entry);
   bool CollapseTop();
   bool StillCheapest(std::int32_t x, double cost);
@@ -239,7 +239,7 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   for (std::size_t v = 0; v < n; ++v)
   {
     this->Fans[v] = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), fan);
-    this->Kinds[v] = prepared.Locks[v] ? Fixed : this->Fans[v];
+    this->Kinds[v] = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Fans[v];
   }
   mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
   this->ExtraDimension = this->Options.ExtraCoordinates ? std::max(0, this->Options.ExtraDimension) : 0;
@@ -445,10 +445,10 @@ void ProgressiveBuilder::Measure(std::int32_t x)
   }
 }
 
-bool ProgressiveBuilder::WouldRepeatTriangle(std::int32_t x, std::int32_t y, const std::int32_t opposite[2])
+bool ProgressiveBuilder::WouldRepeatTriangle(std::int32_t y, const std::int32_t opposite[2])
 {
-  // Moving x onto y repeats a triangle only where x has a triangle (x, a, b) and y one with a
-  // and b: a and b are then common neighbours, so (link condition) the edge's opposites. Closed
+  // Moving x (whose ring is gathered) onto y repeats a triangle only where x has a triangle
+  // (x, a, b) and y one with a and b: a and b are then common neighbours, so (link condition) the edge's opposites. Closed
   // fans are kept from it by their three triangles; this catches it around non-manifold points.
   if (opposite[0] < 0 || opposite[1] < 0)
   {
@@ -500,7 +500,7 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
   {
     return Refusal::Link; // the edge's two triangles share all three points
   }
-  if (this->WouldRepeatTriangle(x, y, opposite))
+  if (this->WouldRepeatTriangle(y, opposite))
   {
     return Refusal::Link;
   }
