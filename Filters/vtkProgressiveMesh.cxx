@@ -159,12 +159,9 @@ std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& m
   {
     sequence.RemovedBy[t] = index(removedAt->GetComponent(t, 0));
   }
-  double bounds[6];
-  input->GetBounds(bounds);
   sequence.Report.UsableTriangles = m;
   sequence.Report.UsablePoints = n;
-  sequence.Report.Diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  sequence.Report.Diagonal = input->GetLength();
   return sequence.Validate(n);
 }
 
@@ -173,10 +170,8 @@ std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& m
 meshsimp::SimplifiedMesh WholeSequence(const meshsimp::ProgressiveMesh& sequence, const meshsimp::TriangleMeshView& mesh)
 {
   meshsimp::SimplifiedMesh whole;
-  meshsimp::ExtractLevel(sequence, sequence.NumberOfPoints(), mesh, whole);
+  meshsimp::ExtractLevel(sequence, sequence.NumberOfPoints(), mesh, whole); // every point and triangle
   whole.FieldValues.clear();
-  whole.Triangles = sequence.Triangles;
-  whole.TriangleSource = sequence.InputTriangle;
   whole.AddPointArray(ParentName, std::vector<double>(sequence.Parent.begin(), sequence.Parent.end()),
     meshsimp::NamedArray::Kind::Integer);
   whole.AddPointArray(ErrorName, sequence.Error);

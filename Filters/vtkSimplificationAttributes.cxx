@@ -236,14 +236,15 @@ void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkP
 namespace
 {
 /// What every output gets after its points, triangles and input arrays: normals recomputed, the
-/// core's point arrays and field values, the input's field data, AchievedReduction.
+/// core's point arrays (unless the arrays already hold them) and field values, the input's
+/// field data, AchievedReduction.
 void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
-  vtkPolyData* output)
+  bool addPointArrays, vtkPolyData* output)
 {
   RecomputeNormals(mesh, output);
-  for (const meshsimp::NamedArray& named : mesh.PointArrays)
+  for (std::size_t i = 0; addPointArrays && i < mesh.PointArrays.size(); ++i)
   {
-    output->GetPointData()->AddArray(MakeNamedArray(named));
+    output->GetPointData()->AddArray(MakeNamedArray(mesh.PointArrays[i]));
   }
   output->GetFieldData()->PassData(input->GetFieldData());
   for (const auto& [name, value] : mesh.FieldValues)
@@ -307,7 +308,7 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
     outCD->CopyData(inCD, triangles.SourceCell(mesh.TriangleSource[i]), i);
   }
   MapPointData(input->GetPointData(), mesh, output->GetPointData());
-  FinishOutput(input, triangles, mesh, output);
+  FinishOutput(input, triangles, mesh, true, output);
 }
 
 void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole,
@@ -320,7 +321,8 @@ void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPoly
   output->SetPolys(MakeTriangles(mesh.Triangles));
   PrefixArrays(whole->GetCellData(), static_cast<vtkIdType>(mesh.NumberOfTriangles()), output->GetCellData());
   PrefixArrays(whole->GetPointData(), points, output->GetPointData());
-  FinishOutput(input, triangles, mesh, output);
+  // The whole's point arrays include the core's (its first points' values are the level's).
+  FinishOutput(input, triangles, mesh, false, output);
 }
 
 void AddFieldValue(vtkPolyData* output, const char* name, double value)

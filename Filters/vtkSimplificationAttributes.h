@@ -38,8 +38,9 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
 /**
  * The output of a level whose points and triangles are the first ones of a whole mesh made by
  * SetOutput (a progressive mesh's sequence, points and triangles in the order levels take them):
- * the points and the point and cell arrays are the first tuples of the whole's, copied in
- * blocks, so that a level costs its size and not the input's; the rest as SetOutput.
+ * the points and the point and cell arrays (the core's named arrays among them, as the whole
+ * has them) are the first tuples of the whole's, copied in blocks, so that a level costs its
+ * size and not the input's; the rest as SetOutput.
  */
 void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole,
   const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);

@@ -11,12 +11,7 @@
 namespace meshsimp
 {
 
-namespace
-{
-/// The class of v from its corners {triangle, next, previous}: one closed fan, one open fan, or
-/// anything else. A corner's successor is the corner whose previous vertex is its next one.
-/// byNext and byPrevious are working memory.
-VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanFirst,
+VertexClass ClassifyFan(const Corner* first, const Corner* last, std::int32_t& fanFirst,
   std::int32_t& fanLast, FanLookup& byNext, FanLookup& byPrevious)
 {
   const std::int32_t degree = static_cast<std::int32_t>(last - first);
@@ -81,6 +76,8 @@ VertexClass Classify(const Corner* first, const Corner* last, std::int32_t& fanF
   return opening >= 0 ? VertexClass::Boundary : VertexClass::Interior;
 }
 
+namespace
+{
 bool Contains(const std::int32_t* tri, std::int32_t v)
 {
   return tri[0] == v || tri[1] == v || tri[2] == v;
@@ -114,7 +111,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
         this->Refs[i] = adjacency.Corners[i].Triangle;
       }
       std::int32_t opening = -1, closing = -1;
-      VertexClass c = Classify(adjacency.Begin(v), adjacency.End(v), opening, closing, byNext, byPrevious);
+      VertexClass c = ClassifyFan(adjacency.Begin(v), adjacency.End(v), opening, closing, byNext, byPrevious);
       if (c == VertexClass::Boundary)
       {
         // The boundary runs into v along the closing corner's far edge and leaves along the

@@ -2,6 +2,7 @@
 #include "ProgressiveMesh.h"
 
 #include "CollapseHeap.h"
+#include "CollapseMesh.h"
 #include "Quadric.h"
 
 #include <algorithm>
@@ -41,61 +42,6 @@ struct RingEntry
   std::int32_t Triangles[2];
   std::int32_t Count;
 };
-
-/// The kind of a vertex from its corners (v, Next, Previous): one fan walked across its edges
-/// covers every corner, closed (Interior) or open at both ends (Border).
-Kind ClassifyFan(const Corner* begin, const Corner* end, std::vector<Corner>& fan)
-{
-  fan.assign(begin, end);
-  const auto byPrevious = [](const Corner& a, const Corner& b) { return a.Previous < b.Previous; };
-  std::sort(fan.begin(), fan.end(), byPrevious);
-  std::vector<std::int32_t> nexts;
-  nexts.reserve(fan.size());
-  for (const Corner& c : fan)
-  {
-    nexts.push_back(c.Next);
-  }
-  std::sort(nexts.begin(), nexts.end());
-  const auto repeated = [](auto first, auto last, auto same) { return std::adjacent_find(first, last, same) != last; };
-  if (repeated(nexts.begin(), nexts.end(), std::equal_to<>()) ||
-    repeated(fan.begin(), fan.end(), [](const Corner& a, const Corner& b) { return a.Previous == b.Previous; }))
-  {
-    return Fixed; // an edge in two triangles of one orientation: non-manifold or flipped
-  }
-  std::size_t start = fan.size(), starts = 0;
-  for (std::size_t i = 0; i < fan.size(); ++i)
-  {
-    if (!std::binary_search(nexts.begin(), nexts.end(), fan[i].Previous))
-    {
-      start = i;
-      ++starts;
-    }
-  }
-  if (starts > 1)
-  {
-    return Fixed; // several open fans
-  }
-  std::size_t current = starts == 1 ? start : 0, walked = 1;
-  for (;; ++walked)
-  {
-    const Corner key{ -1, -1, fan[current].Next };
-    const auto found = std::lower_bound(fan.begin(), fan.end(), key, byPrevious);
-    if (found == fan.end() || found->Previous != key.Previous)
-    {
-      break; // the open end
-    }
-    current = static_cast<std::size_t>(found - fan.begin());
-    if (current == (starts == 1 ? start : 0) || walked > fan.size())
-    {
-      break;
-    }
-  }
-  if (walked != fan.size())
-  {
-    return Fixed; // several closed fans around one point
-  }
-  return starts == 1 ? Border : Interior;
-}
 
 class ProgressiveBuilder
 {
@@ -235,10 +181,12 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   }
   this->Kinds.resize(n);
   this->Fans.resize(n);
-  std::vector<Corner> fan;
+  FanLookup byNext, byPrevious;
   for (std::size_t v = 0; v < n; ++v)
   {
-    this->Fans[v] = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), fan);
+    std::int32_t opening = -1, closing = -1;
+    const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, byNext, byPrevious);
+    this->Fans[v] = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
     this->Kinds[v] = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Fans[v];
   }
   mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
