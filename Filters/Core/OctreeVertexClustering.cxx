@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OctreeVertexClustering.h"
 
+#include "ProgressiveMesh.h"
 #include "Quadric.h"
 
 #include <algorithm>
@@ -318,6 +319,12 @@ private:
   double Bound() const { return this->Prepared.Bound; }
   /// Under a count target (the octree's own convention: a negative target is a bound).
   bool Counting() const { return !this->Options.Goal.Bounded(); }
+  /// Whether §2.4 rules (a) or (b) limit the cells: then no cluster joins another.
+  bool CellLimits() const
+  {
+    return (this->Options.MaximumCellSize > 0 && this->Options.MaximumCellSize < 1) ||
+      this->Options.MaximumVerticesPerCell > 0;
+  }
   void PrepareGeometry();
   void ClassifyVertices();
   void PrepareQuadrics();
@@ -435,10 +442,9 @@ private:
   {
     std::vector<std::int32_t> Cluster, Label, PieceNodes;
   };
-  /// Refines to the target, then joins flaps and splits what still tears into pieces while the
-  /// output has at most budget triangles (< 0: no limit; see the body); survivors are the
-  /// output triangles. Returns false when aborted.
-  bool Settle(std::int64_t target, std::int64_t budget, std::vector<Survivor>& survivors, Mending& mending);
+  /// Refines to the target, then joins flaps and splits what still tears into pieces (see the
+  /// body); survivors are the output triangles. Returns false when aborted.
+  bool Settle(std::int64_t target, std::vector<Survivor>& survivors, Mending& mending);
   /// One mending step: splits the torn labels into pieces, the exploded ones into single points,
   /// then makes each detached vertex a piece of its own.
   void MendOnce(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& torn,
@@ -451,6 +457,10 @@ private:
   /// Makes the pieces clusters of their own in their leaves, placed; returns the cluster each
   /// cluster's vertices go to (−1 for those without a triangle).
   std::vector<std::int32_t> CommitPieces(const Mending& mending, const std::vector<Survivor>& survivors);
+  /// With a count target that clustering without tears overshoots, joins whole output points
+  /// by half-edge collapses of the clustered mesh down to the target (see the body); owner and
+  /// survivors as CommitPieces and SurvivingTriangles give them.
+  void FinishByCollapses(std::int64_t target, std::vector<Survivor>& survivors, std::vector<std::int32_t>& owner) const;
   /// The leaves to split next, best first (see Refine); empty when refinement is done.
   std::vector<HeapEntry>& NextBatch(std::int64_t target, double bound, double wanted);
   /// How many leaves to split together now (see Refine).
@@ -1613,7 +1623,8 @@ std::vector<std::int32_t> Clusterer::JoinFlaps(const std::vector<Survivor>& surv
   // A cluster that keeps a single triangle (c, x, y) is a flap: its two edges have that
   // triangle alone, and the edge (x, y) one more than the surface has there (an island of a
   // coarse cell poking into another, a sliver between two clusters, the end of a thin part) -
-  // unless the input is no surface there, or both edges stand for open borders (a corner). With
+  // unless the input is no surface there, or both edges stand for open borders (a corner, not
+  // an island: a triangle that all three of its clusters keep alone is no corner). With
   // a count target it joins x or y, whichever point is nearer its own (not a locked point, nor
   // one of another region): its triangle goes, and (x, y) keeps the others. Only that triangle
   // changes, so x and y are looked at again (the lowest cluster first), unless they took a flap
@@ -1621,9 +1632,7 @@ std::vector<std::int32_t> Clusterer::JoinFlaps(const std::vector<Survivor>& surv
   // (a stranded cap, see JoinStrandedCaps). Under an error bound or cell limits nothing joins:
   // a joined point's error is not bounded, nor its extent.
   std::vector<std::int32_t> labels = this->VertexCluster;
-  const bool cellLimits = (this->Options.MaximumCellSize > 0 && this->Options.MaximumCellSize < 1) ||
-    this->Options.MaximumVerticesPerCell > 0;
-  if (!this->Counting() || cellLimits)
+  if (!this->Counting() || this->CellLimits())
   {
     return labels; // a joined flap would cross its cell's limits
   }
@@ -1679,7 +1688,8 @@ std::vector<std::int32_t> Clusterer::JoinFlaps(const std::vector<Survivor>& surv
     const std::array<std::int32_t, 3>& corners = survivors[*t].Corners;
     const int k = labels[corners[0]] == c ? 0 : labels[corners[1]] == c ? 1 : 2;
     const std::int32_t x = labels[corners[(k + 1) % 3]], y = labels[corners[(k + 2) % 3]];
-    if (!isFlap(c) || this->Locked[corners[k]] || (border(c, x) && border(c, y)))
+    const bool island = triangles[x] == 1 && triangles[y] == 1; // a piece of border cut off
+    if (!isFlap(c) || this->Locked[corners[k]] || (border(c, x) && border(c, y) && !island))
     {
       continue;
     }
@@ -1840,13 +1850,12 @@ std::size_t Clusterer::SplitIntoPieces(const std::vector<std::int32_t>& members,
   return sizes.size();
 }
 
-bool Clusterer::Settle(std::int64_t target, std::int64_t budget, std::vector<Survivor>& survivors, Mending& mending)
+bool Clusterer::Settle(std::int64_t target, std::vector<Survivor>& survivors, Mending& mending)
 {
   // Refined to the target, flaps join their neighbours (JoinFlaps), and what still tears is
-  // split into pieces (MendOnce), again while a split leaves a tear. With a count target,
-  // mending stops before the count passes the budget (back to the last state without a bare
-  // lock): the count then wins over the tears left, and the next round of RefineToTarget
-  // coarsens. A locked vertex without a triangle (BareLocks) is mended whatever the budget.
+  // split into pieces (MendOnce), again while a split leaves a tear; so is a locked vertex
+  // without a triangle (BareLocks). Mending only splits, so the count may pass the target: the
+  // caller refines further or finishes by collapses (see RefineToTarget).
   if (!this->Refine(target, this->Bound()))
   {
     return false;
@@ -1857,39 +1866,16 @@ bool Clusterer::Settle(std::int64_t target, std::int64_t budget, std::vector<Sur
   const std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
   std::vector<std::uint8_t> tried;
   std::vector<std::int32_t> torn, explode;
-  Mending before;
-  std::vector<Survivor> previous;
-  bool saved = false, locksOnly = false;
   for (;;)
   {
     survivors = this->SurvivingTriangles(mending.Label);
     const std::vector<std::int32_t> detach = this->BareLocks(survivors, mending.Label);
-    if (!locksOnly && budget >= 0 && static_cast<std::int64_t>(survivors.size()) > budget)
-    {
-      if (saved)
-      {
-        mending = std::move(before);
-        survivors = std::move(previous);
-        return true;
-      }
-      locksOnly = true;
-    }
     tried.resize(clusters + mending.PieceNodes.size(), 0);
-    torn.clear();
     explode.clear();
-    if (!locksOnly)
-    {
-      torn = this->TornLabels(survivors, mending.Label, tried, explode);
-    }
+    torn = this->TornLabels(survivors, mending.Label, tried, explode);
     if (torn.empty() && explode.empty() && detach.empty())
     {
       return true;
-    }
-    if (budget >= 0 && detach.empty())
-    {
-      before = mending;
-      previous = survivors;
-      saved = true;
     }
     this->MendOnce(survivors, torn, explode, detach, tried, mending);
   }
@@ -2101,6 +2087,70 @@ std::vector<std::int32_t> Clusterer::CommitPieces(const Mending& mending, const 
     this->ClusterPositions[c] = error <= this->ClusterError(before[c], set, size, this->Folded(set, size), nullptr) ? x : before[c];
   }
   return owner;
+}
+
+void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& survivors,
+  std::vector<std::int32_t>& owner) const
+{
+  // Clustering that mends every tear can overshoot a count target on steep or thin input: there
+  // a coarser tree tears more, and mending gives the triangles back. The clustered mesh (one
+  // point per surviving label at its cluster's position) is then taken down to the target by
+  // quadric half-edge collapses (ProgressiveMesh's core, whose link condition keeps the surface
+  // manifold), as multiphase simplification does after clustering (Garland and Shaffer): a
+  // collapse x -> y joins x's clusters to y's point, which Finalize places for the joined set.
+  // Locked labels are regions of their own, so nothing joins them.
+  std::vector<std::int32_t> pointOf(owner.size(), -1), labelOf;
+  std::vector<double> points;
+  std::vector<std::int32_t> triangles, regions;
+  std::vector<std::uint8_t> locked;
+  for (const Survivor& survivor : survivors)
+  {
+    for (const std::int32_t v : survivor.Corners)
+    {
+      const std::int32_t label = owner[this->VertexCluster[v]];
+      if (pointOf[label] < 0)
+      {
+        pointOf[label] = static_cast<std::int32_t>(labelOf.size());
+        labelOf.push_back(label);
+        points.insert(points.end(), this->ClusterPositions[label].data(), this->ClusterPositions[label].data() + 3);
+        locked.push_back(this->Locked[v]);
+        regions.push_back(this->Locked[v] ? -1 - label : this->Regions.empty() ? 0 : this->Regions[v]);
+      }
+      triangles.push_back(pointOf[label]);
+    }
+  }
+  const TriangleMeshView clustered{ points.data(), static_cast<std::int64_t>(labelOf.size()), triangles.data(),
+    static_cast<std::int64_t>(survivors.size()) };
+  ProgressiveMeshOptions options;
+  options.LockedPoints = locked.data();
+  options.Regions = regions.data();
+  options.StopTriangles = target;
+  ProgressiveMesh sequence;
+  BuildProgressiveMesh(clustered, options, sequence);
+  Outcome outcome;
+  Target goal;
+  goal.SetTriangleCount(target);
+  const std::int64_t level = LevelFor(sequence, goal, outcome);
+  // Each removed point's first ancestor in the level (parents have smaller indices).
+  std::vector<std::int32_t> ancestor(sequence.NumberOfPoints());
+  for (std::int64_t i = 0; i < sequence.NumberOfPoints(); ++i)
+  {
+    ancestor[i] = i < level ? static_cast<std::int32_t>(i) : ancestor[sequence.Parent[i]];
+  }
+  std::vector<std::int32_t> joinedTo(labelOf.size());
+  for (std::int64_t i = 0; i < sequence.NumberOfPoints(); ++i)
+  {
+    joinedTo[sequence.InputPoint[i]] = labelOf[sequence.InputPoint[ancestor[i]]];
+  }
+  for (std::int32_t& label : owner)
+  {
+    label = label >= 0 && pointOf[label] >= 0 ? joinedTo[pointOf[label]] : label;
+  }
+  std::vector<std::int32_t> kept(sequence.InputTriangle.begin(), sequence.InputTriangle.begin() + sequence.TrianglesAt(level));
+  std::sort(kept.begin(), kept.end());
+  std::vector<Survivor> remaining(kept.size());
+  std::transform(kept.begin(), kept.end(), remaining.begin(), [&survivors](std::int32_t t) { return survivors[t]; });
+  survivors = std::move(remaining);
 }
 
 std::vector<std::int32_t> Clusterer::JoinStrandedCaps(std::vector<std::int32_t> owner) const
@@ -2526,64 +2576,26 @@ void Clusterer::PlantTree(std::int64_t target)
 bool Clusterer::RefineToTarget(std::int64_t target, std::vector<Survivor>& survivors, Mending& mending)
 {
   // A count target is approached on the estimate (triangles with three distinct clusters).
-  // Duplicates removed at the end, flaps that join and leaves split so that nothing tears
-  // (Settle) make the real count differ, so the estimate's target is corrected and refinement
-  // resumes, or the latest splits are undone, until the real count is within 2 % of the target
-  // (at most 6 rounds). Mending moves the count in steps, so corrections stay between the
-  // estimate targets seen to fall short and to overshoot; when they meet, or in the last
-  // round, the target of the nearest count so far is taken again. The first split of a
-  // clustering without triangles is never undone. An undone split made against a tear goes
-  // back to the heap under its error: Settle splits it again if it still tears.
-  std::int64_t internalTarget = target, below = 0, above = std::numeric_limits<std::int64_t>::max();
-  std::int64_t best = target, nearest = std::numeric_limits<std::int64_t>::max();
-  const std::int64_t budget = target < 0 ? -1 : target + target / 4;
-  for (int round = 0, last = 0;; ++round)
+  // Duplicates removed at the end, flaps that join and pieces split so that nothing tears
+  // (Settle) make the real count differ. Above the target, collapses finish (FinishByCollapses):
+  // coarsening the tree instead tears more on steep or thin input, and mending gives the
+  // triangles back, so that the count jumps around the target from one try to the next. More
+  // than 2 % below it, the estimate's target is scaled by the ratio of estimate to real count
+  // and refinement resumes (at most 6 rounds).
+  std::int64_t internalTarget = target;
+  for (int round = 0;; ++round)
   {
-    if (!this->Settle(internalTarget, budget, survivors, mending))
+    if (!this->Settle(internalTarget, survivors, mending))
     {
       return false;
     }
-    const std::int64_t excess = static_cast<std::int64_t>(survivors.size()) - target;
-    if (target < 0 || last || std::abs(excess) <= target / 50)
+    const std::int64_t count = static_cast<std::int64_t>(survivors.size());
+    if (target < 0 || round == 5 || count >= target - target / 50 || this->Heap.empty())
     {
       return true;
     }
-    best = std::abs(excess) < nearest ? internalTarget : best;
-    nearest = std::min(nearest, std::abs(excess));
-    (excess < 0 ? below : above) = internalTarget;
-    // The estimate's target scaled by the ratio of estimate to real count, a count (positive).
-    std::int64_t next = std::max<std::int64_t>(1,
-      std::llround(static_cast<double>(this->SurvivingCount) * target / std::max<std::size_t>(1, survivors.size())));
-    if (next <= below || next >= above)
-    {
-      next = below + (above - below) / 2;
-    }
-    last = round == 4 || next <= below || next >= above;
-    next = last ? best : next;
-    if (next == internalTarget)
-    {
-      return true;
-    }
-    internalTarget = next;
-    if (this->SurvivingCount <= internalTarget)
-    {
-      if (this->Heap.empty())
-      {
-        return true;
-      }
-      continue;
-    }
-    const std::size_t splits = this->Splits.size();
-    while (!this->Splits.empty() && this->SurvivingCount > internalTarget && this->Splits.back().SurvivingCount > 0)
-    {
-      const HeapEntry undone = this->Splits.back().Leaf;
-      this->UndoLastSplit();
-      this->Heap.push(undone);
-    }
-    if (this->Splits.size() == splits)
-    {
-      return true; // nothing to undo: refining again would change nothing
-    }
+    internalTarget = std::max<std::int64_t>(internalTarget + 1,
+      std::llround(static_cast<double>(this->SurvivingCount) * target / std::max<std::int64_t>(1, count)));
   }
 }
 
@@ -2616,7 +2628,12 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   {
     return false;
   }
-  this->Finalize(survivors, this->CommitPieces(mending, survivors), result);
+  std::vector<std::int32_t> owner = this->CommitPieces(mending, survivors);
+  if (target >= 0 && !this->CellLimits() && static_cast<std::int64_t>(survivors.size()) > target + this->Options.Goal.Slack(target))
+  {
+    this->FinishByCollapses(target, survivors, owner);
+  }
+  this->Finalize(survivors, owner, result);
   this->JudgeCount(result);
   std::vector<std::uint8_t> isLeaf(this->Nodes.size(), 0);
   for (const std::int32_t v : this->Order)

@@ -37,8 +37,13 @@
  * Where the input is a surface, clustering makes no open or non-manifold edge that it did not
  * have: a cluster left with one triangle (a flap) joins a neighbour, and a cluster at an edge
  * that tears is split into pieces (parts of its cell) that merge under the link condition, as
- * a last resort into single points. With a count target this mending may add at most a quarter
- * of the target's triangles; past that the count wins and some tears stay.
+ * a last resort into single points. Mending only adds triangles; where it takes the count over
+ * a count target (steep terrain, thin parts: a coarser tree would tear more), the clustered
+ * mesh is finished by quadric half-edge collapses under the link condition (ProgressiveMesh's
+ * core; the multiphase scheme of Garland and Shaffer): a collapsed point's clusters join the
+ * point it collapses into, so the output is still a clustering of the input, without tears and
+ * within the count's tolerance. Not with cell limits (a joined point would cross them), and a
+ * locked point is joined by nothing.
  *
  * What ε bounds: the cluster error of a representative v0 is the largest distance from v0 to
  * the supporting plane of any triangle of its cluster's related set (every input triangle with

@@ -95,6 +95,7 @@ private:
   std::vector<std::int32_t> NextCorner; // the next corner of the same vertex
   std::vector<Eigen::Vector3f> Normals; // unit, zero when degenerate (floats: for the checks and the curvature)
   std::vector<std::int32_t> RemovedStep;
+  std::int64_t LiveTriangles = 0;
   // The sequence.
   std::vector<std::int32_t> Removed, Into;
   std::vector<double> StepError;
@@ -141,7 +142,7 @@ bool ProgressiveBuilder::Run(const TriangleMeshView& input, ProgressiveMesh& seq
     this->Measure(x);
   }
   const std::size_t reportEvery = std::max<std::size_t>(1024, this->P.size() / 64);
-  while (this->CollapseTop())
+  while (this->LiveTriangles > this->Options.StopTriangles && this->CollapseTop())
   {
     if (this->Removed.size() % reportEvery == 0 &&
       !this->Context.Report(0.1 + 0.85 * static_cast<double>(this->Removed.size()) / std::max(1, n)))
@@ -174,6 +175,7 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
     ++this->Triangles[v];
   }
   this->RemovedStep.assign(m, -1);
+  this->LiveTriangles = static_cast<std::int64_t>(m);
   this->Normals.resize(m);
   for (std::size_t t = 0; t < m; ++t)
   {
@@ -572,6 +574,7 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
     if (c[0] >= 0 && (c[0] == y || c[1] == y || c[2] == y))
     {
       this->RemovedStep[t] = step;
+      --this->LiveTriangles;
       for (int k = 0; k < 3; ++k)
       {
         --this->Triangles[c[k]];

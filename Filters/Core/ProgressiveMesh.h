@@ -47,6 +47,9 @@ struct ProgressiveMeshOptions : SimplificationOptions, ProgressiveMeshParameters
   const double* ExtraCoordinates = nullptr;
   int ExtraDimension = 0;
   double ExtraScale = 1.0;
+  /// The build stops once at most this many triangles remain (0: at the coarsest mesh the
+  /// checks allow), for callers that want one level and not the whole sequence.
+  std::int64_t StopTriangles = 0;
 };
 
 /// Why a collapse was refused: the first check that failed, in the order they run.

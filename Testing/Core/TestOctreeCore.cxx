@@ -323,10 +323,12 @@ void PreservedBorderKeepsItsShape()
         }
       }
     }
-    // At 98 % the 400 border triangles alone are the target: the nearest count, and why.
-    const bool reachable = target == 2000;
-    CHECK(reachable == (std::abs(result.NumberOfTriangles() - target) <= 0.03 * target));
-    CHECK(reachable || result.Report.Reason == "locked points are clusters of their own");
+    // At 98 % the 400 border triangles alone are about the target: clustering stops far above
+    // it (the border points are clusters of their own), and the collapses that finish it
+    // (FinishByCollapses) reach it with every border edge kept.
+    std::printf("preserved border, %lld asked: %lld triangles\n", static_cast<long long>(target),
+      static_cast<long long>(result.NumberOfTriangles()));
+    CHECK(std::abs(result.NumberOfTriangles() - target) <= 0.03 * target);
   }
 }
 
@@ -386,6 +388,46 @@ void TerrainKeepsItsSurface()
       static_cast<long long>(tears[0]), static_cast<long long>(tears[1]), static_cast<long long>(result.NumberOfTriangles()));
     CHECK(tears[0] == 0 && tears[1] == 0);
     CHECK(std::abs(result.NumberOfTriangles() - result.Report.TargetTriangles) <= 0.03 * result.Report.TargetTriangles);
+  }
+}
+
+void SteepTerrainKeepsItsSurfaceAndCount()
+{
+  // Where the relief is a few times the width, a coarser tree tears more and mending gives the
+  // triangles back: the clustering then overshoots the count and half-edge collapses take it
+  // down (FinishByCollapses). No new open or non-manifold edge, the count within 3 %, and the
+  // locked points (every 37th) stay output points at their input coordinates. Before, this
+  // terrain kept up to 131 new open and 86 new non-manifold edges within the count.
+  const Mesh terrain = SteepTerrain(100);
+  std::vector<std::uint8_t> locked(terrain.Points.size() / 3, 0);
+  for (std::size_t v = 0; v < locked.size(); v += 37)
+  {
+    locked[v] = 1;
+  }
+  for (const bool withLocks : { false, true })
+  {
+    for (const double reduction : { 0.9, 0.98 })
+    {
+      OctreeClusteringOptions options;
+      options.Goal.SetReduction(reduction);
+      options.LockedPoints = withLocks ? locked.data() : nullptr;
+      const OctreeClusteringResult result = Simplify(terrain, options);
+      const std::array<std::int64_t, 2> tears = NewTears(terrain.Triangles, result.Triangles, result.VertexToPoint);
+      std::printf("steep terrain at %g%s: %lld new open, %lld new non-manifold edges, %lld triangles for %lld\n",
+        reduction, withLocks ? " with locks" : "", static_cast<long long>(tears[0]), static_cast<long long>(tears[1]),
+        static_cast<long long>(result.NumberOfTriangles()), static_cast<long long>(result.Report.TargetTriangles));
+      CHECK(tears[0] == 0 && tears[1] == 0);
+      CHECK(PointsStayInTheirCells(result, terrain));
+      for (std::size_t v = 0; v < locked.size() && withLocks; ++v)
+      {
+        const std::int32_t p = result.VertexToPoint[v];
+        CHECK(!locked[v] || p < 0 ||
+          (result.Points[3 * p] == terrain.Points[3 * v] && result.Points[3 * p + 1] == terrain.Points[3 * v + 1] &&
+            result.Points[3 * p + 2] == terrain.Points[3 * v + 2]));
+      }
+      CHECK(withLocks ||
+        std::abs(result.NumberOfTriangles() - result.Report.TargetTriangles) <= 0.03 * result.Report.TargetTriangles);
+    }
   }
 }
 
@@ -881,6 +923,7 @@ int main()
     { "DisconnectedPartsInOneCellStayApart", DisconnectedPartsInOneCellStayApart },
     { "TargetCountIsMet", TargetCountIsMet },
     { "TerrainKeepsItsSurface", TerrainKeepsItsSurface },
+    { "SteepTerrainKeepsItsSurfaceAndCount", SteepTerrainKeepsItsSurfaceAndCount },
     { "CapOfAThinPartJoinsItsNeighbour", CapOfAThinPartJoinsItsNeighbour },
     { "ErrorBoundIsRespected", ErrorBoundIsRespected },
     { "CellLimitsAreAlwaysApplied", CellLimitsAreAlwaysApplied },
