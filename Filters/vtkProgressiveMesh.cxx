@@ -12,6 +12,7 @@
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -39,8 +40,11 @@ struct vtkProgressiveMesh::Cache
   std::vector<meshsimp::ProgressiveMesh> Pieces;
   std::vector<bool> Ready;
   /// Per piece, the whole sequence as a mesh (made once, at the first level written): levels are
-  /// copied from its first points and triangles, and output port 1 shows piece 0's.
+  /// views of its first points and triangles, and output port 1 shows piece 0's.
   std::vector<vtkSmartPointer<vtkPolyData>> Wholes;
+  /// Per piece of this update, the points of the level the target picked, or -1 when RunCore
+  /// extracted it in full (see WritePiece); empty before RunCore.
+  std::vector<std::int64_t> Levels;
   vtkPolyData* SequenceOutput = nullptr; // output port 1, for a single-surface input
 };
 
@@ -165,6 +169,27 @@ std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& m
   return sequence.Validate(n);
 }
 
+bool HasNormals(vtkPolyData* mesh)
+{
+  return mesh->GetPointData()->GetNormals() || mesh->GetCellData()->GetNormals();
+}
+
+/// What the front end needs of a level that WritePiece writes from the whole sequence's mesh:
+/// the outcome, the level's triangles' sources (their count) and field values. Returns the
+/// level's points.
+std::int64_t LevelToWrite(const meshsimp::ProgressiveMesh& sequence, const meshsimp::Target& goal,
+  meshsimp::SimplifiedMesh& result)
+{
+  result = meshsimp::SimplifiedMesh();
+  result.Report = sequence.Report;
+  const std::int64_t points = meshsimp::LevelFor(sequence, goal, result.Report);
+  const std::int64_t triangles = sequence.TrianglesAt(points);
+  result.TriangleSource.assign(sequence.InputTriangle.begin(), sequence.InputTriangle.begin() + triangles);
+  result.FieldValues = { { "LevelTriangles", static_cast<double>(triangles) },
+    { "LevelPoints", static_cast<double>(points) } };
+  return points;
+}
+
 /// The whole sequence as a mesh for output port 1: every point, in collapse order, every
 /// triangle, and the arrays that let it be read back.
 meshsimp::SimplifiedMesh WholeSequence(const meshsimp::ProgressiveMesh& sequence, const meshsimp::TriangleMeshView& mesh)
@@ -238,6 +263,7 @@ int vtkProgressiveMesh::RequestData(
     *this->Sequences = Cache();
     this->Sequences->Key = key.str();
   }
+  this->Sequences->Levels.clear();
   vtkPolyData* sequenceOutput = vtkPolyData::GetData(outputVector, 1);
   sequenceOutput->Initialize();
   this->Sequences->SequenceOutput = vtkCompositeDataSet::SafeDownCast(input) ? nullptr : sequenceOutput;
@@ -291,6 +317,13 @@ bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const m
     cache.Ready[i] = true;
     ++this->NumberOfBuilds;
   }
+  cache.Levels.resize(cache.Pieces.size(), -1);
+  cache.Levels[i] = -1;
+  if (i < cache.Wholes.size() && cache.Wholes[i] && !HasNormals(cache.Wholes[i]))
+  {
+    cache.Levels[i] = LevelToWrite(sequence, common.Goal, result);
+    return true;
+  }
   meshsimp::ExtractTarget(sequence, common.Goal, mesh, result);
   return true;
 }
@@ -302,16 +335,17 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
   // is not yet; a piece without a sequence (aborted, nothing asked for) the usual way.
   Cache& cache = *this->Sequences;
   const std::size_t i = this->PieceIndex;
-  if (i >= cache.Ready.size() || !cache.Ready[i] || mesh.NumberOfPoints() == 0)
+  const bool lean = i < cache.Levels.size() && cache.Levels[i] >= 0;
+  if (i >= cache.Ready.size() || !cache.Ready[i] || (!lean && mesh.NumberOfPoints() == 0))
   {
     this->Superclass::WritePiece(input, triangles, mesh, output);
     return;
   }
+  const meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
   cache.Wholes.resize(cache.Ready.size());
   vtkSmartPointer<vtkPolyData>& whole = cache.Wholes[i];
   if (!whole)
   {
-    const meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
     whole = vtkSmartPointer<vtkPolyData>::New();
     vtkSimplification::SetOutput(input, triangles, WholeSequence(sequence, triangles.View), this->OutputPointsPrecision, whole);
     vtkNew<vtkIntArray> removedAt;
@@ -321,7 +355,11 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
     whole->GetCellData()->AddArray(removedAt);
     whole->GetFieldData()->Initialize();
   }
-  vtkSimplification::SetPrefixOutput(input, triangles, whole, mesh, output);
+  const std::int64_t points = lean ? cache.Levels[i] : mesh.NumberOfPoints();
+  vtkNew<vtkIdTypeArray> corners;
+  corners->SetNumberOfValues(3 * sequence.TrianglesAt(points));
+  meshsimp::LevelCorners(sequence, points, corners->GetPointer(0));
+  vtkSimplification::SetPrefixOutput(input, triangles, whole, points, corners, mesh, output);
   for (const char* name : { ParentName, ErrorName })
   {
     output->GetPointData()->RemoveArray(name);

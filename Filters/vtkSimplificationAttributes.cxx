@@ -10,6 +10,8 @@
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationObjectBaseKey.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -173,6 +175,10 @@ void RecomputeNormals(const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
   vtkDataArray* pointNormals = output->GetPointData()->GetNormals();
   vtkDataArray* cellNormals = output->GetCellData()->GetNormals();
+  if (!pointNormals && !cellNormals)
+  {
+    return;
+  }
   std::vector<Eigen::Vector3d> sums(pointNormals ? mesh.NumberOfPoints() : 0, Eigen::Vector3d::Zero());
   for (std::size_t t = 0; t < mesh.Triangles.size() / 3; ++t)
   {
@@ -256,18 +262,21 @@ void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const mesh
   AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
 }
 
-/// The first tuples of an array, copied as one block where its memory is contiguous.
-vtkSmartPointer<vtkAbstractArray> Prefix(vtkAbstractArray* whole, vtkIdType tuples)
+/// Held in a view's information: the array whose memory it shows, kept alive with the view.
+vtkInformationObjectBaseKey* const PrefixOwner = new vtkInformationObjectBaseKey("PrefixOwner", "vtkSimplification");
+
+/// The first tuples of an array: a view of its memory where that is contiguous (the view keeps
+/// it alive), else a copy; copied too when copy is set.
+vtkSmartPointer<vtkAbstractArray> Prefix(vtkAbstractArray* whole, vtkIdType tuples, bool copy)
 {
   auto part = vtk::TakeSmartPointer(whole->NewInstance());
   part->SetName(whole->GetName());
   part->SetNumberOfComponents(whole->GetNumberOfComponents());
   auto* data = vtkDataArray::SafeDownCast(whole);
-  if (data && data->HasStandardMemoryLayout())
+  if (data && data->HasStandardMemoryLayout() && !copy)
   {
-    part->SetNumberOfTuples(tuples);
-    std::memcpy(part->GetVoidPointer(0), data->GetVoidPointer(0),
-      static_cast<std::size_t>(tuples) * data->GetNumberOfComponents() * data->GetDataTypeSize());
+    part->SetVoidArray(data->GetVoidPointer(0), tuples * data->GetNumberOfComponents(), 1);
+    part->GetInformation()->Set(PrefixOwner, whole);
   }
   else
   {
@@ -276,13 +285,14 @@ vtkSmartPointer<vtkAbstractArray> Prefix(vtkAbstractArray* whole, vtkIdType tupl
   return part;
 }
 
-/// The first tuples of every array of whole in part, with the same active attributes.
+/// The first tuples of every array of whole in part, with the same active attributes; normals
+/// are copies (they are recomputed), the others views.
 void PrefixArrays(vtkDataSetAttributes* whole, vtkIdType tuples, vtkDataSetAttributes* part)
 {
   for (int i = 0; i < whole->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* array = whole->GetAbstractArray(i);
-    part->AddArray(Prefix(array, tuples));
+    part->AddArray(Prefix(array, tuples, array == whole->GetNormals()));
     for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
     {
       if (whole->GetAbstractAttribute(attribute) == array)
@@ -311,15 +321,30 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
   FinishOutput(input, triangles, mesh, true, output);
 }
 
-void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole,
-  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole, vtkIdType points,
+  vtkIdTypeArray* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
-  const vtkIdType points = static_cast<vtkIdType>(mesh.NumberOfPoints());
   vtkNew<vtkPoints> prefix;
-  prefix->SetData(vtkDataArray::SafeDownCast(Prefix(whole->GetPoints()->GetData(), points)));
+  prefix->SetData(vtkDataArray::SafeDownCast(Prefix(whole->GetPoints()->GetData(), points, false)));
   output->SetPoints(prefix);
-  output->SetPolys(MakeTriangles(mesh.Triangles));
-  PrefixArrays(whole->GetCellData(), static_cast<vtkIdType>(mesh.NumberOfTriangles()), output->GetCellData());
+  const vtkIdType count = corners->GetNumberOfValues() / 3;
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  if (auto* wholeOffsets = vtkIdTypeArray::SafeDownCast(whole->GetPolys()->GetOffsetsArray()))
+  {
+    offsets = vtkIdTypeArray::SafeDownCast(Prefix(wholeOffsets, count + 1, false)); // 0, 3, 6, ...
+  }
+  else
+  {
+    offsets->SetNumberOfValues(count + 1);
+    for (vtkIdType i = 0; i <= count; ++i)
+    {
+      offsets->SetValue(i, 3 * i);
+    }
+  }
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, corners);
+  output->SetPolys(cells);
+  PrefixArrays(whole->GetCellData(), count, output->GetCellData());
   PrefixArrays(whole->GetPointData(), points, output->GetPointData());
   // The whole's point arrays include the core's (its first points' values are the level's).
   FinishOutput(input, triangles, mesh, false, output);

@@ -24,6 +24,7 @@
 #include "vtkSimplificationInput.h"
 
 class vtkPointData;
+class vtkIdTypeArray;
 class vtkPolyData;
 
 namespace vtkSimplification
@@ -38,12 +39,14 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
 /**
  * The output of a level whose points and triangles are the first ones of a whole mesh made by
  * SetOutput (a progressive mesh's sequence, points and triangles in the order levels take them):
- * the points and the point and cell arrays (the core's named arrays among them, as the whole
- * has them) are the first tuples of the whole's, copied in blocks, so that a level costs its
- * size and not the input's; the rest as SetOutput.
+ * the points, the triangles' offsets and the point and cell arrays (the core's named arrays
+ * among them, as the whole has them) are views of the first tuples of the whole's, not copies
+ * (each view keeps the whole's array alive), so that a level costs its corners and not its
+ * size; normal arrays, which are recomputed, are copied (mesh must then hold the level's points
+ * and triangles). corners: the level's triangles, 3 per triangle. The rest as SetOutput.
  */
-void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole,
-  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
+void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole, vtkIdType points,
+  vtkIdTypeArray* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
 
 /// Every point array of inPD mapped to the mesh's output points by the rule above.
 void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkPointData* outPD);

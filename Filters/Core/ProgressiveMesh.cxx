@@ -784,11 +784,9 @@ std::int64_t LevelFor(const ProgressiveMesh& sequence, const Target& goal, Outco
   return k;
 }
 
-void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,
-  SimplifiedMesh& level)
+std::vector<std::int32_t> LevelAncestors(const ProgressiveMesh& sequence, std::int64_t points)
 {
-  // Each corner goes to its first ancestor below points: parents have smaller indices, so one
-  // pass upwards from points gives every removed point's.
+  // Parents have smaller indices, so one pass upwards from points gives every removed point's.
   const std::int64_t n = sequence.NumberOfPoints(), k = std::min(std::max(points, sequence.BasePoints), n);
   std::vector<std::int32_t> ancestor(n - k);
   for (std::int64_t p = k; p < n; ++p)
@@ -796,13 +794,16 @@ void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const Tr
     const std::int32_t parent = sequence.Parent[p];
     ancestor[p - k] = parent < k ? parent : ancestor[parent - k];
   }
-  const auto survivor = [&](std::int32_t p) { return p < k ? p : ancestor[p - k]; };
+  return ancestor;
+}
+
+void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,
+  SimplifiedMesh& level)
+{
+  const std::int64_t n = sequence.NumberOfPoints(), k = std::min(std::max(points, sequence.BasePoints), n);
   const std::int64_t m = sequence.TrianglesAt(k);
   level.Triangles.resize(3 * m);
-  for (std::int64_t i = 0; i < 3 * m; ++i)
-  {
-    level.Triangles[i] = survivor(sequence.Triangles[i]);
-  }
+  LevelCorners(sequence, k, level.Triangles.data());
   level.TriangleSource.assign(sequence.InputTriangle.begin(), sequence.InputTriangle.begin() + m);
   level.Points.resize(3 * k);
   level.SourceOffsets.resize(k + 1);

@@ -104,6 +104,26 @@ bool BuildProgressiveMesh(const TriangleMeshView& input, const ProgressiveMeshOp
 /// the stop reason when the target lies beyond the coarsest level.
 std::int64_t LevelFor(const ProgressiveMesh& sequence, const Target& goal, Outcome& outcome);
 
+/// For the level with the first points points: each removed point's first ancestor below
+/// points (entry p - points for point p).
+std::vector<std::int32_t> LevelAncestors(const ProgressiveMesh& sequence, std::int64_t points);
+
+/// The corners of the level's TrianglesAt(points) triangles, each point mapped to its first
+/// ancestor below points, 3 per triangle into corners (Index: the caller's index type, such as a
+/// cell array's, so a level needs no second copy).
+template <class Index>
+void LevelCorners(const ProgressiveMesh& sequence, std::int64_t points, Index* corners)
+{
+  const std::vector<std::int32_t> ancestor = LevelAncestors(sequence, points);
+  const std::int64_t k = sequence.NumberOfPoints() - static_cast<std::int64_t>(ancestor.size());
+  const std::int64_t count = 3 * sequence.TrianglesAt(k);
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    const std::int32_t p = sequence.Triangles[i];
+    corners[i] = static_cast<Index>(p < k ? p : ancestor[p - k]);
+  }
+}
+
 /// The level with the first points points, in input coordinates, each point its own source;
 /// point array "CollapseLevel" and field values "LevelTriangles" and "LevelPoints".
 void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,

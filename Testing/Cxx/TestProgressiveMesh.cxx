@@ -118,6 +118,67 @@ void TestLevelsFromOneBuild(vtkPolyData* cow)
   }
 }
 
+/// Every point and cell array of two meshes holds the same values.
+bool SameArrays(vtkPolyData* a, vtkPolyData* b)
+{
+  bool same = true;
+  for (const auto& [x, y] : { std::make_pair<vtkFieldData*, vtkFieldData*>(a->GetPointData(), b->GetPointData()),
+         std::make_pair<vtkFieldData*, vtkFieldData*>(a->GetCellData(), b->GetCellData()) })
+  {
+    same = same && x->GetNumberOfArrays() == y->GetNumberOfArrays();
+    for (int i = 0; same && i < x->GetNumberOfArrays(); ++i)
+    {
+      vtkDataArray* u = x->GetArray(i);
+      vtkDataArray* v = y->GetArray(u ? u->GetName() : "");
+      same = u && v && u->GetNumberOfTuples() == v->GetNumberOfTuples() && u->GetNumberOfComponents() == v->GetNumberOfComponents();
+      for (vtkIdType t = 0; same && t < u->GetNumberOfTuples(); ++t)
+      {
+        for (int c = 0; c < u->GetNumberOfComponents(); ++c)
+        {
+          same = same && u->GetComponent(t, c) == v->GetComponent(t, c);
+        }
+      }
+    }
+  }
+  return same;
+}
+
+void TestLevelsAsViews(vtkPolyData* decorated)
+{
+  // Without normals to recompute, a level after the first is written as views of the whole
+  // sequence's first points, arrays and offsets (SetPrefixOutput): it equals a fresh build's,
+  // and it stays valid after the sequence it shows is gone (a rebuild, the filter deleted).
+  auto cow = vtkSmartPointer<vtkPolyData>::New();
+  cow->DeepCopy(decorated);
+  cow->GetPointData()->SetNormals(nullptr);
+  cow->GetCellData()->SetNormals(nullptr);
+  auto kept = vtkSmartPointer<vtkPolyData>::New(), expected = vtkSmartPointer<vtkPolyData>::New();
+  {
+    vtkNew<vtkProgressiveMesh> filter;
+    filter->SetInputData(cow);
+    for (const double reduction : { 0.3, 0.9, 0.5, 0.0, 0.99 })
+    {
+      filter->SetTargetReduction(reduction);
+      filter->Update();
+      const vtkSmartPointer<vtkPolyData> fresh = FreshLevel(cow, reduction);
+      CHECK(SameMesh(filter->GetOutput(), fresh) && SameArrays(filter->GetOutput(), fresh));
+    }
+    CHECK(filter->GetNumberOfBuilds() == 1);
+    // Views: the level's points are the sequence's first ones, in the same memory.
+    CHECK(filter->GetOutput()->GetPoints()->GetVoidPointer(0) == filter->GetSequenceOutput()->GetPoints()->GetVoidPointer(0));
+    kept->ShallowCopy(filter->GetOutput());
+    expected->DeepCopy(filter->GetOutput());
+    filter->SetTargetReduction(1.0); // no triangle asked for: empty, not the last level
+    filter->Update();
+    CHECK(filter->GetOutput()->GetNumberOfPolys() == 0);
+    filter->SetTargetReduction(0.99);
+    filter->SetCurvatureWeight(0.5); // a new build: the cached sequence goes
+    filter->Update();
+    CHECK(filter->GetNumberOfBuilds() == 2);
+  }
+  CHECK(SameMesh(kept, expected) && SameArrays(kept, expected));
+}
+
 void TestPointsAreInputPoints(vtkPolyData* cow)
 {
   // Deviation, the distance of each point to the input surface, is 0: they are input points.
@@ -231,6 +292,7 @@ int TestProgressiveMesh(int, char*[])
 {
   vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
   TestLevelsFromOneBuild(cow);
+  TestLevelsAsViews(cow);
   TestPointsAreInputPoints(cow);
   TestSequenceFile(cow);
   TestProgressAndAbort(cow);
