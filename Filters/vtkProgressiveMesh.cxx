@@ -42,8 +42,8 @@ struct vtkProgressiveMesh::Cache
   /// Per piece, the whole sequence as a mesh (made once, at the first level written): levels are
   /// views of its first points and triangles, and output port 1 shows piece 0's.
   std::vector<vtkSmartPointer<vtkPolyData>> Wholes;
-  /// Per piece of this update, the points of the level the target picked, or -1 when RunCore
-  /// extracted it in full (see WritePiece); empty before RunCore.
+  /// Per piece of this update, the points of the level the target picked (written from the
+  /// whole), or -1 when RunCore extracted it in full (see WritePiece); empty before RunCore.
   std::vector<std::int64_t> Levels;
   vtkPolyData* SequenceOutput = nullptr; // output port 1, for a single-surface input
 };
@@ -319,7 +319,7 @@ bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const m
   }
   cache.Levels.resize(cache.Pieces.size(), -1);
   cache.Levels[i] = -1;
-  if (i < cache.Wholes.size() && cache.Wholes[i] && !HasNormals(cache.Wholes[i]))
+  if (!HasNormals(this->PieceInput)) // else the level's normals are recomputed from its mesh
   {
     cache.Levels[i] = LevelToWrite(sequence, common.Goal, result);
     return true;

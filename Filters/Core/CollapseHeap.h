@@ -39,6 +39,7 @@ public:
   void Reset(std::int32_t size)
   {
     this->Entries.clear();
+    this->Entries.reserve(size); // one entry per id at most: no doubling past it
     this->Position.assign(size, -1);
     this->NextSequence = 0;
   }

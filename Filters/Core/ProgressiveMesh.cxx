@@ -208,6 +208,11 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   this->BuildQuadrics();
   this->MeasureScales();
   this->Heap.Reset(static_cast<std::int32_t>(n));
+  for (auto* record : { &this->Removed, &this->Into })
+  {
+    record->reserve(n); // a collapse per point at most: no doubling past it
+  }
+  this->StepError.reserve(n);
 }
 
 void ProgressiveBuilder::UpdateNormal(std::int32_t t)

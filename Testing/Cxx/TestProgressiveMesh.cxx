@@ -145,7 +145,7 @@ bool SameArrays(vtkPolyData* a, vtkPolyData* b)
 
 void TestLevelsAsViews(vtkPolyData* decorated)
 {
-  // Without normals to recompute, a level after the first is written as views of the whole
+  // Without normals to recompute, every level is written as views of the whole
   // sequence's first points, arrays and offsets (SetPrefixOutput): it equals a fresh build's,
   // and it stays valid after the sequence it shows is gone (a rebuild, the filter deleted).
   auto cow = vtkSmartPointer<vtkPolyData>::New();
