@@ -121,11 +121,20 @@ enum class Encoding
   BigEndian
 };
 
+/// A type's facts, read once from its name (the body's records do not parse names again).
+struct TypeFacts
+{
+  int Size = 0; // bytes, 0 for an unknown name
+  bool Signed = false;
+  long long Maximum = 0; // the largest value an integer type holds
+};
+
 struct Property
 {
   std::string Name;
   std::string Type;      // of the value, or of a list's items
   std::string CountType; // of a list's length; empty for a scalar
+  TypeFacts Item, Count; // of Type and CountType
   bool IsList() const { return !this->CountType.empty(); }
 };
 
@@ -165,10 +174,14 @@ bool IsSignedType(const std::string& type)
     type == "int32";
 }
 
-long long TypeMaximum(const std::string& type)
+TypeFacts FactsOf(const std::string& type)
 {
-  const int bits = 8 * TypeSize(type) - (IsSignedType(type) ? 1 : 0);
-  return (1LL << bits) - 1;
+  TypeFacts facts;
+  facts.Size = TypeSize(type);
+  facts.Signed = IsSignedType(type);
+  const int bits = 8 * facts.Size - (facts.Signed ? 1 : 0);
+  facts.Maximum = bits >= 63 ? std::numeric_limits<long long>::max() : (1LL << bits) - 1;
+  return facts;
 }
 
 /// A line's words as VTK's reader splits it: "vertex_index" renamed "vertex_indices" (the rest
@@ -288,7 +301,9 @@ std::string ParseProperty(const std::vector<std::string>& words, Header& header)
     return "the property line is not 'property <type> <name>' or "
            "'property list <length type> <type> <name>'";
   }
-  if (TypeSize(property.Type) == 0)
+  property.Item = FactsOf(property.Type);
+  property.Count = FactsOf(property.CountType);
+  if (property.Item.Size == 0)
   {
     return "property '" + property.Name + "' has unknown type " + Quote(property.Type);
   }
@@ -424,11 +439,10 @@ bool IsCornerList(const Element& element, const Property& property)
   return element.Name == "face" && property.Name == "vertex_indices";
 }
 
-/// A list's length from its word: an integer its type holds, at most 255 corners.
-std::string ListLength(const std::string& word, const Element& element, const Property& property,
-  long long& length)
+/// A list's length: an integer its type holds, at most 255 corners.
+std::string CheckListLength(long long length, const std::string& word, const Element& element, const Property& property)
 {
-  if (!ParseCount(word, length) || length > TypeMaximum(property.CountType))
+  if (length < 0 || length > property.Count.Maximum)
   {
     return "list '" + property.Name + "' has length " + Quote(word);
   }
@@ -437,6 +451,14 @@ std::string ListLength(const std::string& word, const Element& element, const Pr
     return std::to_string(length) + " corners, more than VTK's 255";
   }
   return "";
+}
+
+/// A list's length from its word (see CheckListLength).
+std::string ListLength(const std::string& word, const Element& element, const Property& property,
+  long long& length)
+{
+  return ParseCount(word, length) ? CheckListLength(length, word, element, property)
+                                  : "list '" + property.Name + "' has length " + Quote(word);
 }
 
 /// One ASCII record: enough words, numbers where numbers belong, corners naming vertices.
@@ -521,6 +543,7 @@ public:
     : In(in)
     , BigEndian(bigEndian)
     , Remaining(remaining)
+    , Buffer(1 << 16)
   {
   }
 
@@ -531,19 +554,27 @@ public:
       return false;
     }
     this->Remaining -= bytes;
-    this->In.seekg(static_cast<std::streamoff>(bytes), std::ios::cur);
+    const std::uintmax_t buffered = this->End - this->At;
+    if (bytes <= buffered)
+    {
+      this->At += static_cast<std::size_t>(bytes);
+      return true;
+    }
+    this->At = this->End = 0;
+    this->In.seekg(static_cast<std::streamoff>(bytes - buffered), std::ios::cur);
     return static_cast<bool>(this->In);
   }
 
-  bool ReadInteger(const std::string& type, long long& value)
+  bool ReadInteger(const TypeFacts& type, long long& value)
   {
-    const int size = TypeSize(type);
-    unsigned char bytes[8] = {};
-    if (static_cast<std::uintmax_t>(size) > this->Remaining ||
-      !this->In.read(reinterpret_cast<char*>(bytes), size))
+    const int size = type.Size;
+    if (static_cast<std::uintmax_t>(size) > this->Remaining || !this->Have(size))
     {
       return false;
     }
+    unsigned char bytes[8] = {};
+    std::copy_n(this->Buffer.data() + this->At, size, bytes);
+    this->At += size;
     this->Remaining -= size;
     if (this->BigEndian)
     {
@@ -554,7 +585,7 @@ public:
     {
       raw = raw << 8 | bytes[k];
     }
-    const bool negative = IsSignedType(type) && (raw >> (8 * size - 1)) != 0;
+    const bool negative = type.Signed && (raw >> (8 * size - 1)) != 0;
     value = static_cast<long long>(raw) - (negative ? 1LL << (8 * size) : 0);
     return true;
   }
@@ -562,9 +593,28 @@ public:
   std::uintmax_t Left() const { return this->Remaining; }
 
 private:
+  /// Whether size bytes are buffered, reading the next block of the file when they are not.
+  bool Have(std::size_t size)
+  {
+    if (this->End - this->At >= size)
+    {
+      return true;
+    }
+    std::copy(this->Buffer.begin() + this->At, this->Buffer.begin() + this->End, this->Buffer.begin());
+    this->End -= this->At;
+    this->At = 0;
+    const std::uintmax_t unread = this->Remaining - this->End;
+    const std::size_t wanted = static_cast<std::size_t>(std::min<std::uintmax_t>(this->Buffer.size() - this->End, unread));
+    this->In.read(reinterpret_cast<char*>(this->Buffer.data() + this->End), static_cast<std::streamsize>(wanted));
+    this->End += static_cast<std::size_t>(this->In.gcount());
+    return this->End - this->At >= size;
+  }
+
   std::istream& In;
   bool BigEndian;
-  std::uintmax_t Remaining;
+  std::uintmax_t Remaining; // bytes not yet consumed, the buffered ones included
+  std::vector<unsigned char> Buffer;
+  std::size_t At = 0, End = 0; // the buffered bytes not yet consumed: [At, End)
 };
 
 /// One binary record with lists: their lengths, and the corners naming vertices.
@@ -575,25 +625,26 @@ std::string CheckBinaryRecord(BinaryReader& bytes, const Element& element, long 
     long long length = 0;
     if (!property.IsList())
     {
-      if (!bytes.Skip(TypeSize(property.Type)))
+      if (!bytes.Skip(property.Item.Size))
       {
         return "the file ends inside it";
       }
       continue;
     }
-    if (!bytes.ReadInteger(property.CountType, length))
+    if (!bytes.ReadInteger(property.Count, length))
     {
       return "the file ends inside it";
     }
-    const std::string problem =
-      ListLength(std::to_string(length), element, property, length);
+    const std::string problem = length >= 0 && length <= MaximumCorners
+      ? std::string() // within every count type and VTK's limit: no message to make
+      : CheckListLength(length, std::to_string(length), element, property);
     if (!problem.empty())
     {
       return problem;
     }
     if (!IsCornerList(element, property))
     {
-      if (!bytes.Skip(static_cast<std::uintmax_t>(length) * TypeSize(property.Type)))
+      if (!bytes.Skip(static_cast<std::uintmax_t>(length) * property.Item.Size))
       {
         return "the file ends inside it";
       }
@@ -602,7 +653,7 @@ std::string CheckBinaryRecord(BinaryReader& bytes, const Element& element, long 
     for (long long k = 0; k < length; ++k)
     {
       long long corner = 0;
-      if (!bytes.ReadInteger(property.Type, corner))
+      if (!bytes.ReadInteger(property.Item, corner))
       {
         return "the file ends inside it";
       }
@@ -629,7 +680,7 @@ std::string CheckBinaryBody(std::istream& in, const Header& header, std::uintmax
     bool hasList = false;
     for (const Property& property : element.Properties)
     {
-      stride += TypeSize(property.Type);
+      stride += property.Item.Size;
       hasList = hasList || property.IsList();
     }
     if (!hasList)

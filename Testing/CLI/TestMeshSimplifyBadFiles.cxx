@@ -13,6 +13,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -89,6 +90,44 @@ std::string BinaryPLY(bool bigEndian)
     for (int id : f)
     {
       ply += Bytes(static_cast<std::int32_t>(id), bigEndian);
+    }
+  }
+  return ply;
+}
+
+/// A binary grid of m x m quads, larger than the checker's 64 KiB read buffer (records straddle
+/// its blocks); lastCorner, when not negative, replaces the last face's last corner.
+std::string LargeBinaryPLY(int m, std::int32_t lastCorner)
+{
+  const int n = m + 1;
+  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(n * n) +
+    "\nproperty float x\nproperty float y\nproperty float z\nelement face " + std::to_string(2 * m * m) +
+    "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      for (const float x : { static_cast<float>(i), static_cast<float>(j), static_cast<float>((i * j) % 7) })
+      {
+        ply += Bytes(x, false);
+      }
+    }
+  }
+  for (int j = 0; j < m; ++j)
+  {
+    for (int i = 0; i < m; ++i)
+    {
+      const std::int32_t a = j * n + i;
+      for (const std::array<std::int32_t, 3>& f : { std::array<std::int32_t, 3>{ a, a + 1, a + n + 1 },
+             std::array<std::int32_t, 3>{ a, a + n + 1, a + n } })
+      {
+        ply += '\3';
+        for (int k = 0; k < 3; ++k)
+        {
+          const bool last = j == m - 1 && i == m - 1 && f[0] == a && f[2] == a + n && k == 2;
+          ply += Bytes(last && lastCorner >= 0 ? lastCorner : f[k], false);
+        }
+      }
     }
   }
   return ply;
@@ -212,7 +251,8 @@ std::string VTPWithField(const std::string& field)
 std::vector<Case> SoundFiles()
 {
   return { { "sound_ascii.ply", AsciiPLY() }, { "sound_le.ply", BinaryPLY(false) },
-    { "sound_be.ply", BinaryPLY(true) }, { "sound_binary.stl", BinarySTL(4) },
+    { "sound_be.ply", BinaryPLY(true) }, { "sound_large.ply", LargeBinaryPLY(60, -1) },
+    { "sound_binary.stl", BinarySTL(4) },
     { "sound_ascii.stl", AsciiSTL() }, { "sound.obj", OBJ() }, { "sound.off", OFF() },
     { "sound.vtp", VTP() }, { "sound.vtk", LegacyVTK() },
     { "sound_field.vtk",
@@ -255,6 +295,8 @@ std::vector<Case> DamagedFiles()
       "property float y\nend_header\n" +
         std::string(16, '\0') },
     { "truncated_in_faces.ply", binary.substr(0, binary.size() - 7) },
+    { "large_face_index_beyond.ply", LargeBinaryPLY(60, 61 * 61) },
+    { "large_truncated.ply", LargeBinaryPLY(60, -1).substr(0, 100000) },
     { "truncated_in_vertices.ply", binary.substr(0, binary.find("end_header") + 20) },
     { "face_index_beyond.ply", ply.substr(0, ply.rfind("3 1 2 3")) + "3 1 2 9\n" },
     { "short_vertex_line.ply", ply.substr(0, ply.find("end_header\n") + 11) + "0 0\n" },
