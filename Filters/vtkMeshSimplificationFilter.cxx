@@ -351,7 +351,6 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   {
     this->AddDeviation(piece.Input, piece.Triangles, piece.Output, context);
   }
-  this->PieceDone(piece.Input, piece.Triangles);
   this->PieceInput = nullptr;
   return true;
 }
@@ -367,8 +366,6 @@ void vtkMeshSimplificationFilter::AddDeviation(vtkPolyData* input, const vtkSimp
 {
   vtkSimplification::AddDeviation(input->GetPoints(), triangles, output, context);
 }
-
-void vtkMeshSimplificationFilter::PieceDone(vtkPolyData*, const vtkSimplification::TriangleInput&) {}
 
 void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)
 {

@@ -217,13 +217,7 @@ protected:
   virtual void AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
     vtkPolyData* output, const meshsimp::ExecutionContext& context);
 
-  /**
-   * Called after piece PieceIndex's output is written, with its input and the triangles the
-   * core saw (for a subclass with more outputs). Does nothing by default.
-   */
-  virtual void PieceDone(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles);
-
-  /// The piece RunCore and PieceDone are called for: its index in the execution's pieces and
+  /// The piece RunCore and WritePiece are called for: its index in the execution's pieces and
   /// its input (for a subclass that reads arrays of its own).
   std::size_t PieceIndex = 0;
   vtkPolyData* PieceInput = nullptr;

@@ -45,7 +45,8 @@ struct vtkProgressiveMesh::Cache
   /// Per piece of this update, the points of the level the target picked (written from the
   /// whole), or -1 when RunCore extracted it in full (see WritePiece); empty before RunCore.
   std::vector<std::int64_t> Levels;
-  vtkPolyData* SequenceOutput = nullptr; // output port 1, for a single-surface input
+  /// Per piece of this update, the output WritePiece wrote (to place its sequence on port 1).
+  std::vector<vtkPolyData*> Outputs;
 };
 
 namespace
@@ -219,12 +220,7 @@ vtkPolyData* vtkProgressiveMesh::GetSequenceOutput()
 
 int vtkProgressiveMesh::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 1)
-  {
-    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
-    return 1;
-  }
-  return this->Superclass::FillOutputPortInformation(port, info);
+  return this->Superclass::FillOutputPortInformation(port, info); // both ports: the input's kind
 }
 
 vtkTypeBool vtkProgressiveMesh::ProcessRequest(
@@ -233,10 +229,13 @@ vtkTypeBool vtkProgressiveMesh::ProcessRequest(
   const vtkTypeBool result = this->Superclass::ProcessRequest(request, inputVector, outputVector);
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {
+    // Port 1 is of port 0's kind: a polydata, or a composite dataset of the input's structure.
+    vtkDataObject* levels = outputVector->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT());
     vtkInformation* info = outputVector->GetInformationObject(1);
-    if (!vtkPolyData::SafeDownCast(info->Get(vtkDataObject::DATA_OBJECT())))
+    vtkDataObject* sequences = info->Get(vtkDataObject::DATA_OBJECT());
+    if (levels && (!sequences || sequences->GetDataObjectType() != levels->GetDataObjectType()))
     {
-      info->Set(vtkDataObject::DATA_OBJECT(), vtkNew<vtkPolyData>());
+      info->Set(vtkDataObject::DATA_OBJECT(), vtk::TakeSmartPointer(levels->NewInstance()));
     }
   }
   return result;
@@ -264,10 +263,46 @@ int vtkProgressiveMesh::RequestData(
     this->Sequences->Key = key.str();
   }
   this->Sequences->Levels.clear();
-  vtkPolyData* sequenceOutput = vtkPolyData::GetData(outputVector, 1);
-  sequenceOutput->Initialize();
-  this->Sequences->SequenceOutput = vtkCompositeDataSet::SafeDownCast(input) ? nullptr : sequenceOutput;
-  return this->Superclass::RequestData(request, inputVector, outputVector);
+  this->Sequences->Outputs.clear();
+  vtkDataObject* sequences = vtkDataObject::GetData(outputVector, 1);
+  sequences->Initialize();
+  const int result = this->Superclass::RequestData(request, inputVector, outputVector);
+  this->WriteSequences(vtkDataObject::GetData(outputVector, 0), sequences);
+  return result;
+}
+
+void vtkProgressiveMesh::WriteSequences(vtkDataObject* levels, vtkDataObject* sequences)
+{
+  // Each piece's whole sequence where port 0 has its level: the polydata itself, or the same
+  // place in a composite dataset of port 0's structure.
+  const Cache& cache = *this->Sequences;
+  const auto sequenceOf = [&cache](vtkDataObject* level) -> vtkPolyData* {
+    const auto found = std::find(cache.Outputs.begin(), cache.Outputs.end(), level);
+    const std::size_t i = static_cast<std::size_t>(found - cache.Outputs.begin());
+    return found != cache.Outputs.end() && i < cache.Wholes.size() ? cache.Wholes[i].Get() : nullptr;
+  };
+  auto* compositeLevels = vtkCompositeDataSet::SafeDownCast(levels);
+  auto* compositeSequences = vtkCompositeDataSet::SafeDownCast(sequences);
+  if (!compositeLevels || !compositeSequences)
+  {
+    vtkPolyData* whole = sequenceOf(levels);
+    if (whole && vtkPolyData::SafeDownCast(sequences))
+    {
+      sequences->ShallowCopy(whole);
+    }
+    return;
+  }
+  compositeSequences->CopyStructure(compositeLevels);
+  vtkSmartPointer<vtkCompositeDataIterator> leaf = vtk::TakeSmartPointer(compositeLevels->NewIterator());
+  for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
+  {
+    if (vtkPolyData* whole = sequenceOf(leaf->GetCurrentDataObject()))
+    {
+      vtkNew<vtkPolyData> copy;
+      copy->ShallowCopy(whole);
+      compositeSequences->SetDataSet(leaf, copy);
+    }
+  }
 }
 
 bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
@@ -335,6 +370,8 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
   // is not yet; a piece without a sequence (aborted, nothing asked for) the usual way.
   Cache& cache = *this->Sequences;
   const std::size_t i = this->PieceIndex;
+  cache.Outputs.resize(std::max(cache.Outputs.size(), i + 1), nullptr);
+  cache.Outputs[i] = output;
   const bool lean = i < cache.Levels.size() && cache.Levels[i] >= 0;
   if (i >= cache.Ready.size() || !cache.Ready[i] || (!lean && mesh.NumberOfPoints() == 0))
   {
@@ -365,16 +402,6 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
     output->GetPointData()->RemoveArray(name);
   }
   output->GetCellData()->RemoveArray(RemovedAtName);
-}
-
-void vtkProgressiveMesh::PieceDone(vtkPolyData*, const vtkSimplification::TriangleInput&)
-{
-  // Output port 1 shows the sequence of a single-surface input.
-  Cache& cache = *this->Sequences;
-  if (cache.SequenceOutput && this->PieceIndex == 0 && !cache.Wholes.empty() && cache.Wholes[0])
-  {
-    cache.SequenceOutput->ShallowCopy(cache.Wholes[0]);
-  }
 }
 
 void vtkProgressiveMesh::AddDeviation(vtkPolyData*, const vtkSimplification::TriangleInput&, vtkPolyData* output,

@@ -33,14 +33,15 @@
  * bound, the bound is on the quadric distance of the collapses (the RMS distance of a removed
  * point to the planes merged into it), the same measure as "MaximumError" in the field data.
  *
- * Output port 1 is the whole sequence as one vtkPolyData (single-surface inputs): every point in
- * collapse order (the last removed first) with its point data, point arrays "Parent" (the point
- * it collapses into, -1 for the base points) and "CollapseError", and the triangles ordered by
- * their cell array "RemovedAt" (the point whose collapse removes them, -1: none). Saved as .vtp
- * it can be read back: given such a polydata as input, the filter extracts levels from it
- * without rebuilding (arrays that do not form a sequence are rebuilt from, with a warning). It
- * is empty when the target asks for no triangle (TargetReduction 1, TargetTriangleCount 0),
- * which builds nothing.
+ * Output port 1 is the whole sequence as one vtkPolyData: every point in collapse order (the
+ * last removed first) with its point data, point arrays "Parent" (the point it collapses into,
+ * -1 for the base points) and "CollapseError", and the triangles ordered by their cell array
+ * "RemovedAt" (the point whose collapse removes them, -1: none). For a composite input it is a
+ * composite dataset of the input's structure with each surface block's sequence (other blocks
+ * empty). Saved as .vtp (.vtm) it can be read back: given such data as input, the filter
+ * extracts levels from it without rebuilding (arrays that do not form a sequence are rebuilt
+ * from, with a warning). It is empty when the target asks for no triangle (TargetReduction 1,
+ * TargetTriangleCount 0), which builds nothing.
  */
 #ifndef vtkProgressiveMesh_h
 #define vtkProgressiveMesh_h
@@ -89,7 +90,8 @@ public:
   /// How many times the sequence was built (not extracted from the cache) since construction.
   vtkGetMacro(NumberOfBuilds, int);
 
-  /// The whole sequence (output port 1).
+  /// The whole sequence (output port 1) of a single-surface input; for a composite input use
+  /// GetOutputDataObject(1).
   vtkPolyData* GetSequenceOutput();
 
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -102,9 +104,10 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
+  /// Port 1: each piece's whole sequence where port 0 has its level (see the class comment).
+  void WriteSequences(vtkDataObject* levels, vtkDataObject* sequences);
   void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
     const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output) override;
-  void PieceDone(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles) override;
   /// Output points are input points: their Deviation is 0 without a cell locator over the input,
   /// which would cost more than the level at every target change.
   void AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles, vtkPolyData* output,

@@ -9,8 +9,11 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkFieldData.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkPoints.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkXMLMultiBlockDataReader.h"
+#include "vtkXMLMultiBlockDataWriter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
@@ -288,6 +291,66 @@ void TestSequenceFile(vtkPolyData* cow)
 }
 }
 
+void TestCompositeSequences(vtkPolyData* cow)
+{
+  // A multiblock input: port 1 is a multiblock of the same structure with each surface block's
+  // sequence (a missing block stays missing); saved as .vtm and read back, it gives every
+  // block's level without a build.
+  vtkNew<vtkPolyData> shifted;
+  shifted->DeepCopy(cow);
+  for (vtkIdType i = 0; i < shifted->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    shifted->GetPoint(i, p);
+    p[0] += 2.0;
+    shifted->GetPoints()->SetPoint(i, p);
+  }
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(3);
+  blocks->SetBlock(0, cow);
+  blocks->SetBlock(1, nullptr);
+  blocks->SetBlock(2, shifted);
+  vtkNew<vtkProgressiveMesh> filter;
+  filter->SetInputData(blocks);
+  filter->SetTargetReduction(0.8);
+  filter->Update();
+  CHECK(filter->GetSequenceOutput() == nullptr); // a composite: GetOutputDataObject(1)
+  auto* sequences = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(1));
+  CHECK(sequences && sequences->GetNumberOfBlocks() == 3);
+  if (!sequences)
+  {
+    return;
+  }
+  for (const unsigned int b : { 0u, 2u })
+  {
+    auto* sequence = vtkPolyData::SafeDownCast(sequences->GetBlock(b));
+    CHECK(sequence && sequence->GetNumberOfPoints() == cow->GetNumberOfPoints() &&
+      sequence->GetNumberOfPolys() == cow->GetNumberOfPolys() && sequence->GetPointData()->GetArray("Parent") &&
+      sequence->GetCellData()->GetArray("RemovedAt"));
+  }
+  const std::string path = MESHSIMPLIFICATION_TEST_OUTPUT "/progressive_blocks.vtm";
+  vtkNew<vtkXMLMultiBlockDataWriter> writer;
+  writer->SetInputData(sequences);
+  writer->SetFileName(path.c_str());
+  CHECK(writer->Write() == 1);
+  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<vtkProgressiveMesh> fromFile;
+  fromFile->SetInputConnection(reader->GetOutputPort());
+  fromFile->SetTargetReduction(0.8);
+  fromFile->Update();
+  CHECK(fromFile->GetNumberOfBuilds() == 0 && filter->GetNumberOfBuilds() == 2);
+  auto* built = vtkMultiBlockDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  auto* read = vtkMultiBlockDataSet::SafeDownCast(fromFile->GetOutputDataObject(0));
+  for (const unsigned int b : { 0u, 2u })
+  {
+    auto* a = vtkPolyData::SafeDownCast(built ? built->GetBlock(b) : nullptr);
+    auto* c = vtkPolyData::SafeDownCast(read ? read->GetBlock(b) : nullptr);
+    CHECK(a && c && a->GetNumberOfPolys() == c->GetNumberOfPolys() &&
+      meshsimp_test::PointSet(a) == meshsimp_test::PointSet(c));
+  }
+}
+
 int TestProgressiveMesh(int, char*[])
 {
   vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
@@ -295,6 +358,7 @@ int TestProgressiveMesh(int, char*[])
   TestLevelsAsViews(cow);
   TestPointsAreInputPoints(cow);
   TestSequenceFile(cow);
+  TestCompositeSequences(cow);
   TestProgressAndAbort(cow);
   meshsimp_test::CheckPointLabels<vtkProgressiveMesh>(cow);
   meshsimp_test::CheckThreadIndependence(cow, [&](int threads) {

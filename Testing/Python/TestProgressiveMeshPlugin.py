@@ -5,7 +5,8 @@ Loads the built plugin, moves the Target Reduction slider 20 times on the cow an
 the sequence was built once (NumberOfBuilds) and that each level equals a fresh build at that
 level; a build property builds again; the second output (the sequence) written as .vtp and read
 back gives the same levels without a build; the target is animateable; a multiblock input is
-simplified block by block; the properties every filter shares behave as in the other filters.
+simplified block by block, its second output a multiblock of the sequences; the properties every
+filter shares behave as in the other filters.
 """
 import os
 
@@ -85,6 +86,12 @@ expected = round(5804 * 0.05) + round(68742 * 0.05)
 got = blocks.GetDataInformation().GetNumberOfCells()
 check(abs(got - expected) <= 2, "multiblock: %d cells for %d" % (got, expected))
 check("elevation" in blocks.PointData.keys(), "the terrain's elevation is carried")
+# Its second port holds every block's whole sequence, in a multiblock of the same structure.
+sequences = blocks.GetDataInformation(1)
+check(sequences.GetDataSetTypeAsString() == "vtkMultiBlockDataSet" and
+      sequences.GetNumberOfCells() == 5804 + 68742,
+      "multiblock: port 1 has both sequences (%s, %d cells)" % (sequences.GetDataSetTypeAsString(),
+                                                             sequences.GetNumberOfCells()))
 
 check_front_end(ProgressiveMesh, cow, 0.01)
 finish()
