@@ -25,7 +25,11 @@
  * Beyond the paper: a cluster that would lose all its triangles (a leg folded onto its
  * neighbours) is split first; a folded cluster that sticks out collapses to its tip, so thin
  * parts become cones instead of vanishing; and with a count target late cheap splits can be
- * undone to afford a split of far larger error.
+ * undone to afford a split of far larger error. Where the input is a surface, clustering makes
+ * no open or non-manifold edge it did not have (clusters that would tear it are split into
+ * pieces); where that takes the count over a count target (steep terrain, thin parts), quadric
+ * half-edge collapses of the clustered mesh under the link condition finish it (multiphase
+ * simplification, Garland and Shaffer): each collapsed point's clusters join a neighbour's.
  *
  * The cluster error (a distance) is the largest distance from the representative to the plane
  * of any input triangle touching the cluster and to its boundary planes; for a folded cluster

@@ -12,7 +12,6 @@
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -57,7 +56,7 @@ const char* const RemovedAtName = "RemovedAt";
 const char* const ErrorName = "CollapseError";
 
 /// The modification times of what a build and its output read in every leaf of the input: points,
-/// cells, point and cell arrays. Unlike the input's own time they survive shallow copies, such
+/// cells, point and cell arrays, and which arrays are the active normals. Unlike the input's own time they survive shallow copies, such
 /// as the one ParaView's vtkPVPostFilter makes of every filter's input at each update.
 std::string InputStamp(vtkDataObject* input)
 {
@@ -93,7 +92,8 @@ std::string InputStamp(vtkDataObject* input)
         vtkAbstractArray* array = arrays->GetAbstractArray(i);
         stamp << (array ? array->GetMTime() : 0) << ',';
       }
-      stamp << '|';
+      vtkDataArray* normals = arrays->GetNormals(); // which are recomputed (SetPrefixOutput)
+      stamp << (normals ? normals->GetName() ? normals->GetName() : "(unnamed)" : "(none)") << '|';
     }
     stamp << ';';
   };
@@ -354,7 +354,9 @@ bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const m
   }
   cache.Levels.resize(cache.Pieces.size(), -1);
   cache.Levels[i] = -1;
-  if (!HasNormals(this->PieceInput)) // else the level's normals are recomputed from its mesh
+  // Normals are recomputed from the level's own mesh: then it is extracted in full.
+  const bool normals = i < cache.Wholes.size() && cache.Wholes[i] ? HasNormals(cache.Wholes[i]) : HasNormals(this->PieceInput);
+  if (!normals)
   {
     cache.Levels[i] = LevelToWrite(sequence, common.Goal, result);
     return true;
@@ -393,7 +395,7 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
     whole->GetFieldData()->Initialize();
   }
   const std::int64_t points = lean ? cache.Levels[i] : mesh.NumberOfPoints();
-  vtkNew<vtkIdTypeArray> corners;
+  vtkNew<vtkCellArray::ArrayType64> corners;
   corners->SetNumberOfValues(3 * sequence.TrianglesAt(points));
   meshsimp::LevelCorners(sequence, points, corners->GetPointer(0));
   vtkSimplification::SetPrefixOutput(input, triangles, whole, points, corners, mesh, output);

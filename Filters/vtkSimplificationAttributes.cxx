@@ -262,8 +262,18 @@ void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const mesh
   AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
 }
 
-/// Held in a view's information: the array whose memory it shows, kept alive with the view.
-vtkInformationObjectBaseKey* const PrefixOwner = new vtkInformationObjectBaseKey("PrefixOwner", "vtkSimplification");
+/// Held in a view's information: the array whose memory it shows, kept alive with the view. A
+/// deep copy owns its values, so the key does not follow it (the whole would stay alive).
+class vtkPrefixOwnerKey : public vtkInformationObjectBaseKey
+{
+public:
+  vtkPrefixOwnerKey()
+    : vtkInformationObjectBaseKey("PrefixOwner", "vtkSimplification")
+  {
+  }
+  void DeepCopy(vtkInformation*, vtkInformation*) override {}
+};
+vtkInformationObjectBaseKey* const PrefixOwner = new vtkPrefixOwnerKey;
 
 /// The first tuples of an array: a view of its memory where that is contiguous (the view keeps
 /// it alive), else a copy; copied too when copy is set.
@@ -322,19 +332,22 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
 }
 
 void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole, vtkIdType points,
-  vtkIdTypeArray* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+  vtkCellArray::ArrayType64* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
   vtkNew<vtkPoints> prefix;
   prefix->SetData(vtkDataArray::SafeDownCast(Prefix(whole->GetPoints()->GetData(), points, false)));
   output->SetPoints(prefix);
+  // The offsets (0, 3, 6, ...) a view of the whole's, in the cell array's own 64-bit storage
+  // type, which SetData keeps as it is (other types it converts, and a view would lose its owner).
   const vtkIdType count = corners->GetNumberOfValues() / 3;
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  if (auto* wholeOffsets = vtkIdTypeArray::SafeDownCast(whole->GetPolys()->GetOffsetsArray()))
+  vtkSmartPointer<vtkCellArray::ArrayType64> offsets;
+  if (whole->GetPolys()->IsStorage64Bit())
   {
-    offsets = vtkIdTypeArray::SafeDownCast(Prefix(wholeOffsets, count + 1, false)); // 0, 3, 6, ...
+    offsets = vtkCellArray::ArrayType64::SafeDownCast(Prefix(whole->GetPolys()->GetOffsetsArray64(), count + 1, false));
   }
   else
   {
+    offsets = vtkSmartPointer<vtkCellArray::ArrayType64>::New();
     offsets->SetNumberOfValues(count + 1);
     for (vtkIdType i = 0; i <= count; ++i)
     {

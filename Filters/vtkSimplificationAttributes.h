@@ -22,9 +22,9 @@
 
 #include "Simplification.h"
 #include "vtkSimplificationInput.h"
+#include "vtkCellArray.h" // for vtkCellArray::ArrayType64
 
 class vtkPointData;
-class vtkIdTypeArray;
 class vtkPolyData;
 
 namespace vtkSimplification
@@ -41,12 +41,16 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
  * SetOutput (a progressive mesh's sequence, points and triangles in the order levels take them):
  * the points, the triangles' offsets and the point and cell arrays (the core's named arrays
  * among them, as the whole has them) are views of the first tuples of the whole's, not copies
- * (each view keeps the whole's array alive), so that a level costs its corners and not its
- * size; normal arrays, which are recomputed, are copied (mesh must then hold the level's points
- * and triangles). corners: the level's triangles, 3 per triangle. The rest as SetOutput.
+ * (each view keeps the whole's array alive through its information, and a deep copy of the
+ * level owns its values and lets it go), so that a level costs its corners and not its size;
+ * normal arrays, which are recomputed, are copied (mesh must then hold the level's points and
+ * triangles). corners: the level's triangles, 3 per triangle. The rest as SetOutput. As for
+ * any filter's output, writing into a level's arrays is not allowed: it would change the
+ * whole; and vtkDataArray::ShallowCopy of one shares its memory without keeping the whole
+ * alive (vtkDataSetAttributes' copies share the arrays themselves and do).
  */
 void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole, vtkIdType points,
-  vtkIdTypeArray* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
+  vtkCellArray::ArrayType64* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
 
 /// Every point array of inPD mapped to the mesh's output points by the rule above.
 void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkPointData* outPD);

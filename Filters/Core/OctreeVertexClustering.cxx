@@ -2137,7 +2137,7 @@ void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& su
   {
     ancestor[i] = i < level ? static_cast<std::int32_t>(i) : ancestor[sequence.Parent[i]];
   }
-  std::vector<std::int32_t> joinedTo(labelOf.size());
+  std::vector<std::int32_t> joinedTo(labelOf); // a point the build did not use stays as it is
   for (std::int64_t i = 0; i < sequence.NumberOfPoints(); ++i)
   {
     joinedTo[sequence.InputPoint[i]] = labelOf[sequence.InputPoint[ancestor[i]]];
@@ -2146,11 +2146,19 @@ void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& su
   {
     label = label >= 0 && pointOf[label] >= 0 ? joinedTo[pointOf[label]] : label;
   }
-  std::vector<std::int32_t> kept(sequence.InputTriangle.begin(), sequence.InputTriangle.begin() + sequence.TrianglesAt(level));
-  std::sort(kept.begin(), kept.end());
-  std::vector<Survivor> remaining(kept.size());
-  std::transform(kept.begin(), kept.end(), remaining.begin(), [&survivors](std::int32_t t) { return survivors[t]; });
-  survivors = std::move(remaining);
+  // The survivors the level's collapses removed go; the others stay, in their order.
+  std::vector<std::uint8_t> removed(survivors.size(), 0);
+  for (std::size_t t = static_cast<std::size_t>(sequence.TrianglesAt(level)); t < sequence.InputTriangle.size(); ++t)
+  {
+    removed[sequence.InputTriangle[t]] = 1;
+  }
+  std::size_t left = 0;
+  for (std::size_t t = 0; t < survivors.size(); ++t)
+  {
+    survivors[left] = survivors[t];
+    left += removed[t] ? 0 : 1;
+  }
+  survivors.resize(left);
 }
 
 std::vector<std::int32_t> Clusterer::JoinStrandedCaps(std::vector<std::int32_t> owner) const

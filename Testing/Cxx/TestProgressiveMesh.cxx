@@ -9,6 +9,9 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkFloatArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPoints.h"
 #include "vtkTestErrorObserver.h"
@@ -155,6 +158,10 @@ void TestLevelsAsViews(vtkPolyData* decorated)
   cow->DeepCopy(decorated);
   cow->GetPointData()->SetNormals(nullptr);
   cow->GetCellData()->SetNormals(nullptr);
+  vtkNew<vtkFloatArray> normals; // a plain array until made the active normals below
+  normals->DeepCopy(decorated->GetPointData()->GetNormals());
+  normals->SetName("MadeActive");
+  cow->GetPointData()->AddArray(normals);
   auto kept = vtkSmartPointer<vtkPolyData>::New(), expected = vtkSmartPointer<vtkPolyData>::New();
   {
     vtkNew<vtkProgressiveMesh> filter;
@@ -167,10 +174,16 @@ void TestLevelsAsViews(vtkPolyData* decorated)
       CHECK(SameMesh(filter->GetOutput(), fresh) && SameArrays(filter->GetOutput(), fresh));
     }
     CHECK(filter->GetNumberOfBuilds() == 1);
-    // Views: the level's points are the sequence's first ones, in the same memory.
-    CHECK(filter->GetOutput()->GetPoints()->GetVoidPointer(0) == filter->GetSequenceOutput()->GetPoints()->GetVoidPointer(0));
-    kept->ShallowCopy(filter->GetOutput());
-    expected->DeepCopy(filter->GetOutput());
+    // Views: the level's points and offsets are the sequence's first ones, in the same memory.
+    vtkPolyData* level = filter->GetOutput();
+    vtkPolyData* sequence = filter->GetSequenceOutput();
+    CHECK(level->GetPoints()->GetVoidPointer(0) == sequence->GetPoints()->GetVoidPointer(0));
+    CHECK(level->GetPolys()->IsStorage64Bit() && sequence->GetPolys()->IsStorage64Bit() &&
+      level->GetPolys()->GetOffsetsArray64()->GetPointer(0) == sequence->GetPolys()->GetOffsetsArray64()->GetPointer(0));
+    kept->ShallowCopy(level);
+    expected->DeepCopy(level);
+    // A deep copy owns its values: it does not keep the sequence alive.
+    CHECK(expected->GetPoints()->GetData()->GetInformation()->GetNumberOfKeys() == 0);
     filter->SetTargetReduction(1.0); // no triangle asked for: empty, not the last level
     filter->Update();
     CHECK(filter->GetOutput()->GetNumberOfPolys() == 0);
@@ -178,6 +191,14 @@ void TestLevelsAsViews(vtkPolyData* decorated)
     filter->SetCurvatureWeight(0.5); // a new build: the cached sequence goes
     filter->Update();
     CHECK(filter->GetNumberOfBuilds() == 2);
+    // An array made the active normals (nothing else changed) builds again, and the level's
+    // normals are recomputed (unit).
+    cow->GetPointData()->SetActiveNormals("MadeActive");
+    filter->Update();
+    vtkDataArray* recomputed = filter->GetOutput()->GetPointData()->GetNormals();
+    CHECK(filter->GetNumberOfBuilds() == 3 && recomputed &&
+      recomputed->GetNumberOfTuples() == filter->GetOutput()->GetNumberOfPoints() &&
+      std::abs(vtkMath::Norm(recomputed->GetTuple3(0)) - 1.0) < 1e-5);
   }
   CHECK(SameMesh(kept, expected) && SameArrays(kept, expected));
 }
