@@ -26,6 +26,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <sstream>
@@ -46,6 +47,10 @@ struct vtkProgressiveMesh::Cache
   std::vector<std::int64_t> Levels;
   /// Per piece of this update, the output WritePiece wrote (to place its sequence on port 1).
   std::vector<vtkPolyData*> Outputs;
+  /// Per piece, two buffers of the whole's corner count that levels' corners are views of: a
+  /// level is written into one that no level shows any more (reference count 1: the views hold
+  /// it), so a switch writes into memory already mapped instead of fresh pages.
+  std::vector<std::array<vtkSmartPointer<vtkCellArray::ArrayType64>, 2>> CornerBuffers;
 };
 
 namespace
@@ -173,6 +178,28 @@ std::string ReadSequence(vtkPolyData* input, const meshsimp::TriangleMeshView& m
 bool HasNormals(vtkPolyData* mesh)
 {
   return mesh->GetPointData()->GetNormals() || mesh->GetCellData()->GetNormals();
+}
+
+/// A buffer of the pool that no view holds (made, of size values, at its first use), else a new
+/// one outside the pool (both are shown, by this output and by a consumer of the last).
+vtkSmartPointer<vtkCellArray::ArrayType64> FreeBuffer(
+  std::array<vtkSmartPointer<vtkCellArray::ArrayType64>, 2>& pool, vtkIdType size)
+{
+  for (vtkSmartPointer<vtkCellArray::ArrayType64>& buffer : pool)
+  {
+    if (!buffer)
+    {
+      buffer = vtkSmartPointer<vtkCellArray::ArrayType64>::New();
+      buffer->SetNumberOfValues(size); // its pages are mapped as levels write them
+    }
+    if (buffer->GetReferenceCount() == 1)
+    {
+      return buffer;
+    }
+  }
+  auto spare = vtkSmartPointer<vtkCellArray::ArrayType64>::New();
+  spare->SetNumberOfValues(size);
+  return spare;
 }
 
 /// What the front end needs of a level that WritePiece writes from the whole sequence's mesh:
@@ -395,8 +422,10 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
     whole->GetFieldData()->Initialize();
   }
   const std::int64_t points = lean ? cache.Levels[i] : mesh.NumberOfPoints();
-  vtkNew<vtkCellArray::ArrayType64> corners;
-  corners->SetNumberOfValues(3 * sequence.TrianglesAt(points));
+  cache.CornerBuffers.resize(cache.Ready.size());
+  const vtkSmartPointer<vtkDataArray> view = vtkSimplification::PrefixView(
+    FreeBuffer(cache.CornerBuffers[i], static_cast<vtkIdType>(sequence.Triangles.size())), 3 * sequence.TrianglesAt(points));
+  auto* corners = vtkCellArray::ArrayType64::SafeDownCast(view);
   meshsimp::LevelCorners(sequence, points, corners->GetPointer(0));
   vtkSimplification::SetPrefixOutput(input, triangles, whole, points, corners, mesh, output);
   for (const char* name : { ParentName, ErrorName })

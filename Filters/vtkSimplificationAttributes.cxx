@@ -331,6 +331,11 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
   FinishOutput(input, triangles, mesh, true, output);
 }
 
+vtkSmartPointer<vtkDataArray> PrefixView(vtkDataArray* array, vtkIdType tuples)
+{
+  return vtkDataArray::SafeDownCast(Prefix(array, tuples, false));
+}
+
 void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPolyData* whole, vtkIdType points,
   vtkCellArray::ArrayType64* corners, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {

@@ -22,8 +22,10 @@
 
 #include "Simplification.h"
 #include "vtkSimplificationInput.h"
+#include "vtkSmartPointer.h" // for PrefixView
 #include "vtkCellArray.h" // for vtkCellArray::ArrayType64
 
+class vtkDataArray;
 class vtkPointData;
 class vtkPolyData;
 
@@ -36,6 +38,9 @@ namespace vtkSimplification
 void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
   int outputPointsPrecision, vtkPolyData* output);
 
+/// A view of the first tuples of array (no copy), which keeps array alive (see SetPrefixOutput).
+vtkSmartPointer<vtkDataArray> PrefixView(vtkDataArray* array, vtkIdType tuples);
+
 /**
  * The output of a level whose points and triangles are the first ones of a whole mesh made by
  * SetOutput (a progressive mesh's sequence, points and triangles in the order levels take them):
@@ -44,7 +49,8 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
  * (each view keeps the whole's array alive through its information, and a deep copy of the
  * level owns its values and lets it go), so that a level costs its corners and not its size;
  * normal arrays, which are recomputed, are copied (mesh must then hold the level's points and
- * triangles). corners: the level's triangles, 3 per triangle. The rest as SetOutput. As for
+ * triangles). corners: the level's triangles, 3 per triangle (Progressive Mesh writes them
+ * into a view of a reused buffer, see vtkProgressiveMesh.cxx). The rest as SetOutput. As for
  * any filter's output, writing into a level's arrays is not allowed: it would change the
  * whole; and vtkDataArray::ShallowCopy of one shares its memory without keeping the whole
  * alive (vtkDataSetAttributes' copies share the arrays themselves and do).
