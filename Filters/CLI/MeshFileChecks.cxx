@@ -1745,8 +1745,8 @@ std::string CheckPLY(const std::string& path)
   }
   else if (problem.empty())
   {
-    const std::uintmax_t start = static_cast<std::uintmax_t>(in.tellg());
-    problem = ply::CheckBinaryBody(in, header, FileSize(path) - start);
+    const std::streamoff start = in.tellg(); // -1 when the header ends the file without a newline
+    problem = ply::CheckBinaryBody(in, header, start < 0 ? 0 : FileSize(path) - static_cast<std::uintmax_t>(start));
   }
   return problem;
 }

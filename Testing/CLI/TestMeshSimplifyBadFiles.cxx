@@ -296,6 +296,7 @@ std::vector<Case> DamagedFiles()
         std::string(16, '\0') },
     { "truncated_in_faces.ply", binary.substr(0, binary.size() - 7) },
     { "large_face_index_beyond.ply", LargeBinaryPLY(60, 61 * 61) },
+    { "header_ends_the_file.ply", binary.substr(0, binary.find("end_header") + 10) },
     { "large_truncated.ply", LargeBinaryPLY(60, -1).substr(0, 100000) },
     { "truncated_in_vertices.ply", binary.substr(0, binary.find("end_header") + 20) },
     { "face_index_beyond.ply", ply.substr(0, ply.rfind("3 1 2 3")) + "3 1 2 9\n" },
