@@ -56,15 +56,16 @@ public:
 
 private:
   void Prepare(PreparedMesh& prepared);
-  void BuildQuadrics();
+  void BuildFaceQuadrics();
+  void AddBorderPlanes(std::int32_t v);
   void MeasureScales();
   template <class Visit>
   void ForEachTriangle(std::int32_t v, Visit&& visit);
   void GatherRing(std::int32_t x);
-  bool Allowed(std::int32_t x, const RingEntry& entry) const;
+  Refusal RingCheck(std::int32_t x, const RingEntry& entry) const;
   double Curvature(std::int32_t x, const RingEntry& entry) const;
   double Cost(std::int32_t x, const RingEntry& entry) const;
-  void Measure(std::int32_t x);
+  void Measure(std::int32_t x, bool gathered = false);
   bool WouldRepeatTriangle(std::int32_t y, const std::int32_t opposite[2]);
   Refusal Check(std::int32_t x, const RingEntry& entry);
   bool CollapseTop();
@@ -136,10 +137,14 @@ bool ProgressiveBuilder::Run(const TriangleMeshView& input, ProgressiveMesh& seq
   {
     return false;
   }
+  // One ring per vertex: its border planes (which complete its quadric, those of smaller
+  // neighbours being in already), then its key.
   const std::int32_t n = static_cast<std::int32_t>(this->P.size());
   for (std::int32_t x = 0; x < n; ++x)
   {
-    this->Measure(x);
+    this->GatherRing(x);
+    this->AddBorderPlanes(x);
+    this->Measure(x, true);
   }
   const std::size_t reportEvery = std::max<std::size_t>(1024, this->P.size() / 64);
   while (this->LiveTriangles > this->Options.StopTriangles && this->CollapseTop())
@@ -205,7 +210,7 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   }
   this->Stamp.assign(n, 0);
   this->Slot.assign(n, 0);
-  this->BuildQuadrics();
+  this->BuildFaceQuadrics();
   this->MeasureScales();
   this->Heap.Reset(static_cast<std::int32_t>(n));
   for (auto* record : { &this->Removed, &this->Into })
@@ -223,11 +228,10 @@ void ProgressiveBuilder::UpdateNormal(std::int32_t t)
   this->Normals[t] = length > 0.0 ? Eigen::Vector3f((normal / length).cast<float>()) : Eigen::Vector3f::Zero();
 }
 
-void ProgressiveBuilder::BuildQuadrics()
+void ProgressiveBuilder::BuildFaceQuadrics()
 {
-  // Garland-Heckbert: each triangle's plane weighted by its area at its corners, and at an open
-  // border the plane through the edge perpendicular to the triangle, weighted by the squared
-  // edge length, so that borders keep their shape.
+  // Garland-Heckbert: each triangle's plane weighted by its area at its corners (the planes along
+  // open borders follow in AddBorderPlanes).
   this->Quadrics.assign(this->P.size(), Quadric());
   this->Weights.assign(this->P.size(), 0.0);
   for (std::size_t t = 0; t < this->Normals.size(); ++t)
@@ -243,28 +247,31 @@ void ProgressiveBuilder::BuildQuadrics()
       this->Weights[c[k]] += area;
     }
   }
-  for (std::int32_t v = 0; v < static_cast<std::int32_t>(this->P.size()); ++v)
+}
+
+void ProgressiveBuilder::AddBorderPlanes(std::int32_t v)
+{
+  // At each open border edge (v, w) with w > v (v's ring gathered): the plane through the edge
+  // perpendicular to its triangle, weighted by the squared edge length, at both ends, so that
+  // borders keep their shape.
+  for (const RingEntry& entry : this->Ring)
   {
-    this->GatherRing(v);
-    for (const RingEntry& entry : this->Ring)
+    const std::int32_t w = entry.Vertex;
+    if (entry.Count != 1 || w < v)
     {
-      const std::int32_t w = entry.Vertex;
-      if (entry.Count != 1 || w < v)
-      {
-        continue; // not a border edge, or seen from its other end
-      }
-      const Eigen::Vector3d edge = this->P[w] - this->P[v];
-      const Eigen::Vector3d side = edge.cross(this->Normals[entry.Triangles[0]].cast<double>());
-      const double length = side.norm();
-      if (!(length > 0.0))
-      {
-        continue;
-      }
-      const Eigen::Vector3d m = side / length;
-      const Quadric plane = Quadric::FromPlane(m, -m.dot(this->P[v]), edge.squaredNorm());
-      this->Quadrics[v] += plane;
-      this->Quadrics[w] += plane;
+      continue; // not a border edge, or added from its other end
     }
+    const Eigen::Vector3d edge = this->P[w] - this->P[v];
+    const Eigen::Vector3d side = edge.cross(this->Normals[entry.Triangles[0]].cast<double>());
+    const double length = side.norm();
+    if (!(length > 0.0))
+    {
+      continue;
+    }
+    const Eigen::Vector3d m = side / length;
+    const Quadric plane = Quadric::FromPlane(m, -m.dot(this->P[v]), edge.squaredNorm());
+    this->Quadrics[v] += plane;
+    this->Quadrics[w] += plane;
   }
 }
 
@@ -324,13 +331,20 @@ void ProgressiveBuilder::GatherRing(std::int32_t x)
   }
 }
 
-bool ProgressiveBuilder::Allowed(std::int32_t x, const RingEntry& entry) const
+Refusal ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) const
 {
-  // The first three checks, which need nothing but the ring: the kind table, the regions, and
-  // a border vertex only along its border.
+  // The first three checks, which need nothing but the ring (so every candidate is filtered by
+  // them before it is costed): the kind table, the regions, a border vertex only along its border.
   const std::int32_t y = entry.Vertex;
-  return KindAllows[this->Kinds[x]][this->Kinds[y]] && (this->Regions.empty() || this->Regions[x] == this->Regions[y]) &&
-    (this->Kinds[x] != Border || entry.Count == 1);
+  if (!KindAllows[this->Kinds[x]][this->Kinds[y]])
+  {
+    return Refusal::Kind;
+  }
+  if (!this->Regions.empty() && this->Regions[x] != this->Regions[y])
+  {
+    return Refusal::Region;
+  }
+  return this->Kinds[x] == Border && entry.Count != 1 ? Refusal::AcrossBorder : Refusal::None;
 }
 
 double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) const
@@ -375,16 +389,19 @@ double ProgressiveBuilder::Cost(std::int32_t x, const RingEntry& entry) const
   return std::isfinite(cost) ? cost : std::numeric_limits<double>::max();
 }
 
-void ProgressiveBuilder::Measure(std::int32_t x)
+void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
 {
   // Step 2: the vertex's cost is its cheapest allowed edge's; fixed vertices never queue.
   double best = std::numeric_limits<double>::infinity();
   if (this->Kinds[x] != Fixed && this->Triangles[x] > 0)
   {
-    this->GatherRing(x);
+    if (!gathered)
+    {
+      this->GatherRing(x);
+    }
     for (const RingEntry& entry : this->Ring)
     {
-      if (this->Allowed(x, entry))
+      if (this->RingCheck(x, entry) == Refusal::None)
       {
         best = std::min(best, this->Cost(x, entry));
       }
@@ -431,20 +448,9 @@ bool ProgressiveBuilder::WouldRepeatTriangle(std::int32_t y, const std::int32_t 
 
 Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
 {
-  // The ordered checks; the ring of x is gathered. Returns the first that fails.
+  // The checks after RingCheck's, in order, for an edge that passed those; the ring of x is
+  // gathered. Returns the first that fails.
   const std::int32_t y = entry.Vertex;
-  if (!KindAllows[this->Kinds[x]][this->Kinds[y]])
-  {
-    return Refusal::Kind;
-  }
-  if (!this->Regions.empty() && this->Regions[x] != this->Regions[y])
-  {
-    return Refusal::Region;
-  }
-  if (this->Kinds[x] == Border && entry.Count != 1)
-  {
-    return Refusal::AcrossBorder;
-  }
   std::int32_t opposite[2] = { -1, -1 };
   for (std::int32_t i = 0; i < entry.Count; ++i)
   {
@@ -510,7 +516,7 @@ bool ProgressiveBuilder::CollapseTop()
     order.clear();
     for (const RingEntry& entry : this->Ring)
     {
-      if (this->Allowed(x, entry))
+      if (this->RingCheck(x, entry) == Refusal::None)
       {
         order.emplace_back(this->Cost(x, entry), entry.Vertex);
       }
