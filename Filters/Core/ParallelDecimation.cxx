@@ -814,14 +814,10 @@ void Decimator::InitializeQuadric(std::int32_t v, const Workspace& work)
     {
       continue;
     }
-    const Vec3& cross = work.Star[e.After >= 0 ? e.After : e.Before].Cross;
-    const Vec3 edge = this->Mesh.Point(e.W) - p;
-    const Vec3 side = edge.cross(cross);
-    const double length = side.norm();
-    if (length > 0.0)
+    Quadric plane;
+    if (Quadric::FromBorderEdge(p, this->Mesh.Point(e.W), work.Star[e.After >= 0 ? e.After : e.Before].Cross, plane))
     {
-      const Vec3 normal = side / length;
-      q += Quadric::FromPlane(normal, -normal.dot(p), edge.squaredNorm());
+      q += plane;
     }
   }
 }

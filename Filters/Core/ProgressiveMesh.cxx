@@ -251,9 +251,8 @@ void ProgressiveBuilder::BuildFaceQuadrics()
 
 void ProgressiveBuilder::AddBorderPlanes(std::int32_t v)
 {
-  // At each open border edge (v, w) with w > v (v's ring gathered): the plane through the edge
-  // perpendicular to its triangle, weighted by the squared edge length, at both ends, so that
-  // borders keep their shape.
+  // At each open border edge (v, w) with w > v (v's ring gathered), its border plane
+  // (Quadric::FromBorderEdge) at both ends, so that borders keep their shape.
   for (const RingEntry& entry : this->Ring)
   {
     const std::int32_t w = entry.Vertex;
@@ -261,17 +260,12 @@ void ProgressiveBuilder::AddBorderPlanes(std::int32_t v)
     {
       continue; // not a border edge, or added from its other end
     }
-    const Eigen::Vector3d edge = this->P[w] - this->P[v];
-    const Eigen::Vector3d side = edge.cross(this->Normals[entry.Triangles[0]].cast<double>());
-    const double length = side.norm();
-    if (!(length > 0.0))
+    Quadric plane;
+    if (Quadric::FromBorderEdge(this->P[v], this->P[w], this->Normals[entry.Triangles[0]].cast<double>(), plane))
     {
-      continue;
+      this->Quadrics[v] += plane;
+      this->Quadrics[w] += plane;
     }
-    const Eigen::Vector3d m = side / length;
-    const Quadric plane = Quadric::FromPlane(m, -m.dot(this->P[v]), edge.squaredNorm());
-    this->Quadrics[v] += plane;
-    this->Quadrics[w] += plane;
   }
 }
 

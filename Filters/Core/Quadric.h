@@ -41,6 +41,25 @@ struct Quadric
     return q;
   }
 
+  /// Garland and Heckbert's border constraint at an open border edge from a to b: the plane
+  /// through the edge perpendicular to its triangle (faceNormal, of any length), weighted by the
+  /// squared edge length so that it scales like area-weighted face planes. False, and plane
+  /// untouched, where the edge is degenerate or along the normal.
+  static bool FromBorderEdge(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& faceNormal,
+    Quadric& plane)
+  {
+    const Eigen::Vector3d edge = b - a;
+    const Eigen::Vector3d side = edge.cross(faceNormal);
+    const double length = side.norm();
+    if (!(length > 0.0))
+    {
+      return false;
+    }
+    const Eigen::Vector3d n = side / length;
+    plane = FromPlane(n, -n.dot(a), edge.squaredNorm());
+    return true;
+  }
+
   /// Adds the 3x3 part w · n nᵀ of a plane with unit normal n (eq. 7) when every plane of the
   /// quadric passes through one point: ThroughPoint then gives b and c. Half the work of FromPlane.
   void AddNormal(const Eigen::Vector3d& n, double w)
