@@ -181,7 +181,7 @@ bool HasNormals(vtkPolyData* mesh)
 }
 
 /// A buffer of the pool that no view holds (made, of size values, at its first use), else a new
-/// one outside the pool (both are shown, by this output and by a consumer of the last).
+/// one outside the pool (both are still shown, by levels consumers hold).
 vtkSmartPointer<vtkCellArray::ArrayType64> FreeBuffer(
   std::array<vtkSmartPointer<vtkCellArray::ArrayType64>, 2>& pool, vtkIdType size)
 {

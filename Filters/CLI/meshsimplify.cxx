@@ -146,7 +146,7 @@ struct Arguments
   bool RelativeError = false, Json = false;
   int Threads = 0, Repeat = 1;
   std::vector<std::pair<std::string, double>> Settings;
-  std::vector<std::string> Levels; // --levels, as typed (they name the files)
+  std::vector<std::pair<std::string, double>> Levels; // --levels: as typed (they name the files), and parsed
 };
 
 /// An option's effect on the arguments; false for an unknown option.
@@ -173,8 +173,8 @@ bool ParseOption(const std::string& arg, const std::function<std::string()>& val
     std::string list = value() + ",";
     for (std::size_t comma = list.find(','); comma != std::string::npos; comma = list.find(','))
     {
-      a.Levels.push_back(list.substr(0, comma));
-      ParseNumber(arg, a.Levels.back());
+      const std::string level = list.substr(0, comma);
+      a.Levels.emplace_back(level, ParseNumber(arg, level));
       list.erase(0, comma + 1);
     }
   }
@@ -421,12 +421,11 @@ void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
 void RunLevels(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilter* filter)
 {
   filter->SetTargetModeToReduction();
-  filter->SetTargetReduction(ParseNumber("--levels", a.Levels.front()));
+  filter->SetTargetReduction(a.Levels.front().second);
   const double build = RunRepeated(filter, 1, a.Input);
   std::string levels;
-  for (const std::string& level : a.Levels)
+  for (const auto& [level, reduction] : a.Levels)
   {
-    const double reduction = ParseNumber("--levels", level);
     filter->SetTargetReduction(reduction);
     const double extract = RunRepeated(filter, 1, a.Input, false); // the cached sequence serves
     std::string path = a.Output;
