@@ -16,8 +16,8 @@
  * - the new vertex minimises that error where it is well determined, else it is the
  *   area-weighted blend of the three corners (eq. 8) — along a crease, the blend moved onto the
  *   crease;
- * - a triangle of high Gauss curvature (a corner, a tip: FeatureCurvature, eq. 6–7) collapses
- *   onto its corner of largest curvature instead;
+ * - with FeatureCurvature (off by default, see there), a triangle of high Gauss curvature (a
+ *   corner, a tip: eq. 6–7) collapses onto its corner of largest curvature instead;
  * - on open meshes a triangle with one boundary vertex collapses onto it, one with two onto the
  *   best point of the segment between them; sharp boundary corners never move, and
  *   PreserveBoundary keeps the whole boundary in place;
@@ -71,9 +71,12 @@ public:
   /**
    * Gauss-curvature threshold of strong features (eq. 6–7), dimensionless: a triangle's
    * curvature times the current mean triangle area. A cube's corner scores about 0.1 (its face
-   * planes keep it anyway). Default 0.3, so that only sharper spikes count: at 0.05 the
-   * curvature noise of scanned meshes snaps many collapses onto vertices, and over the
-   * benchmark the mean distance grows by about 15 %. 0 turns the rule off.
+   * planes keep it anyway). Default 0: the rule is off. Over the benchmark corpus it costs more
+   * than it keeps: at 0.3 the mean distance is 1.06x vtkQuadricDecimation's against 0.97x
+   * without it, because the sliver fans of CAD and building models score as spikes (their
+   * corners' areas are tiny) and snap collapses across thin slabs; it does keep a subdivided
+   * cow's horn tips (Hausdorff 0.043 % against 0.075 % of the diagonal at 70 %). 0.3 keeps only
+   * sharper spikes than a cube's corner.
    */
   vtkSetClampMacro(FeatureCurvature, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FeatureCurvature, double);
