@@ -225,8 +225,10 @@ private:
   std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
   std::vector<Quadric> InputPlanes;      // the input planes merged into each vertex, by area
   double SurfaceScale = 0.0;             // SurfaceErrorWeight · (mean input triangle area)²
-  std::vector<double> Angles;            // the corner angles of each triangle
   std::vector<double> VertexError;       // squared-volume error accumulated at each vertex
+  // Only for the feature rule (FeatureCurvature > 0), else empty: nothing else reads them.
+  bool TracksCurvature = false;
+  std::vector<double> Angles;            // the corner angles of each triangle
   std::vector<double> Deficit;           // angle deficit of each vertex (eq. 6)
   std::vector<double> VertexArea;        // area of its adjacent triangles, A_v
   std::vector<std::uint8_t> Moved;       // a collapse gave the vertex a new position
@@ -270,6 +272,10 @@ void VolumeCollapser::UpdateGeometry(std::int32_t t)
   const double length = cross.norm();
   this->Normals[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
   this->Areas[t] = 0.5 * length;
+  if (!this->TracksCurvature)
+  {
+    return;
+  }
   // Two corner angles measured, the third from their sum: atan2 of |e1 × e2| = 2S and e1 · e2.
   double* angles = this->Angles.data() + 3 * static_cast<std::size_t>(t);
   angles[0] = std::atan2(length, (*p[1] - *p[0]).dot(*p[2] - *p[0]));
@@ -297,14 +303,20 @@ void VolumeCollapser::UpdateVertex(std::int32_t v)
   double angles = 0.0, area = 0.0;
   Quadric sum;
   this->Mesh.ForEachTriangle(v, [&](std::int32_t t) {
-    const std::int32_t* tri = this->Mesh.Triangle(t);
-    angles += this->Angles[3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
+    if (this->TracksCurvature)
+    {
+      const std::int32_t* tri = this->Mesh.Triangle(t);
+      angles += this->Angles[3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
+    }
     area += this->Areas[t];
     sum += this->TriangleQuadrics[t];
   });
   this->VertexQuadrics[v] = sum;
-  // Eq. (6): 2π minus the angles around an interior vertex, π around a boundary one.
-  this->Deficit[v] = (this->Mesh.OnBoundary(v) ? Pi : 2.0 * Pi) - angles;
+  if (this->TracksCurvature)
+  {
+    // Eq. (6): 2π minus the angles around an interior vertex, π around a boundary one.
+    this->Deficit[v] = (this->Mesh.OnBoundary(v) ? Pi : 2.0 * Pi) - angles;
+  }
   this->VertexArea[v] = area;
 }
 
@@ -341,7 +353,10 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
         {
           this->VertexQuadrics[c] -= this->TriangleQuadrics[t];
         }
-        this->Deficit[c] -= sign * this->Angles[3 * t + k];
+        if (this->TracksCurvature)
+        {
+          this->Deficit[c] -= sign * this->Angles[3 * t + k];
+        }
         this->VertexArea[c] += sign * this->Areas[t];
       }
     });
@@ -1000,12 +1015,13 @@ void VolumeCollapser::MeasureAll()
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   this->Normals.resize(m);
   this->Areas.resize(m);
-  this->Angles.resize(3 * static_cast<std::size_t>(m));
+  this->TracksCurvature = this->Options.FeatureCurvature > 0.0;
+  this->Angles.resize(this->TracksCurvature ? 3 * static_cast<std::size_t>(m) : 0);
   this->TriangleQuadrics.resize(m);
   this->VertexQuadrics.resize(n);
   this->VertexError.assign(n, 0.0);
   this->Moved.assign(n, 0);
-  this->Deficit.resize(n);
+  this->Deficit.resize(this->TracksCurvature ? n : 0);
   this->VertexArea.resize(n);
   this->VertexMarks.assign(n, 0);
   this->BatchLimit =
