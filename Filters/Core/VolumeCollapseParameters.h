@@ -27,8 +27,8 @@ struct VolumeCollapseParameters
   /// triangle's error (beyond the paper; off gives the paper's triangle collapses only).
   bool EdgeCollapses = true;
   /// Weight of the surface term of the heap key (beyond the paper; 0 gives the paper's order):
-  /// the new point's area-weighted squared distance to the input planes merged into the
-  /// collapsing vertices, times the squared mean input triangle area.
+  /// the new point's squared distance to the input planes (faces by area, open-border edges by
+  /// length²) merged into the collapsing vertices, times the squared mean input triangle area.
   double SurfaceErrorWeight = 3000.0;
   bool UseShapeFactor = false; // off by default: it makes slivers cheap, and creases go first
   bool UseNormalFactor = true;

@@ -113,6 +113,7 @@ private:
   /// SurfaceErrorWeight's term of the heap key: the new point's weighted squared distance to
   /// the input planes merged into the plan's vertices.
   double SurfaceError(const CollapsePlan& plan) const;
+  void AddBorderPlanes(std::int32_t t);
   /// The triangles across t's edges (edge k from corner k to the next): their summed quadrics
   /// and how many there are.
   struct EdgeNeighbours
@@ -1061,7 +1062,8 @@ void VolumeCollapser::MeasureAll()
 void VolumeCollapser::GatherInputPlanes()
 {
   // Garland–Heckbert quadrics: each vertex starts with the planes of its input triangles,
-  // weighted by area. The mean area squared gives the term the volume error's units (length⁸).
+  // weighted by area, and those of its border edges. The mean area squared gives the term the
+  // volume error's units (length⁸).
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   const double meanArea = this->TotalArea / static_cast<double>(std::max<std::int32_t>(1, m));
   this->SurfaceScale = this->Options.SurfaceErrorWeight * meanArea * meanArea;
@@ -1077,6 +1079,31 @@ void VolumeCollapser::GatherInputPlanes()
       {
         this->InputPlanes[tri[k]] += plane;
       }
+      this->AddBorderPlanes(t);
+    }
+  }
+}
+
+void VolumeCollapser::AddBorderPlanes(std::int32_t t)
+{
+  // Along an open border, the plane through each border edge perpendicular to its triangle,
+  // weighted by the squared edge length: in-plane moves of the border (a hole's rim cut by a
+  // chord) sweep no volume, and the face planes do not see them either.
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  for (int k = 0; k < 3; ++k)
+  {
+    const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
+    if (!this->Mesh.OnBoundary(a) || !this->Mesh.OnBoundary(b))
+    {
+      continue;
+    }
+    int sharing = 0;
+    this->Mesh.ForEachTriangleOnEdge(a, b, [&sharing](std::int32_t) { ++sharing; });
+    Quadric border;
+    if (sharing == 1 && Quadric::FromBorderEdge(this->Mesh.Point(a), this->Mesh.Point(b), this->Normals[t], border))
+    {
+      this->InputPlanes[a] += border;
+      this->InputPlanes[b] += border;
     }
   }
 }

