@@ -113,6 +113,7 @@ private:
   /// SurfaceErrorWeight's term of the heap key: the new point's weighted squared distance to
   /// the input planes merged into the plan's vertices.
   double SurfaceError(const CollapsePlan& plan) const;
+  /// Adds the planes of t's open-border edges to their ends' InputPlanes.
   void AddBorderPlanes(std::int32_t t);
   /// The triangles across t's edges (edge k from corner k to the next): their summed quadrics
   /// and how many there are.
@@ -224,7 +225,7 @@ private:
   std::vector<double> Areas;
   std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
   std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
-  std::vector<Quadric> InputPlanes;      // the input planes merged into each vertex, by area
+  std::vector<Quadric> InputPlanes;      // input planes merged into each vertex (faces, borders)
   double SurfaceScale = 0.0;             // SurfaceErrorWeight · (mean input triangle area)²
   std::vector<double> VertexError;       // squared-volume error accumulated at each vertex
   // Only for the feature rule (FeatureCurvature > 0), else empty: nothing else reads them.
