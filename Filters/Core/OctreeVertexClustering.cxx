@@ -2131,16 +2131,14 @@ void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& su
   Target goal;
   goal.SetTriangleCount(target);
   const std::int64_t level = LevelFor(sequence, goal, outcome);
-  // Each removed point's first ancestor in the level (parents have smaller indices).
-  std::vector<std::int32_t> ancestor(sequence.NumberOfPoints());
-  for (std::int64_t i = 0; i < sequence.NumberOfPoints(); ++i)
-  {
-    ancestor[i] = i < level ? static_cast<std::int32_t>(i) : ancestor[sequence.Parent[i]];
-  }
+  // Each point joins its first ancestor in the level.
+  const std::vector<std::int32_t> ancestor = LevelAncestors(sequence, level);
+  const std::int64_t kept = sequence.NumberOfPoints() - static_cast<std::int64_t>(ancestor.size());
   std::vector<std::int32_t> joinedTo(labelOf); // a point the build did not use stays as it is
   for (std::int64_t i = 0; i < sequence.NumberOfPoints(); ++i)
   {
-    joinedTo[sequence.InputPoint[i]] = labelOf[sequence.InputPoint[ancestor[i]]];
+    const std::int64_t survivor = i < kept ? i : ancestor[i - kept];
+    joinedTo[sequence.InputPoint[i]] = labelOf[sequence.InputPoint[survivor]];
   }
   for (std::int32_t& label : owner)
   {
