@@ -2,9 +2,12 @@
 """The filters on the broad corpus: per class of input, geometric means of ours / peer, and
 whether each target holds (also in the worst class and the worst case).
 
-  /usr/bin/python3 Testing/Benchmark/corpus_table.py --kit ../shared/bench \\
-      --corpus ../shared/data/corpus --cli build/bin/meshsimplify --workdir /tmp/corpus \\
+  /usr/bin/python3 Testing/Benchmark/corpus_table.py --kit KIT --corpus CORPUS \\
+      --cli build/bin/meshsimplify --workdir /tmp/corpus \\
       [--filters octree,volume,parallel,progressive] [--repeat 3] [--meshes REGEX] [--no-run] [--out table.md]
+
+KIT is the benchmark kit's folder (run_corpus.py, compare.py, its built metro and peers) and
+CORPUS a folder of meshes with the kit's manifest.json (the kit's corpus.py writes one).
 
 Each filter runs through the kit's run_corpus.py (compare.py and metro on every corpus mesh)
 against the peer and at the reductions of its targets:
