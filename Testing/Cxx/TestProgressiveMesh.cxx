@@ -14,6 +14,7 @@
 #include "vtkFloatArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkXMLMultiBlockDataReader.h"
 #include "vtkXMLMultiBlockDataWriter.h"
@@ -292,6 +293,19 @@ void TestProgressAndAbort(vtkPolyData* cow)
   CHECK(log.Values.size() >= 5 && std::is_sorted(log.Values.begin(), log.Values.end()) && log.Values.back() == 1.0);
 }
 
+/// data written to path by a Writer, and a Reader of that file (not yet updated).
+template <class Writer, class Reader>
+vtkSmartPointer<Reader> WrittenAndRead(vtkDataObject* data, const std::string& path)
+{
+  vtkNew<Writer> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  CHECK(writer->Write() == 1);
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  return reader;
+}
+
 void TestSequenceFile(vtkPolyData* cow)
 {
   // Output port 1 saved as .vtp and read back gives every level without a build.
@@ -302,13 +316,8 @@ void TestSequenceFile(vtkPolyData* cow)
   CHECK(sequence->GetNumberOfPoints() == cow->GetNumberOfPoints());
   CHECK(sequence->GetNumberOfPolys() == cow->GetNumberOfPolys());
   CHECK(sequence->GetPointData()->GetArray("Parent") && sequence->GetCellData()->GetArray("RemovedAt"));
-  const std::string path = MESHSIMPLIFICATION_TEST_OUTPUT "/progressive_cow.vtp";
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputData(sequence);
-  writer->SetFileName(path.c_str());
-  CHECK(writer->Write() == 1);
-  vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(path.c_str());
+  auto reader = WrittenAndRead<vtkXMLPolyDataWriter, vtkXMLPolyDataReader>(
+    sequence, MESHSIMPLIFICATION_TEST_OUTPUT "/progressive_cow.vtp");
   vtkNew<vtkProgressiveMesh> fromFile;
   fromFile->SetInputConnection(reader->GetOutputPort());
   for (const double reduction : { 0.6, 0.95 })
@@ -364,13 +373,8 @@ void TestCompositeSequences(vtkPolyData* cow)
       sequence->GetNumberOfPolys() == cow->GetNumberOfPolys() && sequence->GetPointData()->GetArray("Parent") &&
       sequence->GetCellData()->GetArray("RemovedAt"));
   }
-  const std::string path = MESHSIMPLIFICATION_TEST_OUTPUT "/progressive_blocks.vtm";
-  vtkNew<vtkXMLMultiBlockDataWriter> writer;
-  writer->SetInputData(sequences);
-  writer->SetFileName(path.c_str());
-  CHECK(writer->Write() == 1);
-  vtkNew<vtkXMLMultiBlockDataReader> reader;
-  reader->SetFileName(path.c_str());
+  auto reader = WrittenAndRead<vtkXMLMultiBlockDataWriter, vtkXMLMultiBlockDataReader>(
+    sequences, MESHSIMPLIFICATION_TEST_OUTPUT "/progressive_blocks.vtm");
   vtkNew<vtkProgressiveMesh> fromFile;
   fromFile->SetInputConnection(reader->GetOutputPort());
   fromFile->SetTargetReduction(0.8);
