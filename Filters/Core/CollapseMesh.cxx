@@ -11,60 +11,50 @@
 namespace meshsimp
 {
 
-VertexClass ClassifyFan(const Corner* first, const Corner* last, std::int32_t& fanFirst,
-  std::int32_t& fanLast, FanLookup& byNext, FanLookup& byPrevious)
+VertexClass ClassifyFan(
+  const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast, FanWorkspace& work)
 {
   const std::int32_t degree = static_cast<std::int32_t>(last - first);
-  const auto nextAt = [first](std::int32_t i) { return first[i].Next; };
   const auto previousAt = [first](std::int32_t i) { return first[i].Previous; };
-  byNext.Reset(degree, nextAt);
-  byPrevious.Reset(degree, previousAt);
-  std::int32_t opening = -1, closing = -1; // corner with no predecessor / no successor
+  work.ByPrevious.Reset(degree, previousAt);
+  work.Successor.resize(degree);
+  work.Reached.assign(degree, 0);
+  // Each corner's successor, found once: more than one candidate, or a corner that succeeds two
+  // others, means an edge of three triangles or of two in one orientation. A corner with no
+  // successor closes the fan, one that succeeds none opens it: one of each at most.
+  std::int32_t opening = -1, closing = -1;
   for (std::int32_t i = 0; i < degree; ++i)
   {
-    int same = 0, successors = 0, predecessors = 0;
-    byNext.Find(first[i].Next, nextAt, &same);
-    if (same > 1)
-    {
-      return VertexClass::NonManifold; // an edge used twice in one orientation
-    }
-    byPrevious.Find(first[i].Next, previousAt, &successors);
-    byNext.Find(first[i].Previous, nextAt, &predecessors);
-    if (successors > 1 || predecessors > 1)
+    int holders = 0;
+    const std::int32_t successor = work.ByPrevious.Find(first[i].Next, previousAt, &holders);
+    if (holders > 1 || (successor >= 0 && work.Reached[successor]++ > 0) || (successor < 0 && closing >= 0))
     {
       return VertexClass::NonManifold;
     }
-    if (predecessors == 0)
+    work.Successor[i] = successor;
+    closing = successor < 0 ? i : closing;
+  }
+  for (std::int32_t i = 0; i < degree; ++i)
+  {
+    if (!work.Reached[i])
     {
       if (opening >= 0)
       {
-        return VertexClass::NonManifold; // two open fans
-      }
-      opening = i;
-    }
-    if (successors == 0)
-    {
-      if (closing >= 0)
-      {
         return VertexClass::NonManifold;
       }
-      closing = i;
+      opening = i;
     }
   }
   if ((opening < 0) != (closing < 0))
   {
     return VertexClass::NonManifold;
   }
-  // Walk the fan from its opening (or any corner) and count the corners it reaches.
-  std::int32_t current = opening >= 0 ? opening : 0, visited = 1;
-  for (;;)
+  // One fan when the walk from the opening (or any corner) reaches every corner; the successors
+  // are one-to-one, so the walk ends at the closing corner or back where it started.
+  const std::int32_t start = opening >= 0 ? opening : 0;
+  std::int32_t visited = 1;
+  for (std::int32_t c = work.Successor[start]; c >= 0 && c != start; c = work.Successor[c])
   {
-    const std::int32_t following = byPrevious.Find(first[current].Next, previousAt);
-    if (following < 0 || following == (opening >= 0 ? opening : 0) || visited > degree)
-    {
-      break;
-    }
-    current = following;
     ++visited;
   }
   if (visited != degree)
@@ -101,7 +91,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->Refs.resize(adjacency.Corners.size());
   const double cosCorner = std::cos(cornerAngleDegrees * 3.14159265358979323846 / 180.0);
   context.For(n, [&](std::int64_t first, std::int64_t last) {
-    FanLookup byNext, byPrevious;
+    FanWorkspace fan;
     for (std::int32_t v = static_cast<std::int32_t>(first); v < last; ++v)
     {
       this->Start[v] = adjacency.Offsets[v];
@@ -111,7 +101,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
         this->Refs[i] = adjacency.Corners[i].Triangle;
       }
       std::int32_t opening = -1, closing = -1;
-      VertexClass c = ClassifyFan(adjacency.Begin(v), adjacency.End(v), opening, closing, byNext, byPrevious);
+      VertexClass c = ClassifyFan(adjacency.Begin(v), adjacency.End(v), opening, closing, fan);
       if (c == VertexClass::Boundary)
       {
         // The boundary runs into v along the closing corner's far edge and leaves along the

@@ -81,15 +81,22 @@ enum class VertexClass : std::uint8_t
   NonManifold // several fans, an edge of three or more triangles, or inconsistent orientation
 };
 
+/// ClassifyFan's working memory: reuse one per thread, it keeps its allocations.
+struct FanWorkspace
+{
+  FanLookup ByPrevious;
+  std::vector<std::int32_t> Successor;
+  std::vector<std::uint8_t> Reached;
+};
+
 /**
  * The class of a vertex from its corners {triangle, next, previous}: one closed fan (Interior),
  * one open fan (Boundary, with fanFirst and fanLast its first and last corner) or anything else
  * (NonManifold); never Corner, which Build decides from the boundary's turn. A corner's
- * successor is the corner whose previous vertex is its next one. byNext and byPrevious are
- * working memory.
+ * successor is the corner whose previous vertex is its next one.
  */
-VertexClass ClassifyFan(const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast,
-  FanLookup& byNext, FanLookup& byPrevious);
+VertexClass ClassifyFan(
+  const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast, FanWorkspace& work);
 
 /// One collapse: the kept vertex, the one or two merged into it, the attribute weights and what
 /// undoing it needs (spans into CollapseMesh's change and removed-triangle lists).

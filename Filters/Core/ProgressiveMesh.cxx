@@ -188,11 +188,11 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   }
   this->Kinds.resize(n);
   this->Fans.resize(n);
-  FanLookup byNext, byPrevious;
+  FanWorkspace fanWork;
   for (std::size_t v = 0; v < n; ++v)
   {
     std::int32_t opening = -1, closing = -1;
-    const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, byNext, byPrevious);
+    const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, fanWork);
     this->Fans[v] = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
     this->Kinds[v] = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Fans[v];
   }

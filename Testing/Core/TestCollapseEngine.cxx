@@ -17,6 +17,8 @@
 using meshsimp::CollapseHeap;
 using meshsimp::CollapseMesh;
 using meshsimp::CollapsePlan;
+using meshsimp::Corner;
+using meshsimp::FanWorkspace;
 using meshsimp::VertexClass;
 
 namespace
@@ -183,6 +185,53 @@ void VertexClasses()
   bowtie.Triangles.insert(bowtie.Triangles.end(), { 0, apex, apex + 1 });
   Engine pinched(bowtie);
   CHECK(pinched.Mesh.Class(pinched.Id[0]) == VertexClass::NonManifold);
+}
+
+void FanClassesFromCorners()
+{
+  // ClassifyFan on corner lists written out, scanned (6 corners) and sorted (40): corner i of a
+  // fan through ring vertices 0..d-1 reads (v, i + 1, i); each case breaks the fan one way.
+  for (const std::int32_t degree : { 6, 40 })
+  {
+    const auto fan = [degree](bool closed) {
+      std::vector<Corner> corners;
+      for (std::int32_t i = 0; i < degree - (closed ? 0 : 1); ++i)
+      {
+        corners.push_back({ i, (i + 1) % degree, i });
+      }
+      return corners;
+    };
+    FanWorkspace work;
+    const auto classify = [&work](const std::vector<Corner>& corners, std::int32_t* ends = nullptr) {
+      std::int32_t first = -1, last = -1;
+      const VertexClass c = meshsimp::ClassifyFan(corners.data(), corners.data() + corners.size(), first, last, work);
+      if (ends)
+      {
+        ends[0] = first;
+        ends[1] = last;
+      }
+      return c;
+    };
+    std::int32_t ends[2];
+    CHECK(classify(fan(true)) == VertexClass::Interior);
+    std::vector<Corner> open = fan(false);
+    std::rotate(open.begin(), open.begin() + 2, open.end()); // the opening corner anywhere
+    CHECK(classify(open, ends) == VertexClass::Boundary);
+    CHECK(open[ends[0]].Previous == 0 && open[ends[1]].Next == degree - 1);
+    std::vector<Corner> third = fan(true);
+    third.push_back({ degree, 1, 0 }); // edge (v, 1) in three triangles
+    CHECK(classify(third) == VertexClass::NonManifold);
+    std::vector<Corner> flipped = fan(true);
+    std::swap(flipped[3].Next, flipped[3].Previous); // one triangle turned over
+    CHECK(classify(flipped) == VertexClass::NonManifold);
+    std::vector<Corner> twoFans = fan(true);
+    twoFans[degree / 2 - 1].Next = 0;          // the ring closes halfway ...
+    twoFans.back().Next = degree / 2;          // ... and a second ring through the other half
+    CHECK(classify(twoFans) == VertexClass::NonManifold);
+    std::vector<Corner> twoOpen = fan(false);
+    twoOpen.erase(twoOpen.begin() + degree / 2); // a gap: two open fans
+    CHECK(classify(twoOpen) == VertexClass::NonManifold);
+  }
 }
 
 void LinkConditionRejectsHiddenCycle()
@@ -1113,6 +1162,7 @@ int main()
   return meshsimp_test::RunTests({
     { "HeapOrderAndTieRule", HeapOrderAndTieRule },
     { "VertexClasses", VertexClasses },
+    { "FanClassesFromCorners", FanClassesFromCorners },
     { "LinkConditionRejectsHiddenCycle", LinkConditionRejectsHiddenCycle },
     { "LinkConditionRejectsPinch", LinkConditionRejectsPinch },
     { "FoldOverAndDegenerateRejected", FoldOverAndDegenerateRejected },
