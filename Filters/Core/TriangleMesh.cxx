@@ -302,12 +302,7 @@ bool HasMisorientedEdge(const VertexTriangleAdjacency& adjacency, const Executio
     const auto nextAt = [first](std::int32_t i) { return first[i].Next; };
     const std::int32_t degree = static_cast<std::int32_t>(adjacency.End(v) - first);
     byNext.Reset(degree, nextAt);
-    for (std::int32_t i = 0; i < degree && !any; ++i)
-    {
-      int holders = 0;
-      byNext.Find(first[i].Next, nextAt, &holders);
-      any = holders > 1;
-    }
+    any = byNext.HasRepeat(nextAt);
   });
   return std::find(found.begin(), found.end(), 1) != found.end();
 }

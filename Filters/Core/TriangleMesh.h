@@ -133,6 +133,28 @@ public:
     return first;
   }
 
+  /// Whether an id appears twice, with the same idAt as Reset: pairs compared while the list is
+  /// short, neighbours in the sorted list when it is long.
+  template <typename IdAt>
+  bool HasRepeat(const IdAt& idAt) const
+  {
+    if (this->Size > ScanLimit)
+    {
+      return std::adjacent_find(this->Sorted.begin(), this->Sorted.end(),
+               [](const auto& a, const auto& b) { return a.first == b.first; }) != this->Sorted.end();
+    }
+    bool repeat = false;
+    for (std::int32_t i = 1; i < this->Size; ++i)
+    {
+      const std::int32_t w = idAt(i);
+      for (std::int32_t j = 0; j < i; ++j)
+      {
+        repeat |= idAt(j) == w;
+      }
+    }
+    return repeat;
+  }
+
 private:
   std::int32_t Size = 0;
   std::vector<std::pair<std::int32_t, std::int32_t>> Sorted;
