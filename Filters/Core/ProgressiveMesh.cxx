@@ -41,6 +41,7 @@ struct RingEntry
   std::int32_t Vertex;
   std::int32_t Triangles[2];
   std::int32_t Count;
+  double Cost; // of the collapse x -> Vertex (CostRing), infinite where RingCheck refuses it
 };
 
 class ProgressiveBuilder
@@ -64,7 +65,7 @@ private:
   void GatherRing(std::int32_t x);
   Refusal RingCheck(std::int32_t x, const RingEntry& entry) const;
   double Curvature(std::int32_t x, const RingEntry& entry) const;
-  double Cost(std::int32_t x, const RingEntry& entry) const;
+  void CostRing(std::int32_t x);
   void Measure(std::int32_t x, bool gathered = false);
   bool WouldRepeatTriangle(std::int32_t y, const std::int32_t opposite[2]);
   Refusal Check(std::int32_t x, const RingEntry& entry);
@@ -305,7 +306,7 @@ void ProgressiveBuilder::GatherRing(std::int32_t x)
       {
         this->Stamp[w] = this->CurrentStamp;
         this->Slot[w] = static_cast<std::int32_t>(this->Ring.size());
-        this->Ring.push_back({ w, { t, -1 }, 1 });
+        this->Ring.push_back({ w, { t, -1 }, 1, 0.0 });
       }
       else
       {
@@ -359,28 +360,41 @@ double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) con
   return 1.0 - in.dot(out);
 }
 
-double ProgressiveBuilder::Cost(std::int32_t x, const RingEntry& entry) const
+void ProgressiveBuilder::CostRing(std::int32_t x)
 {
   // Wu and Fei §4: the L1 length and the curvature 1 - N_ABC . N_ABD, weighted; the L1
   // distance of the extra coordinates (§7); beyond the paper, the quadric error of y for x's
-  // planes.
-  const std::int32_t y = entry.Vertex;
-  const double length = (this->P[x] - this->P[y]).cwiseAbs().sum();
-  double attributes = 0.0; // the extra coordinates come scaled by AttributeWeight
-  for (int k = 0; k < this->ExtraDimension; ++k)
+  // planes. For every edge of x's gathered ring that RingCheck allows, each term only when
+  // weighted, x's quadric read once: the build costs every edge of every top vertex.
+  const Quadric quadric = this->Quadrics[x];
+  for (RingEntry& entry : this->Ring)
   {
-    attributes += std::abs(this->Extra[x * this->ExtraDimension + k] - this->Extra[y * this->ExtraDimension + k]);
+    if (this->RingCheck(x, entry) != Refusal::None)
+    {
+      entry.Cost = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    const std::int32_t y = entry.Vertex;
+    double cost = this->LengthScale > 0.0 ? this->LengthScale * (this->P[x] - this->P[y]).cwiseAbs().sum() : 0.0;
+    if (this->ExtraDimension > 0)
+    {
+      double attributes = 0.0; // the extra coordinates come scaled by AttributeWeight
+      for (int k = 0; k < this->ExtraDimension; ++k)
+      {
+        attributes += std::abs(this->Extra[x * this->ExtraDimension + k] - this->Extra[y * this->ExtraDimension + k]);
+      }
+      cost += attributes;
+    }
+    if (this->Options.CurvatureWeight > 0.0)
+    {
+      cost += this->Options.CurvatureWeight * this->Curvature(x, entry);
+    }
+    if (this->QuadricScale > 0.0)
+    {
+      cost += this->QuadricScale * quadric.Evaluate(this->P[y]);
+    }
+    entry.Cost = std::isfinite(cost) ? cost : std::numeric_limits<double>::max();
   }
-  double cost = this->LengthScale * length + attributes;
-  if (this->Options.CurvatureWeight > 0.0)
-  {
-    cost += this->Options.CurvatureWeight * this->Curvature(x, entry);
-  }
-  if (this->QuadricScale > 0.0)
-  {
-    cost += this->QuadricScale * this->Quadrics[x].Evaluate(this->P[y]);
-  }
-  return std::isfinite(cost) ? cost : std::numeric_limits<double>::max();
 }
 
 void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
@@ -393,12 +407,10 @@ void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
     {
       this->GatherRing(x);
     }
+    this->CostRing(x);
     for (const RingEntry& entry : this->Ring)
     {
-      if (this->RingCheck(x, entry) == Refusal::None)
-      {
-        best = std::min(best, this->Cost(x, entry));
-      }
+      best = std::min(best, entry.Cost);
     }
   }
   if (best < std::numeric_limits<double>::infinity())
@@ -508,11 +520,12 @@ bool ProgressiveBuilder::CollapseTop()
     this->GatherRing(x);
     std::vector<std::pair<double, std::int32_t>>& order = this->Candidates;
     order.clear();
+    this->CostRing(x);
     for (const RingEntry& entry : this->Ring)
     {
-      if (this->RingCheck(x, entry) == Refusal::None)
+      if (entry.Cost < std::numeric_limits<double>::infinity())
       {
-        order.emplace_back(this->Cost(x, entry), entry.Vertex);
+        order.emplace_back(entry.Cost, entry.Vertex);
       }
     }
     // The cheapest first; the others sorted only when it is illegal (seldom).
