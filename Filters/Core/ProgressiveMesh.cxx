@@ -34,6 +34,21 @@ constexpr bool KindAllows[3][3] = {
   { false, false, false } // Fixed
 };
 
+/// What the build reads and writes of a vertex at every visit, side by side: a ring gather
+/// touches one cache line per neighbour, not one per array.
+struct VertexState
+{
+  std::int32_t Head = -1;     // first corner of the vertex's list (-1: none)
+  std::int32_t Triangles = 0; // live triangles at the vertex
+  std::uint32_t Stamp = 0;    // the last gather or mark that met the vertex (one counter)
+  std::int32_t Slot = 0;      // its entry in the ring of that gather
+  std::uint8_t Kind = Interior;
+  std::uint8_t Fan = Interior; // the kind of the fan alone: closed fans keep three triangles, locked or not
+};
+
+/// (k + 1) % 3 at k and (k + 2) % 3 at k + 1, for the corners after corner k of a triangle.
+constexpr int NextInTriangle[4] = { 1, 2, 0, 1 };
+
 /// A neighbour y of the vertex x being measured, with the triangles on the edge xy (two on an
 /// interior edge, one on a border edge).
 struct RingEntry
@@ -82,15 +97,10 @@ private:
 
   // Per vertex.
   std::vector<Eigen::Vector3d> P;
-  std::vector<std::uint8_t> Kinds;
-  std::vector<std::uint8_t> Fans; // the kind of the fan alone: closed fans keep three triangles, locked or not
+  std::vector<VertexState> Vertices;
   std::vector<std::int32_t> Regions;
-  std::vector<std::int32_t> Head;      // first corner of the vertex's list (-1: none)
-  std::vector<std::int32_t> Triangles; // live triangles at the vertex
   std::vector<Quadric> Quadrics;
   std::vector<double> Weights; // the area behind each quadric
-  std::vector<std::uint32_t> Stamp; // the last gather or mark that met the vertex (one counter)
-  std::vector<std::int32_t> Slot;
   std::vector<double> Extra; // the extra coordinates, scaled, ExtraDimension per vertex
   // Per corner and triangle.
   std::vector<std::int32_t> Corners;    // 3 per triangle, the current vertices
@@ -114,16 +124,16 @@ template <class Visit>
 void ProgressiveBuilder::ForEachTriangle(std::int32_t v, Visit&& visit)
 {
   // Walks v's list, unlinking the corners of removed triangles on the way.
-  std::int32_t* link = &this->Head[v];
+  std::int32_t* link = &this->Vertices[v].Head;
   while (*link >= 0)
   {
-    const std::int32_t corner = *link;
-    if (this->Corners[corner - corner % 3] < 0) // removed: see Collapse
+    const std::int32_t corner = *link, t = corner / 3;
+    if (this->Corners[3 * t] < 0) // removed: see Collapse
     {
       *link = this->NextCorner[corner];
       continue;
     }
-    visit(corner / 3, corner % 3);
+    visit(t, corner - 3 * t);
     link = &this->NextCorner[corner];
   }
 }
@@ -170,15 +180,14 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   this->Corners = mesh.Triangles;
   this->Regions = std::move(prepared.Regions);
   const std::size_t n = this->P.size(), m = this->Corners.size() / 3;
-  this->Head.assign(n, -1);
+  this->Vertices.assign(n, VertexState());
   this->NextCorner.assign(3 * m, -1);
-  this->Triangles.assign(n, 0);
   for (std::size_t c = 3 * m; c-- > 0;)
   {
     const std::int32_t v = this->Corners[c];
-    this->NextCorner[c] = this->Head[v];
-    this->Head[v] = static_cast<std::int32_t>(c);
-    ++this->Triangles[v];
+    this->NextCorner[c] = this->Vertices[v].Head;
+    this->Vertices[v].Head = static_cast<std::int32_t>(c);
+    ++this->Vertices[v].Triangles;
   }
   this->RemovedStep.assign(m, -1);
   this->LiveTriangles = static_cast<std::int64_t>(m);
@@ -187,15 +196,13 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   {
     this->UpdateNormal(static_cast<std::int32_t>(t));
   }
-  this->Kinds.resize(n);
-  this->Fans.resize(n);
   FanWorkspace fanWork;
   for (std::size_t v = 0; v < n; ++v)
   {
     std::int32_t opening = -1, closing = -1;
     const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, fanWork);
-    this->Fans[v] = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
-    this->Kinds[v] = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Fans[v];
+    this->Vertices[v].Fan = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
+    this->Vertices[v].Kind = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Vertices[v].Fan;
   }
   mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
   this->ExtraDimension = this->Options.ExtraCoordinates ? std::max(0, this->Options.ExtraDimension) : 0;
@@ -209,8 +216,6 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
       this->Extra[v * this->ExtraDimension + k] = std::isfinite(value) ? extraScale * value : 0.0;
     }
   }
-  this->Stamp.assign(n, 0);
-  this->Slot.assign(n, 0);
   this->BuildFaceQuadrics();
   this->MeasureScales();
   this->Heap.Reset(static_cast<std::int32_t>(n));
@@ -301,16 +306,16 @@ void ProgressiveBuilder::GatherRing(std::int32_t x)
   this->ForEachTriangle(x, [&](std::int32_t t, int k) {
     for (const int step : { 1, 2 })
     {
-      const std::int32_t w = this->Corners[3 * t + (k + step) % 3];
-      if (this->Stamp[w] != this->CurrentStamp)
+      const std::int32_t w = this->Corners[3 * t + NextInTriangle[k + step - 1]];
+      if (this->Vertices[w].Stamp != this->CurrentStamp)
       {
-        this->Stamp[w] = this->CurrentStamp;
-        this->Slot[w] = static_cast<std::int32_t>(this->Ring.size());
+        this->Vertices[w].Stamp = this->CurrentStamp;
+        this->Vertices[w].Slot = static_cast<std::int32_t>(this->Ring.size());
         this->Ring.push_back({ w, { t, -1 }, 1, 0.0 });
       }
       else
       {
-        RingEntry& entry = this->Ring[this->Slot[w]];
+        RingEntry& entry = this->Ring[this->Vertices[w].Slot];
         entry.Triangles[1] = t;
         ++entry.Count;
       }
@@ -331,7 +336,7 @@ Refusal ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) co
   // The first three checks, which need nothing but the ring (so every candidate is filtered by
   // them before it is costed): the kind table, the regions, a border vertex only along its border.
   const std::int32_t y = entry.Vertex;
-  if (!KindAllows[this->Kinds[x]][this->Kinds[y]])
+  if (!KindAllows[this->Vertices[x].Kind][this->Vertices[y].Kind])
   {
     return Refusal::Kind;
   }
@@ -339,7 +344,7 @@ Refusal ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) co
   {
     return Refusal::Region;
   }
-  return this->Kinds[x] == Border && entry.Count != 1 ? Refusal::AcrossBorder : Refusal::None;
+  return this->Vertices[x].Kind == Border && entry.Count != 1 ? Refusal::AcrossBorder : Refusal::None;
 }
 
 double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) const
@@ -401,7 +406,7 @@ void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
 {
   // Step 2: the vertex's cost is its cheapest allowed edge's; fixed vertices never queue.
   double best = std::numeric_limits<double>::infinity();
-  if (this->Kinds[x] != Fixed && this->Triangles[x] > 0)
+  if (this->Vertices[x].Kind != Fixed && this->Vertices[x].Triangles > 0)
   {
     if (!gathered)
     {
@@ -433,7 +438,7 @@ bool ProgressiveBuilder::WouldRepeatTriangle(std::int32_t y, const std::int32_t 
     return false;
   }
   // x's side from its gathered ring: the triangles on its edge to opposite[0].
-  const RingEntry& toFirst = this->Ring[this->Slot[opposite[0]]];
+  const RingEntry& toFirst = this->Ring[this->Vertices[opposite[0]].Slot];
   bool atX = false;
   for (std::int32_t i = 0; i < std::min(toFirst.Count, 2); ++i)
   {
@@ -475,27 +480,27 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
   this->ForEachTriangle(y, [&](std::int32_t t, int) {
     for (int k = 0; k < 3; ++k)
     {
-      this->Stamp[this->Corners[3 * t + k]] = mark;
+      this->Vertices[this->Corners[3 * t + k]].Stamp = mark;
     }
   });
   for (const RingEntry& other : this->Ring)
   {
     const std::int32_t w = other.Vertex;
-    if (w != y && w != opposite[0] && w != opposite[1] && this->Stamp[w] == mark)
+    if (w != y && w != opposite[0] && w != opposite[1] && this->Vertices[w].Stamp == mark)
     {
       return Refusal::Link;
     }
   }
-  const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Fans[v] == Interior ? 3 : 1); };
-  if (!keeps(y, this->Triangles[y] + this->Triangles[x] - 2 * entry.Count) ||
-    (opposite[0] >= 0 && !keeps(opposite[0], this->Triangles[opposite[0]] - 1)) ||
-    (opposite[1] >= 0 && !keeps(opposite[1], this->Triangles[opposite[1]] - 1)))
+  const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Vertices[v].Fan == Interior ? 3 : 1); };
+  if (!keeps(y, this->Vertices[y].Triangles + this->Vertices[x].Triangles - 2 * entry.Count) ||
+    (opposite[0] >= 0 && !keeps(opposite[0], this->Vertices[opposite[0]].Triangles - 1)) ||
+    (opposite[1] >= 0 && !keeps(opposite[1], this->Vertices[opposite[1]].Triangles - 1)))
   {
     return Refusal::LastTriangles;
   }
   bool flips = false;
   this->ForEachTriangle(x, [&](std::int32_t t, int k) {
-    const std::int32_t a = this->Corners[3 * t + (k + 1) % 3], b = this->Corners[3 * t + (k + 2) % 3];
+    const std::int32_t a = this->Corners[3 * t + NextInTriangle[k]], b = this->Corners[3 * t + NextInTriangle[k + 1]];
     if (a == y || b == y || flips)
     {
       return;
@@ -540,7 +545,7 @@ bool ProgressiveBuilder::CollapseTop()
       continue;
     }
     const auto isLegal = [&](const std::pair<double, std::int32_t>& candidate) {
-      return this->Check(x, this->Ring[this->Slot[candidate.second]]) == Refusal::None;
+      return this->Check(x, this->Ring[this->Vertices[candidate.second].Slot]) == Refusal::None;
     };
     auto legal = order.begin();
     if (legal != order.end() && !isLegal(*legal))
@@ -583,8 +588,8 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   this->StepError.push_back(std::max(this->StepError.empty() ? 0.0 : this->StepError.back(), error));
   this->Removed.push_back(x);
   this->Into.push_back(y);
-  std::int32_t corner = this->Head[x];
-  this->Head[x] = -1;
+  std::int32_t corner = this->Vertices[x].Head;
+  this->Vertices[x].Head = -1;
   while (corner >= 0)
   {
     const std::int32_t next = this->NextCorner[corner], t = corner / 3;
@@ -595,17 +600,17 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
       --this->LiveTriangles;
       for (int k = 0; k < 3; ++k)
       {
-        --this->Triangles[c[k]];
+        --this->Vertices[c[k]].Triangles;
       }
       this->Corners[3 * t] = -1; // the mark walks test: on the triangle's own cache line
     }
     else if (c[0] >= 0)
     {
       this->Corners[corner] = y;
-      this->NextCorner[corner] = this->Head[y];
-      this->Head[y] = corner;
-      --this->Triangles[x];
-      ++this->Triangles[y];
+      this->NextCorner[corner] = this->Vertices[y].Head;
+      this->Vertices[y].Head = corner;
+      --this->Vertices[x].Triangles;
+      ++this->Vertices[y].Triangles;
       this->UpdateNormal(t);
     }
     corner = next;
@@ -620,7 +625,7 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   this->Affected.assign(this->Ring.begin(), this->Ring.end()); // y's ring, gathered by Measure
   for (const RingEntry& entry : this->Affected)
   {
-    if (!this->Heap.Contains(entry.Vertex) && this->Kinds[entry.Vertex] != Fixed)
+    if (!this->Heap.Contains(entry.Vertex) && this->Vertices[entry.Vertex].Kind != Fixed)
     {
       this->Measure(entry.Vertex);
     }
@@ -631,8 +636,8 @@ void ProgressiveBuilder::ReleaseBuildState()
 {
   // What only the build needed goes before the sequence is written, which lowers the peak.
   const auto release = [](auto&... values) { (std::decay_t<decltype(values)>().swap(values), ...); };
-  release(this->Quadrics, this->Weights, this->Normals, this->NextCorner, this->Corners, this->Stamp, this->Slot,
-    this->Head, this->Triangles, this->Extra, this->P, this->Kinds, this->Fans, this->Regions);
+  release(this->Quadrics, this->Weights, this->Normals, this->NextCorner, this->Corners, this->Vertices, this->Extra,
+    this->P, this->Regions);
   this->Heap = CollapseHeap();
 }
 
