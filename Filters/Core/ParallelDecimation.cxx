@@ -1147,7 +1147,8 @@ std::int64_t Decimator::MoveSurvivors()
 {
   // Every new point is found from the old points, so neither the order nor the thread count
   // matters: the survivor's quadric minimiser (along the directions the quadric determines, as
-  // in vtkQuadricDecimation's placement), at most half the survivor's shortest edge away.
+  // in vtkQuadricDecimation's placement) when it is within half the survivor's shortest edge,
+  // else the point of least error within that distance (MinimizeQuadricWithin).
   const std::int32_t n = this->Mesh.NumberOfPoints();
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   std::vector<Vec3> before(n);
@@ -1173,7 +1174,7 @@ std::int64_t Decimator::MoveSurvivors()
     const double reach = 0.5 * std::sqrt(shortest), distance = (x - p).norm();
     if (distance > 0.0 && reach < Never)
     {
-      after[i] = distance > reach ? Vec3(p + (x - p) * (reach / distance)) : x;
+      after[i] = distance > reach ? MinimizeQuadricWithin(this->Quadrics[v], p, reach) : x;
       this->Moved[v] = 1;
     }
     if (this->Moved[v] && this->BoundLimit >= 0.0)

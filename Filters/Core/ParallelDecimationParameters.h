@@ -39,8 +39,8 @@ struct ParallelDecimationParameters
   /// AveragePlane's (which forgets the error of removed vertices, even accumulated).
   ImportanceMeasure Measure = ImportanceMeasure::Quadric;
   /// Quadric: move each survivor to the point of least error of its accumulated quadric after
-  /// the last round (see above). Off: survivors keep their input coordinates (about 1.4x the RMS
-  /// distance on the benchmark meshes at 90 %).
+  /// the last round, within half its shortest edge (MinimizeQuadricWithin). Off: survivors keep
+  /// their input coordinates (about 1.4x the RMS distance on the benchmark meshes at 90 %).
   bool MoveSurvivors = true;
   /// AveragePlane: a survivor adds the importance of each vertex collapsed into it to its own,
   /// so that error does not vanish from the ordering when its vertex goes.
