@@ -73,6 +73,11 @@ bool Contains(const std::int32_t* tri, std::int32_t v)
   return tri[0] == v || tri[1] == v || tri[2] == v;
 }
 
+/// Two triangles whose normals are more than 150 degrees apart lie (nearly) back to back.
+constexpr double FoldCosine = 0.8660254037844386;
+/// A triangle turned by less than 30 degrees cannot fold onto a neighbour it met at under 120.
+constexpr double TurnForFoldCheck = 0.8660254037844386;
+
 } // namespace
 
 void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const ExecutionContext& context)
@@ -397,7 +402,7 @@ bool CollapseMesh::ForEachChangedTriangle(const CollapsePlan& plan, F&& f) const
         return; // removed by the collapse
       }
       const int k = tri[0] == s ? 0 : tri[1] == s ? 1 : 2;
-      ok = f(s, this->Points[tri[(k + 1) % 3]], this->Points[tri[(k + 2) % 3]]);
+      ok = f(s, t, tri[(k + 1) % 3], tri[(k + 2) % 3]);
     });
     if (!ok)
     {
@@ -410,11 +415,37 @@ bool CollapseMesh::ForEachChangedTriangle(const CollapsePlan& plan, F&& f) const
 double CollapseMesh::SmallestNewAngleCosine(const CollapsePlan& plan) const
 {
   double worst = -1.0;
-  this->ForEachChangedTriangle(plan, [&](std::int32_t, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-    worst = std::max(worst, SmallestAngleCosine(plan.Position, p, q));
+  this->ForEachChangedTriangle(plan, [&](std::int32_t, std::int32_t, std::int32_t p, std::int32_t q) {
+    worst = std::max(worst, SmallestAngleCosine(plan.Position, this->Points[p], this->Points[q]));
     return true;
   });
   return worst;
+}
+
+bool CollapseMesh::FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::int32_t p, std::int32_t q,
+  const Eigen::Vector3d& before, const Eigen::Vector3d& after) const
+{
+  // Whether t, turned from normal before to after, would face against the unchanged triangle
+  // across its edge pq (normals over 150 degrees apart) where it did not: a wall triangle laid
+  // onto the face at its rim, overlapping it back to back.
+  bool folds = false;
+  this->ForEachTriangleOnEdge(p, q, [&](std::int32_t n) {
+    const std::int32_t* o = this->Triangle(n);
+    for (int i = 0; i < plan.Count && n != t; ++i)
+    {
+      n = Contains(o, plan.Vertices[i]) ? t : n; // changed as well: measured from its own side
+    }
+    if (n == t || folds)
+    {
+      return;
+    }
+    const Eigen::Vector3d beside =
+      (this->Points[o[1]] - this->Points[o[0]]).cross(this->Points[o[2]] - this->Points[o[0]]);
+    const double cosAfter = after.dot(beside) / (after.norm() * beside.norm());
+    const double cosBefore = before.dot(beside) / (before.norm() * beside.norm());
+    folds = cosAfter < -FoldCosine && cosAfter < cosBefore;
+  });
+  return folds;
 }
 
 bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
@@ -423,8 +454,10 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
   const bool guardAngles = plan.GuardAngles && this->MinimumAngleCosine < 1.0;
   double worstAfter = -1.0; // cosine of the smallest new angle
   const bool valid = this->ForEachChangedTriangle(plan,
-    [&](std::int32_t s, const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+    [&](std::int32_t s, std::int32_t t, std::int32_t pId, std::int32_t qId) {
       const Eigen::Vector3d& old = this->Points[s];
+      const Eigen::Vector3d& p = this->Points[pId];
+      const Eigen::Vector3d& q = this->Points[qId];
       const Eigen::Vector3d edge = q - p;
       const Eigen::Vector3d normal = (p - old).cross(q - old);
       // Paper 001 §5.3: the plane through the opposite edge, perpendicular to the triangle.
@@ -442,7 +475,12 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       // Degenerate: a new triangle of (almost) zero area. (A turned-over one has failed the
       // plane-side test already: both measure which side of the edge x is on.)
       const Eigen::Vector3d newNormal = (p - x).cross(q - x);
-      return newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm();
+      if (!(newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm()))
+      {
+        return false;
+      }
+      const double turn = newNormal.dot(normal);
+      return turn > TurnForFoldCheck * newNormal.norm() * normal.norm() || !this->FoldsAcross(plan, t, pId, qId, normal, newNormal);
     });
   if (!valid)
   {

@@ -37,6 +37,10 @@
  *   side of the plane through every opposite edge perpendicular to its triangle;
  * - no degenerate triangle: every changed triangle keeps a non-zero area (a merged vertex that
  *   stays where it is, the kept end of a half-edge, changes none of its own);
+ * - no fold against a neighbour: a changed triangle that turns by over 30 degrees may not end
+ *   back to back (normals over 150 degrees apart) with the unchanged triangle across its far
+ *   edge unless it already was (the plane-side test lets a turn of up to 90 degrees through,
+ *   which on exact CAD geometry lays a wall triangle flat onto the face at its rim);
  * - optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
  *   neighbourhood already had one as small, so simplification does not breed slivers.
  */
@@ -322,10 +326,14 @@ private:
   int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo,
     std::int64_t& droppedRefs);
   bool KeepsTrianglesValid(const CollapsePlan& plan) const;
-  /// Calls f(s, p, q) for each triangle the plan keeps but changes: s its merged vertex that
-  /// moves, p and q its other corners in order; f returns false to stop, and so does this.
+  /// Calls f(s, t, p, q) for each triangle t the plan keeps but changes: s its merged vertex
+  /// that moves, p and q its other corners in order; f returns false to stop, and so does this.
   template <typename F>
   bool ForEachChangedTriangle(const CollapsePlan& plan, F&& f) const;
+  /// Whether triangle t, turned from normal before to after by the plan, would lie back to back
+  /// with the unchanged triangle across its edge pq (see KeepsTrianglesValid).
+  bool FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::int32_t p, std::int32_t q,
+    const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
   /// No new edge between the kept vertex and another shared one, when the kept one is shared.
   bool KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);

@@ -315,6 +315,21 @@ void FoldOverAndDegenerateRejected()
   CHECK(!d.Mesh.IsLegal(d.Plan({ 13, 12 }, 0.5 * (d.Point(12) + d.Point(13)))));
 }
 
+void FoldOntoNeighbourRejected()
+{
+  // A wall triangle (o, q, p) hangs below the rim pq of a top triangle (p, q, w); collapsing o
+  // with r (below it) to a point a hair under the top's plane turns the wall triangle by just
+  // under 90 degrees, which the plane-side test lets through: laid inwards it would lie back to
+  // back with the top triangle (rejected), laid outwards it continues the top (legal).
+  Mesh step;
+  step.Points = { -1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -1, 0, -0.5, -2 }; // p q w o r
+  step.Triangles = { 0, 1, 2, 3, 1, 0, 4, 1, 3, 4, 3, 0 };
+  Engine e(step);
+  CHECK(!e.Mesh.IsLegal(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, 0.1, -1e-9))));
+  CHECK(e.Mesh.IsLegal(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, -0.1, -1e-9))));
+  CHECK(e.Mesh.IsLegal(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, 0.1, -0.5)))); // turned by 27 degrees
+}
+
 void AngleGuardRejectsNewSlivers()
 {
   // Collapsing the grid's centre 12 and its neighbour 13 to a point just above vertex 8 makes
@@ -1166,6 +1181,7 @@ int main()
     { "LinkConditionRejectsHiddenCycle", LinkConditionRejectsHiddenCycle },
     { "LinkConditionRejectsPinch", LinkConditionRejectsPinch },
     { "FoldOverAndDegenerateRejected", FoldOverAndDegenerateRejected },
+    { "FoldOntoNeighbourRejected", FoldOntoNeighbourRejected },
     { "AngleGuardRejectsNewSlivers", AngleGuardRejectsNewSlivers },
     { "LockedVerticesStay", LockedVerticesStay },
     { "SharedVerticesGetNoNewEdge", SharedVerticesGetNoNewEdge },
