@@ -15,6 +15,10 @@ VertexClass ClassifyFan(
   const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast, FanWorkspace& work)
 {
   const std::int32_t degree = static_cast<std::int32_t>(last - first);
+  if (degree == 0)
+  {
+    return VertexClass::NonManifold; // no fan at all
+  }
   const auto previousAt = [first](std::int32_t i) { return first[i].Previous; };
   work.ByPrevious.Reset(degree, previousAt);
   work.Successor.resize(degree);
@@ -27,11 +31,18 @@ VertexClass ClassifyFan(
   {
     int holders = 0;
     const std::int32_t successor = work.ByPrevious.Find(first[i].Next, previousAt, &holders);
-    if (holders > 1 || (successor >= 0 && work.Reached[successor]++ > 0) || (successor < 0 && closing >= 0))
+    const bool severalCandidates = holders > 1;
+    const bool reachedTwice = successor >= 0 && work.Reached[successor] > 0;
+    const bool secondClosing = successor < 0 && closing >= 0;
+    if (severalCandidates || reachedTwice || secondClosing)
     {
       return VertexClass::NonManifold;
     }
     work.Successor[i] = successor;
+    if (successor >= 0)
+    {
+      work.Reached[successor] = 1;
+    }
     closing = successor < 0 ? i : closing;
   }
   for (std::int32_t i = 0; i < degree; ++i)
@@ -75,8 +86,9 @@ bool Contains(const std::int32_t* tri, std::int32_t v)
 
 /// Two triangles whose normals are more than 150 degrees apart lie (nearly) back to back.
 constexpr double FoldCosine = 0.8660254037844386;
-/// A triangle turned by less than 30 degrees cannot fold onto a neighbour it met at under 120.
-constexpr double TurnForFoldCheck = 0.8660254037844386;
+/// The cosine of 30 degrees: a triangle turned by less cannot fold onto a neighbour it met at
+/// under 120 degrees, so the fold check is skipped for it.
+constexpr double FoldCheckTurnCosine = 0.8660254037844386;
 
 } // namespace
 
@@ -426,16 +438,16 @@ bool CollapseMesh::FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::in
   const Eigen::Vector3d& before, const Eigen::Vector3d& after) const
 {
   // Whether t, turned from normal before to after, would face against the unchanged triangle
-  // across its edge pq (normals over 150 degrees apart) where it did not: a wall triangle laid
+  // across its edge pq (normals over 150 degrees apart) more than it did: a wall triangle laid
   // onto the face at its rim, overlapping it back to back.
   bool folds = false;
   this->ForEachTriangleOnEdge(p, q, [&](std::int32_t n) {
     const std::int32_t* o = this->Triangle(n);
-    for (int i = 0; i < plan.Count && n != t; ++i)
-    {
-      n = Contains(o, plan.Vertices[i]) ? t : n; // changed as well: measured from its own side
-    }
-    if (n == t || folds)
+    // t itself, or a neighbour the plan changes too (which the link condition already refuses
+    // where it would become t's twin): only unchanged neighbours are compared.
+    const bool changed = n == t ||
+      std::any_of(plan.Vertices, plan.Vertices + plan.Count, [o](std::int32_t v) { return Contains(o, v); });
+    if (changed || folds)
     {
       return;
     }
@@ -480,7 +492,7 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
         return false;
       }
       const double turn = newNormal.dot(normal);
-      return turn > TurnForFoldCheck * newNormal.norm() * normal.norm() || !this->FoldsAcross(plan, t, pId, qId, normal, newNormal);
+      return turn > FoldCheckTurnCosine * newNormal.norm() * normal.norm() || !this->FoldsAcross(plan, t, pId, qId, normal, newNormal);
     });
   if (!valid)
   {

@@ -39,8 +39,8 @@
  *   stays where it is, the kept end of a half-edge, changes none of its own);
  * - no fold against a neighbour: a changed triangle that turns by over 30 degrees may not end
  *   back to back (normals over 150 degrees apart) with the unchanged triangle across its far
- *   edge unless it already was (the plane-side test lets a turn of up to 90 degrees through,
- *   which on exact CAD geometry lays a wall triangle flat onto the face at its rim);
+ *   edge, nor more so where it already was (the plane-side test lets a turn of up to 90 degrees
+ *   through, which on exact CAD geometry lays a wall triangle flat onto the face at its rim);
  * - optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
  *   neighbourhood already had one as small, so simplification does not breed slivers.
  */

@@ -369,8 +369,9 @@ void ProgressiveBuilder::CostRing(std::int32_t x)
 {
   // Wu and Fei §4: the L1 length and the curvature 1 - N_ABC . N_ABD, weighted; the L1
   // distance of the extra coordinates (§7); beyond the paper, the quadric error of y for x's
-  // planes. For every edge of x's gathered ring that RingCheck allows, each term only when
-  // weighted, x's quadric read once: the build costs every edge of every top vertex.
+  // planes. For every edge of x's gathered ring that RingCheck allows, each term only when it
+  // is there (a weight above 0, extra coordinates given), x's quadric read once: the build costs
+  // every edge of every top vertex.
   const Quadric quadric = this->Quadrics[x];
   for (RingEntry& entry : this->Ring)
   {

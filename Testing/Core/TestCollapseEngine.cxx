@@ -213,6 +213,7 @@ void FanClassesFromCorners()
       return c;
     };
     std::int32_t ends[2];
+    CHECK(classify({}) == VertexClass::NonManifold); // no triangle: no fan
     CHECK(classify(fan(true)) == VertexClass::Interior);
     std::vector<Corner> open = fan(false);
     std::rotate(open.begin(), open.begin() + 2, open.end()); // the opening corner anywhere
