@@ -209,30 +209,40 @@ inline int MinimizeQuadricNear(const Quadric& q, const Eigen::Vector3d& x0, Eige
 
 /**
  * The point of least Q within radius of x0 (a trust-region step, as in Levenberg-Marquardt):
- * x0 - (A + mu I)^-1 (A x0 + b) with the smallest mu >= 0 that keeps it within the radius. Where
- * the minimiser lies farther (a survivor whose planes meet far away, at a corner of faces it
- * only touches), the step bends towards the directions Q determines best instead of heading
- * straight for that point, so a point on a flat face stays on it. Assumes radius > 0.
+ * x0 - (A + mu I)^-1 (A x0 + b) with the smallest mu >= 0 that keeps it within the radius, along
+ * the directions in which Q is well conditioned (as MinimizeQuadricNear: eigenvalues above
+ * relativeTolerance · λmax; x0 keeps its coordinate along the others, so rounding in a flat
+ * region's quadric moves nothing sideways). Where the minimiser lies farther (a survivor whose
+ * planes meet far away, at a corner of faces it only touches), the step bends towards the
+ * directions Q determines best instead of heading straight for that point, so a point on a flat
+ * face stays on it. Assumes radius > 0.
  */
-inline Eigen::Vector3d MinimizeQuadricWithin(const Quadric& q, const Eigen::Vector3d& x0, double radius)
+inline Eigen::Vector3d MinimizeQuadricWithin(
+  const Quadric& q, const Eigen::Vector3d& x0, double radius, double relativeTolerance = 1e-6)
 {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(q.A());
-  const Eigen::Vector3d lambda = eig.eigenvalues().cwiseMax(0.0);
-  const Eigen::Vector3d c = eig.eigenvectors().transpose() * (q.A() * x0 + q.B()); // the gradient / 2
+  const Eigen::Vector3d lambda = eig.eigenvalues(); // ascending
+  Eigen::Vector3d c = eig.eigenvectors().transpose() * (q.A() * x0 + q.B()); // the gradient / 2
+  for (int i = 0; i < 3; ++i)
+  {
+    c(i) = lambda(i) > relativeTolerance * lambda(2) && lambda(i) > 0.0 ? c(i) : 0.0;
+  }
   const auto step = [&](double mu) {
-    return Eigen::Vector3d(-c.array() / (lambda.array() + mu));
+    Eigen::Vector3d d = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 3; ++i)
+    {
+      d(i) = c(i) != 0.0 ? -c(i) / (lambda(i) + mu) : 0.0;
+    }
+    return d;
   };
+  if (!c.allFinite() || !(step(0.0).norm() > radius))
+  {
+    const Eigen::Vector3d x = x0 + eig.eigenvectors() * step(0.0);
+    return x.allFinite() ? x : x0; // the minimiser is within reach (or nothing moves)
+  }
   // |step(mu)| falls with mu and is at most |c| / mu: bisect on [0, |c| / radius].
   double low = 0.0, high = c.norm() / radius;
-  if (!(high > 0.0) || !std::isfinite(high))
-  {
-    return x0;
-  }
-  if (step(low).allFinite() && step(low).norm() <= radius)
-  {
-    return x0 + eig.eigenvectors() * step(low);
-  }
   for (int i = 0; i < 60; ++i)
   {
     const double mu = 0.5 * (low + high);

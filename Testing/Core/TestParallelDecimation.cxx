@@ -421,6 +421,26 @@ void QuadricStepStaysWithin()
       CHECK((x - minimum).norm() <= 1e-9 * (1.0 + distance));
     }
   }
+  // A flat region's quadric: the planes of triangles of one tilted plane, summed (rounding makes
+  // its two empty directions tiny but not zero). A point above the plane moves straight down
+  // onto it, or the radius towards it, never sideways.
+  for (int trial = 0; trial < 50; ++trial)
+  {
+    const Eigen::Vector3d n = Eigen::Vector3d(uniform(random), uniform(random), uniform(random)).normalized();
+    const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
+    meshsimp::Quadric q;
+    for (int k = 0; k < 6; ++k)
+    {
+      const Eigen::Vector3d on = 3.0 * uniform(random) * u + 3.0 * uniform(random) * v;
+      q += meshsimp::Quadric::FromPlane(n, -n.dot(on), 1.0 + 0.5 * uniform(random));
+    }
+    const Eigen::Vector3d x0 = uniform(random) * u + uniform(random) * v + 0.4 * n;
+    for (const double radius : { 0.1, 1.0 })
+    {
+      const Eigen::Vector3d expected = x0 - std::min(radius, 0.4) * n;
+      CHECK((meshsimp::MinimizeQuadricWithin(q, x0, radius) - expected).norm() < 1e-9);
+    }
+  }
 }
 
 void HighValenceVertex()
