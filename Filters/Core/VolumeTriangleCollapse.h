@@ -70,8 +70,9 @@
  *   key adds the new point's squared distances to the planes of the input triangles merged
  *   into the collapsing vertices (Garland–Heckbert quadrics, area-weighted, summed through the
  *   collapses) and to the planes through their open-border edges perpendicular to the border
- *   triangles (edge² weights: moving a rim within the surface's plane sweeps no volume), times the weight and the squared mean input triangle area (so the term has the
- *   volume error's units, length⁸). Placement is unchanged. By volume alone a few collapses on
+ *   triangles (edge² weights: moving a rim within the surface's plane sweeps no volume), times
+ *   the weight and the squared mean input triangle area (so the term has the volume error's
+ *   units, length⁸). Placement is unchanged. By volume alone a few collapses on
  *   gently curved surfaces, where the normal factor makes volume cheap, moved the surface far:
  *   the CAD fandisk's Hausdorff distance at 70 % was 1.9× vtkQuadricDecimation's.
  * - The engine's angle guard (MinimumAngle, default 10°) is a price, not a wall: a collapse it

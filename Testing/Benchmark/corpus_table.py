@@ -152,7 +152,7 @@ def table(name, spec, all_cases):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--kit", required=True, help="the shared benchmark kit folder (run_corpus.py)")
+    ap.add_argument("--kit", required=True, help="the benchmark kit's folder (run_corpus.py, compare.py, its built metro and peers)")
     ap.add_argument("--bin", help="folder with the kit's metro and peers (default KIT/build)")
     ap.add_argument("--corpus", required=True, help="the corpus folder (manifest.json)")
     ap.add_argument("--cli", required=True, help="our meshsimplify")
