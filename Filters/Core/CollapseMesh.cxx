@@ -460,12 +460,13 @@ bool CollapseMesh::FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::in
   return folds;
 }
 
-bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
+CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) const
 {
   const Eigen::Vector3d& x = plan.Position;
   const bool guardAngles = plan.GuardAngles && this->MinimumAngleCosine < 1.0;
   double worstAfter = -1.0; // cosine of the smallest new angle
-  const bool valid = this->ForEachChangedTriangle(plan,
+  CollapseCheck failed = CollapseCheck::Passed;
+  this->ForEachChangedTriangle(plan,
     [&](std::int32_t s, std::int32_t t, std::int32_t pId, std::int32_t qId) {
       const Eigen::Vector3d& old = this->Points[s];
       const Eigen::Vector3d& p = this->Points[pId];
@@ -478,6 +479,7 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       const double sideNew = inward.dot(x - p);
       if (!(sideOld > 0.0 && sideNew > 0.0) && !(sideOld < 0.0 && sideNew < 0.0))
       {
+        failed = CollapseCheck::PlaneSide;
         return false;
       }
       if (guardAngles)
@@ -489,20 +491,27 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       const Eigen::Vector3d newNormal = (p - x).cross(q - x);
       if (!(newNormal.squaredNorm() > 1e-24 * edge.squaredNorm() * edge.squaredNorm()))
       {
+        failed = CollapseCheck::Degenerate;
         return false;
       }
       const double turn = newNormal.dot(normal);
-      return turn > FoldCheckTurnCosine * newNormal.norm() * normal.norm() || !this->FoldsAcross(plan, t, pId, qId, normal, newNormal);
+      if (!(turn > FoldCheckTurnCosine * newNormal.norm() * normal.norm()) &&
+        this->FoldsAcross(plan, t, pId, qId, normal, newNormal))
+      {
+        failed = CollapseCheck::FoldAcross;
+        return false;
+      }
+      return true;
     });
-  if (!valid)
+  if (failed != CollapseCheck::Passed)
   {
-    return false;
+    return failed;
   }
   // The angle guard: no new angle below the minimum unless the neighbourhood had one as small
   // (measured only when a new angle is below the minimum).
   if (!guardAngles || worstAfter <= this->MinimumAngleCosine)
   {
-    return true;
+    return CollapseCheck::Passed;
   }
   double worstBefore = -1.0;
   for (int i = 0; i < plan.Count; ++i)
@@ -512,7 +521,7 @@ bool CollapseMesh::KeepsTrianglesValid(const CollapsePlan& plan) const
       worstBefore = std::max(worstBefore, SmallestAngleCosine(this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]));
     });
   }
-  return worstAfter <= worstBefore;
+  return worstAfter <= worstBefore ? CollapseCheck::Passed : CollapseCheck::AngleGuard;
 }
 
 void CollapseMesh::SetMinimumAngle(double degrees)
@@ -520,44 +529,39 @@ void CollapseMesh::SetMinimumAngle(double degrees)
   this->MinimumAngleCosine = degrees > 0.0 ? std::cos(degrees * 3.14159265358979323846 / 180.0) : 1.0;
 }
 
-bool CollapseMesh::IsLegal(const CollapsePlan& plan, CheckScratch& scratch) const
+CollapseCheck CollapseMesh::FirstFailedCheck(const CollapsePlan& plan, CheckScratch& scratch) const
 {
   if (plan.Count < 2 || plan.Count > 3 || !plan.Position.allFinite())
   {
-    return false;
+    return CollapseCheck::Plan;
   }
   const std::int32_t* v = plan.Vertices;
   if (v[0] == v[1] || (plan.Count == 3 && (v[2] == v[0] || v[2] == v[1])))
   {
-    return false;
+    return CollapseCheck::Plan;
   }
-  for (int i = 1; i < plan.Count; ++i)
+  const bool removesLocked =
+    std::any_of(v + 1, v + plan.Count, [this](std::int32_t w) { return this->Locked[w] != 0; });
+  if (removesLocked || (this->Locked[v[0]] && plan.Position != this->Points[v[0]]))
   {
-    if (this->Locked[v[i]])
-    {
-      return false;
-    }
-  }
-  if (this->Locked[v[0]] && plan.Position != this->Points[v[0]])
-  {
-    return false;
+    return CollapseCheck::Locks;
   }
   if (!this->Regions.empty() &&
     (this->Regions[v[1]] != this->Regions[v[0]] || (plan.Count == 3 && this->Regions[v[2]] != this->Regions[v[0]])))
   {
-    return false;
+    return CollapseCheck::Regions;
   }
   if (!this->LinkCondition(v, 1, v[1], scratch) ||
     (plan.Count == 3 && !this->LinkCondition(v, 2, v[2], scratch)))
   {
-    return false;
+    return CollapseCheck::LinkCondition;
   }
   if (this->HasSharedLocks && this->Locked[v[0]] == SharedPointLock &&
     !this->KeepsSharedEdges(plan, scratch))
   {
-    return false;
+    return CollapseCheck::SharedEdges;
   }
-  return this->KeepsTrianglesValid(plan);
+  return this->ChangedTrianglesCheck(plan);
 }
 
 bool CollapseMesh::KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const

@@ -22,7 +22,8 @@
  * the attribute weights (value(kept) := Σ weight_i · value(vertex_i)) and, unless records are
  * trimmed, what Undo() needs to split the vertex again.
  *
- * The checks (IsLegal) are those of the decimators built on the engine:
+ * The checks (IsLegal; FirstFailedCheck names the first that fails, CollapseCheck) are those of
+ * the decimators built on the engine, in the order they run:
  * - locks: a locked vertex is never removed or moved (non-manifold vertices are always locked);
  *   no collapse joins two vertices locked as shared with another piece of a distributed mesh by
  *   an edge they did not have (the other piece might make the same edge, and the merged pieces
@@ -114,6 +115,22 @@ struct CollapseRecord
   VertexClass KeptClass = VertexClass::Interior;          // before the collapse
   std::int32_t FirstChange = 0, ChangeCount = 0;
   std::int32_t FirstRemovedTriangle = 0, RemovedTriangleCount = 0;
+};
+
+/// The checks of IsLegal in the order it runs them (listed at the top of this file); the first
+/// that fails names the refusal, so a caller that reacts to it never runs the checks again.
+enum class CollapseCheck : std::uint8_t
+{
+  Passed,        // every check passed
+  Plan,          // not two or three distinct vertices, or a position that is not finite
+  Locks,         // removes or moves a locked vertex
+  Regions,       // merges vertices of different regions
+  LinkCondition, // an edge of three triangles, a hidden cycle, a pinch, a vertex left too few neighbours
+  SharedEdges,   // a new edge between two vertices shared with another piece
+  PlaneSide,     // a changed triangle turns over (the plane-side test)
+  Degenerate,    // a changed triangle of (almost) zero area
+  FoldAcross,    // a changed triangle ends back to back with its unchanged neighbour
+  AngleGuard     // a new angle below the minimum (SetMinimumAngle); every other check passed
 };
 
 /// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
@@ -248,7 +265,17 @@ public:
   /// Whether the plan passes every check listed at the top of this file.
   bool IsLegal(const CollapsePlan& plan) const { return this->IsLegal(plan, this->Scratch); }
   /// The same with the caller's scratch: concurrent calls read the mesh only.
-  bool IsLegal(const CollapsePlan& plan, CheckScratch& scratch) const;
+  bool IsLegal(const CollapsePlan& plan, CheckScratch& scratch) const
+  {
+    return this->FirstFailedCheck(plan, scratch) == CollapseCheck::Passed;
+  }
+  /// The first check the plan fails, or Passed. AngleGuard means that the same plan with
+  /// GuardAngles off is legal.
+  CollapseCheck FirstFailedCheck(const CollapsePlan& plan, CheckScratch& scratch) const;
+  CollapseCheck FirstFailedCheck(const CollapsePlan& plan) const
+  {
+    return this->FirstFailedCheck(plan, this->Scratch);
+  }
 
   /// The angle guard's minimum in degrees; 0 (default) turns it off.
   void SetMinimumAngle(double degrees);
@@ -325,13 +352,14 @@ private:
   /// triangles removed.
   int Merge(const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo,
     std::int64_t& droppedRefs);
-  bool KeepsTrianglesValid(const CollapsePlan& plan) const;
+  /// The checks on the triangles the plan changes: PlaneSide, Degenerate, FoldAcross, AngleGuard.
+  CollapseCheck ChangedTrianglesCheck(const CollapsePlan& plan) const;
   /// Calls f(s, t, p, q) for each triangle t the plan keeps but changes: s its merged vertex
   /// that moves, p and q its other corners in order; f returns false to stop, and so does this.
   template <typename F>
   bool ForEachChangedTriangle(const CollapsePlan& plan, F&& f) const;
   /// Whether triangle t, turned from normal before to after by the plan, would lie back to back
-  /// with the unchanged triangle across its edge pq (see KeepsTrianglesValid).
+  /// with the unchanged triangle across its edge pq (see ChangedTrianglesCheck).
   bool FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::int32_t p, std::int32_t q,
     const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
   /// No new edge between the kept vertex and another shared one, when the kept one is shared.

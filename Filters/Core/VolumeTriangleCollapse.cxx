@@ -8,9 +8,11 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace meshsimp
 {
@@ -730,12 +732,20 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
 bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate, Scratch& scratch) const
 {
   // When the free placement folds or degenerates the mesh, the triangle (or edge) may still
-  // collapse onto one of its corners: the legal one of least error.
+  // collapse onto one of its corners: the legal one of least error (the first of equal ones),
+  // so the corners are checked cheapest first. A valid candidate's quadric is finite.
   const CollapsePlan original = candidate.Plan;
   const int count = original.Count;
-  bool found = false;
+  std::array<std::pair<double, int>, 3> corners;
+  corners.fill({ std::numeric_limits<double>::infinity(), 3 }); // past count: sorted last
   for (int k = 0; k < count; ++k)
   {
+    corners[k] = { candidate.Q.Evaluate(this->Mesh.Point(original.Vertices[k])), k };
+  }
+  std::sort(corners.begin(), corners.end());
+  for (int c = 0; c < count; ++c)
+  {
+    const int k = corners[c].second;
     CollapsePlan plan;
     plan.Count = count;
     for (int i = 0; i < count; ++i)
@@ -743,16 +753,15 @@ bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate, Scratch& scratch)
       plan.Vertices[i] = original.Vertices[(k + i) % count];
     }
     plan.Position = this->Mesh.Point(plan.Vertices[0]);
-    const double cost = candidate.Q.Evaluate(plan.Position);
-    if ((!found || cost < candidate.Cost) && this->Mesh.IsLegal(plan, scratch.Check))
+    if (this->Mesh.IsLegal(plan, scratch.Check))
     {
       candidate.Plan = plan;
-      candidate.Cost = cost;
-      found = true;
+      candidate.Cost = corners[c].first;
+      candidate.Priority = PriorityOf(candidate.Cost, count) + this->SurfaceError(candidate.Plan);
+      return true;
     }
   }
-  candidate.Priority = PriorityOf(candidate.Cost, count) + this->SurfaceError(candidate.Plan);
-  return found;
+  return false;
 }
 
 double VolumeCollapser::NewSmallestAngle(const CollapsePlan& plan) const
@@ -780,7 +789,8 @@ VolumeCollapser::Verdict VolumeCollapser::Examine(std::int32_t t, double queuedK
   {
     return Verdict::Stale;
   }
-  if (this->Mesh.IsLegal(candidate.Plan, scratch.Check))
+  const CollapseCheck failed = this->Mesh.FirstFailedCheck(candidate.Plan, scratch.Check);
+  if (failed == CollapseCheck::Passed)
   {
     return Verdict::Legal;
   }
@@ -793,11 +803,11 @@ VolumeCollapser::Verdict VolumeCollapser::Examine(std::int32_t t, double queuedK
     return Verdict::Fallback;
   }
   candidate = original;
-  candidate.Plan.GuardAngles = false;
-  if (!this->Mesh.IsLegal(candidate.Plan, scratch.Check))
+  if (failed != CollapseCheck::AngleGuard)
   {
     return Verdict::Illegal;
   }
+  candidate.Plan.GuardAngles = false; // legal so: the guard is the last check
   return this->IsFlat(candidate) ? Verdict::Fallback : Verdict::Sliver;
 }
 

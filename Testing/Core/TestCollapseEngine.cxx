@@ -14,6 +14,7 @@
 #include <random>
 #include <set>
 
+using meshsimp::CollapseCheck;
 using meshsimp::CollapseHeap;
 using meshsimp::CollapseMesh;
 using meshsimp::CollapsePlan;
@@ -241,8 +242,8 @@ void LinkConditionRejectsHiddenCycle()
   // and e2, which is not: collapsing e0-e1 would close the cycle e0 e1 e2 (paper 004 Fig. 8).
   Engine e(Bipyramid());
   const Eigen::Vector3d mid = 0.5 * (e.Point(2) + e.Point(3));
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 2, 3 }, mid)));
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 0, 2, 3 }, e.Point(0))));
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 2, 3 }, mid)) == CollapseCheck::LinkCondition);
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 0, 2, 3 }, e.Point(0))) == CollapseCheck::LinkCondition);
   // The same on a torus whose tube is a triangle: every vertex has six neighbours, and an edge
   // of the tube's ring would close that ring of three.
   Mesh torus;
@@ -269,14 +270,15 @@ void LinkConditionRejectsHiddenCycle()
   }
   Engine ring(torus);
   CHECK(ring.Mesh.Class(ring.Id[0]) == VertexClass::Interior);
-  CHECK(!ring.Mesh.IsLegal(ring.Plan({ 0, 1 }, 0.5 * (ring.Point(0) + ring.Point(1)))));
+  CHECK(ring.Mesh.FirstFailedCheck(ring.Plan({ 0, 1 }, 0.5 * (ring.Point(0) + ring.Point(1)))) ==
+    CollapseCheck::LinkCondition);
   CHECK(ring.Mesh.IsLegal(ring.Plan({ 0, 3 }, 0.5 * (ring.Point(0) + ring.Point(3))))); // along: fine
   // A tetrahedron's edges all fail too (nobody may drop below three neighbours).
   Mesh tetra;
   tetra.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   tetra.Triangles = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3 };
   Engine t(tetra);
-  CHECK(!t.Mesh.IsLegal(t.Plan({ 0, 1 }, t.Point(0))));
+  CHECK(t.Mesh.FirstFailedCheck(t.Plan({ 0, 1 }, t.Point(0))) == CollapseCheck::LinkCondition);
 }
 
 void LinkConditionRejectsPinch()
@@ -286,7 +288,8 @@ void LinkConditionRejectsPinch()
   strip.Points = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0 };
   strip.Triangles = { 0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4 };
   Engine e(strip);
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 1, 4 }, 0.5 * (e.Point(1) + e.Point(4)))));
+  const CollapsePlan across = e.Plan({ 1, 4 }, 0.5 * (e.Point(1) + e.Point(4)));
+  CHECK(e.Mesh.FirstFailedCheck(across) == CollapseCheck::LinkCondition);
   // Along the boundary the same mesh may collapse.
   CHECK(e.Mesh.IsLegal(e.Plan({ 4, 3 }, e.Point(4))));
 }
@@ -298,11 +301,15 @@ void FoldOverAndDegenerateRejected()
   // Half-edge collapse of the centre onto its neighbour 13: legal.
   CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, e.Point(13))));
   // The same edge collapsed to a point beyond the ring turns triangles over (§5.3 test).
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, centre + Eigen::Vector3d(-0.6, 0.0, 0.0))));
-  // A point on the line of an opposite edge makes a triangle of zero area: rejected.
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.25, 0.5, 0.0))));
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 13, 12 }, centre + Eigen::Vector3d(-0.6, 0.0, 0.0))) ==
+    CollapseCheck::PlaneSide);
+  // A point on the line of an opposite edge makes a triangle of zero area: rejected (the
+  // plane-side test sees it on the plane).
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 13, 12 }, Eigen::Vector3d(0.25, 0.5, 0.0))) ==
+    CollapseCheck::PlaneSide);
   // So is one a hair inside it (1e-13 off the edge (6, 7)), which the plane-side test lets pass.
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.25 + 1e-13, 0.0))));
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.25 + 1e-13, 0.0))) ==
+    CollapseCheck::Degenerate);
   CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, Eigen::Vector3d(0.375, 0.3, 0.0))));
 
   // Vertex 14 moved onto the line from 13 to 19: the triangle (13, 14, 19) has no area. Collapsed
@@ -326,7 +333,8 @@ void FoldOntoNeighbourRejected()
   step.Points = { -1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -1, 0, -0.5, -2 }; // p q w o r
   step.Triangles = { 0, 1, 2, 3, 1, 0, 4, 1, 3, 4, 3, 0 };
   Engine e(step);
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, 0.1, -1e-9))));
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, 0.1, -1e-9))) ==
+    CollapseCheck::FoldAcross);
   CHECK(e.Mesh.IsLegal(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, -0.1, -1e-9))));
   CHECK(e.Mesh.IsLegal(e.Plan({ 3, 4 }, Eigen::Vector3d(0.0, 0.1, -0.5)))); // turned by 27 degrees
 }
@@ -341,16 +349,20 @@ void AngleGuardRejectsNewSlivers()
   const Eigen::Vector3d middle = 0.5 * (e.Point(12) + e.Point(13));
   CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, thin)));
   e.Mesh.SetMinimumAngle(10.0);
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, thin)));
+  CollapsePlan sliver = e.Plan({ 13, 12 }, thin);
+  CHECK(e.Mesh.FirstFailedCheck(sliver) == CollapseCheck::AngleGuard);
   CHECK(e.Mesh.IsLegal(e.Plan({ 13, 12 }, middle)));
+  sliver.GuardAngles = false; // what AngleGuard promises: legal without the guard
+  CHECK(e.Mesh.IsLegal(sliver));
 }
 
 void LockedVerticesStay()
 {
   Engine e(Grid(4));
   e.Mesh.Lock(e.Id[12]);
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 13, 12 }, e.Point(13))));  // removes the locked vertex
-  CHECK(!e.Mesh.IsLegal(e.Plan({ 12, 13 }, 0.5 * (e.Point(12) + e.Point(13)))));  // moves it
+  // Removes the locked vertex; moves it.
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 13, 12 }, e.Point(13))) == CollapseCheck::Locks);
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 12, 13 }, 0.5 * (e.Point(12) + e.Point(13)))) == CollapseCheck::Locks);
   CHECK(e.Mesh.IsLegal(e.Plan({ 12, 13 }, e.Point(12))));  // keeps it in place
 }
 
@@ -362,7 +374,8 @@ void SharedVerticesGetNoNewEdge()
   Engine shared(Grid(4));
   shared.Mesh.Lock(shared.Id[12], true);
   shared.Mesh.Lock(shared.Id[14], true);
-  CHECK(!shared.Mesh.IsLegal(shared.Plan({ 12, 13 }, shared.Point(12))));
+  CHECK(shared.Mesh.FirstFailedCheck(shared.Plan({ 12, 13 }, shared.Point(12))) ==
+    CollapseCheck::SharedEdges);
   CHECK(shared.Mesh.IsLegal(shared.Plan({ 12, 11 }, shared.Point(12))));
   Engine plain(Grid(4));
   plain.Mesh.Lock(plain.Id[12], true);
