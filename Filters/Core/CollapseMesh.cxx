@@ -148,7 +148,33 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->Undone.clear();
   this->Changes.clear();
   this->RemovedTriangles.clear();
+  this->AngleCosines.clear();
+  if (this->MinimumAngleCosine < 1.0)
+  {
+    this->MeasureAllAngles(context);
+  }
   mesh = CompactMesh();
+}
+
+void CollapseMesh::MeasureAllAngles(const ExecutionContext& context)
+{
+  const std::int64_t m = static_cast<std::int64_t>(this->Alive.size());
+  this->AngleCosines.resize(m);
+  context.For(m, [&](std::int64_t first, std::int64_t last) {
+    for (std::int64_t t = first; t < last; ++t)
+    {
+      this->MeasureAngles(static_cast<std::int32_t>(t));
+    }
+  }, 30 * m);
+}
+
+void CollapseMesh::SetPoint(std::int32_t v, const Eigen::Vector3d& x)
+{
+  this->Points[v] = x;
+  if (!this->AngleCosines.empty())
+  {
+    this->ForEachTriangle(v, [this](std::int32_t t) { this->MeasureAngles(t); });
+  }
 }
 
 Eigen::Vector3d CollapseMesh::Normal(std::int32_t t) const
@@ -516,10 +542,8 @@ CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) cons
   double worstBefore = -1.0;
   for (int i = 0; i < plan.Count; ++i)
   {
-    this->ForEachTriangle(plan.Vertices[i], [&](std::int32_t t) {
-      const std::int32_t* tri = this->Triangle(t);
-      worstBefore = std::max(worstBefore, SmallestAngleCosine(this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]));
-    });
+    this->ForEachTriangle(
+      plan.Vertices[i], [&](std::int32_t t) { worstBefore = std::max(worstBefore, this->AngleCosines[t]); });
   }
   return worstAfter <= worstBefore ? CollapseCheck::Passed : CollapseCheck::AngleGuard;
 }
@@ -527,6 +551,10 @@ CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) cons
 void CollapseMesh::SetMinimumAngle(double degrees)
 {
   this->MinimumAngleCosine = degrees > 0.0 ? std::cos(degrees * 3.14159265358979323846 / 180.0) : 1.0;
+  if (this->MinimumAngleCosine < 1.0 && this->AngleCosines.empty())
+  {
+    this->MeasureAllAngles({});
+  }
 }
 
 CollapseCheck CollapseMesh::FirstFailedCheck(const CollapsePlan& plan, CheckScratch& scratch) const
@@ -794,6 +822,10 @@ int CollapseMesh::Merge(
     });
   }
   this->Points[kept] = plan.Position;
+  for (const std::int32_t t : span)
+  {
+    this->MeasureAngles(t); // its shape changed
+  }
   for (int i = 1; i < plan.Count; ++i)
   {
     const VertexClass c = this->Classes[plan.Vertices[i]];
@@ -963,6 +995,10 @@ void CollapseMesh::Undo()
   }
   this->Points[kept] = record.KeptPosition;
   this->Classes[kept] = record.KeptClass;
+  for (const std::int32_t t : candidates)
+  {
+    this->MeasureAngles(t);
+  }
 
   std::vector<std::int32_t> span;
   for (const std::int32_t v : { kept, record.Removed[0], record.Removed[1] })

@@ -43,7 +43,8 @@
  *   edge, nor more so where it already was (the plane-side test lets a turn of up to 90 degrees
  *   through, which on exact CAD geometry lays a wall triangle flat onto the face at its rim);
  * - optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
- *   neighbourhood already had one as small, so simplification does not breed slivers.
+ *   neighbourhood already had one as small, so simplification does not breed slivers (each
+ *   triangle's smallest angle is kept from then on, so the neighbourhood's is looked up).
  */
 #ifndef MeshSimplification_CollapseMesh_h
 #define MeshSimplification_CollapseMesh_h
@@ -170,7 +171,9 @@ public:
   bool IsAlive(std::int32_t t) const { return this->Alive[t] != 0; }
   const std::int32_t* Triangle(std::int32_t t) const { return this->Triangles.data() + 3 * t; }
   const Eigen::Vector3d& Point(std::int32_t v) const { return this->Points[v]; }
-  void SetPoint(std::int32_t v, const Eigen::Vector3d& x) { this->Points[v] = x; }
+  /// Moves v (while the angle guard is on, also re-measures its triangles: then not
+  /// concurrently with a neighbour).
+  void SetPoint(std::int32_t v, const Eigen::Vector3d& x);
 
   VertexClass Class(std::int32_t v) const { return this->Classes[v]; }
   bool OnBoundary(std::int32_t v) const
@@ -371,6 +374,18 @@ private:
   std::int32_t& PlaceIn(std::int32_t v, std::int32_t t);
   /// Takes t out of w's span (see the top of the file).
   void DropFromSpan(std::int32_t w, std::int32_t t);
+  /// AngleCosines for every triangle (from Build, or when the guard is first turned on).
+  void MeasureAllAngles(const ExecutionContext& context);
+  /// AngleCosines[t] for t's current points, when AngleCosines is kept.
+  void MeasureAngles(std::int32_t t)
+  {
+    if (!this->AngleCosines.empty())
+    {
+      const std::int32_t* tri = this->Triangle(t);
+      this->AngleCosines[t] =
+        SmallestAngleCosine(this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]);
+    }
+  }
   /// Adds t at the end of w's indexed span (see the top of the file), unless it is there.
   void AddToIndexedSpan(std::int32_t w, std::int32_t t);
   /// Refs rewritten with only the live spans, in vertex order (by parts concurrently).
@@ -396,6 +411,9 @@ private:
   std::vector<std::uint8_t> Shared; // ApplyIndependent: spans updated after the concurrent merges
 
   double MinimumAngleCosine = 1.0;
+  // Per triangle the cosine of its smallest angle, kept from the first SetMinimumAngle on (the
+  // angle guard compares a collapse's new angles with its neighbourhood's), else empty.
+  std::vector<double> AngleCosines;
   std::vector<std::int32_t> Regions;
 
   std::vector<CollapseRecord> History;

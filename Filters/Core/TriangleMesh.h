@@ -215,14 +215,16 @@ CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContex
 inline double SmallestAngleCosine(
   const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
 {
-  const Eigen::Vector3d* p[3] = { &a, &b, &c };
+  // The edges leaving a, b and c; the angle at a is between ab and -ca, and so on (negating a
+  // vector changes no rounding, so each length and dot product is measured once).
+  const Eigen::Vector3d edge[3] = { b - a, c - b, a - c };
+  const double length[3] = { edge[0].norm(), edge[1].norm(), edge[2].norm() };
   double largest = -1.0;
   for (int k = 0; k < 3; ++k)
   {
-    const Eigen::Vector3d e1 = *p[(k + 1) % 3] - *p[k];
-    const Eigen::Vector3d e2 = *p[(k + 2) % 3] - *p[k];
-    const double lengths = e1.norm() * e2.norm();
-    largest = std::max(largest, lengths > 0.0 ? e1.dot(e2) / lengths : 1.0);
+    const int before = (k + 2) % 3; // the edge that arrives at corner k
+    const double lengths = length[k] * length[before];
+    largest = std::max(largest, lengths > 0.0 ? -edge[k].dot(edge[before]) / lengths : 1.0);
   }
   return largest;
 }

@@ -356,6 +356,76 @@ void AngleGuardRejectsNewSlivers()
   CHECK(e.Mesh.IsLegal(sliver));
 }
 
+/// A random plan on an alive triangle: an edge or the triangle, onto its first corner (one time
+/// in three) or at a random blend of its corners.
+CollapsePlan RandomPlan(const CollapseMesh& mesh, std::mt19937& random)
+{
+  std::int32_t t = static_cast<std::int32_t>(random() % mesh.NumberOfTriangles());
+  while (!mesh.IsAlive(t))
+  {
+    t = (t + 1) % static_cast<std::int32_t>(mesh.NumberOfTriangles());
+  }
+  const std::int32_t* tri = mesh.Triangle(t);
+  CollapsePlan plan;
+  plan.Count = random() % 2 ? 3 : 2;
+  std::copy(tri, tri + 3, plan.Vertices);
+  std::uniform_real_distribution<double> share(0.0, 1.0);
+  double total = 0.0;
+  plan.Position.setZero();
+  for (int k = 0; k < plan.Count; ++k)
+  {
+    const double w = share(random);
+    plan.Position += w * mesh.Point(tri[k]);
+    total += w;
+  }
+  plan.Position = random() % 3 == 0 ? mesh.Point(tri[0]) : Eigen::Vector3d(plan.Position / total);
+  return plan;
+}
+
+void AngleGuardFollowsCollapses()
+{
+  // The angle guard compares a collapse's new angles with the smallest angles around it, which
+  // the engine keeps per triangle through collapses, undos and moved points: a mesh that had the
+  // guard on throughout judges every plan as one that turns it on only at the end.
+  Engine throughout(Sphere(8)), atEnd(Sphere(8));
+  throughout.Mesh.SetMinimumAngle(25.0);
+  std::mt19937 random(11);
+  for (int attempt = 0; attempt < 3000 && throughout.Mesh.NumberOfAliveTriangles() > 60; ++attempt)
+  {
+    CollapsePlan plan = RandomPlan(throughout.Mesh, random);
+    plan.GuardAngles = false;
+    if (!throughout.Mesh.IsLegal(plan))
+    {
+      continue;
+    }
+    throughout.Mesh.Apply(plan);
+    atEnd.Mesh.Apply(plan);
+    if (random() % 4 == 0)
+    {
+      throughout.Mesh.Undo();
+      atEnd.Mesh.Undo();
+    }
+    if (random() % 5 == 0)
+    {
+      const std::int32_t v = static_cast<std::int32_t>(random() % throughout.Mesh.NumberOfPoints());
+      const Eigen::Vector3d moved = throughout.Mesh.Point(v) + 0.05 * Eigen::Vector3d::Random();
+      throughout.Mesh.SetPoint(v, moved);
+      atEnd.Mesh.SetPoint(v, moved);
+    }
+  }
+  CHECK(throughout.Mesh.NumberOfAliveTriangles() <= 60);
+  atEnd.Mesh.SetMinimumAngle(25.0);
+  int guarded = 0;
+  for (int attempt = 0; attempt < 3000; ++attempt)
+  {
+    const CollapsePlan plan = RandomPlan(throughout.Mesh, random);
+    const CollapseCheck failed = throughout.Mesh.FirstFailedCheck(plan);
+    CHECK(failed == atEnd.Mesh.FirstFailedCheck(plan));
+    guarded += failed == CollapseCheck::AngleGuard ? 1 : 0;
+  }
+  CHECK(guarded > 50);
+}
+
 void LockedVerticesStay()
 {
   Engine e(Grid(4));
@@ -1197,6 +1267,7 @@ int main()
     { "FoldOverAndDegenerateRejected", FoldOverAndDegenerateRejected },
     { "FoldOntoNeighbourRejected", FoldOntoNeighbourRejected },
     { "AngleGuardRejectsNewSlivers", AngleGuardRejectsNewSlivers },
+    { "AngleGuardFollowsCollapses", AngleGuardFollowsCollapses },
     { "LockedVerticesStay", LockedVerticesStay },
     { "SharedVerticesGetNoNewEdge", SharedVerticesGetNoNewEdge },
     { "CollapseUndoRedo", CollapseUndoRedo },
