@@ -54,6 +54,7 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -133,6 +134,7 @@ enum class CollapseCheck : std::uint8_t
   FoldAcross,    // a changed triangle ends back to back with its unchanged neighbour
   AngleGuard     // a new angle below the minimum (SetMinimumAngle); every other check passed
 };
+constexpr std::size_t NumberOfCollapseChecks = 10; // the values of CollapseCheck
 
 /// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
 struct CollapsePlan

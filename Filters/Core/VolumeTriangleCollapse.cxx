@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <utility>
 
 namespace meshsimp
@@ -213,6 +214,8 @@ private:
   /// The last resort when no triangle's plan is legal: half-edge collapses of any edge, cheapest
   /// first, while at least floor triangles stay. Returns whether any was made.
   bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
+  /// ": of the N half-edge collapses tried, x % would ..." from RefusedBy, or empty.
+  std::string RefusalSummary() const;
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
   /// The outcome: why it stopped where it did, and the angle guard's note.
   void Judge(VolumeCollapseResult& result) const;
@@ -243,6 +246,9 @@ private:
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0; // MaximumError in normalised units; < 0: no bound
   bool StoppedEarly = false; // no legal collapse was left before the target
+  // The last resort's last pass, when it found no legal edge: what refused each edge collapse
+  // (by CollapseCheck), for the report.
+  std::array<std::int64_t, NumberOfCollapseChecks> RefusedBy{};
   std::int64_t BatchLimit = 1;            // Options.BatchSize, at most BatchShare of the mesh
   std::vector<std::uint32_t> VertexMarks; // ClaimNeighbourhood's stamps
   std::uint32_t Stamp = 0;
@@ -1195,6 +1201,7 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
   }
   std::stable_sort(options.begin(), options.end(), [](const Option& a, const Option& b) { return a.Cost < b.Cost; });
   bool any = false;
+  this->RefusedBy.fill(0);
   for (const Option& option : options)
   {
     CollapsePlan plan;
@@ -1206,8 +1213,13 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
     {
       break;
     }
-    if (this->Mesh.NumberOfTrianglesAround(option.Kept) > 0 && this->Mesh.NumberOfTrianglesAround(option.Other) > 0 &&
-      this->Mesh.IsLegal(plan) && this->Mesh.NumberOfAliveTriangles() - this->CountRemoved(plan) >= floor)
+    if (this->Mesh.NumberOfTrianglesAround(option.Kept) == 0 || this->Mesh.NumberOfTrianglesAround(option.Other) == 0)
+    {
+      continue;
+    }
+    const CollapseCheck failed = this->Mesh.FirstFailedCheck(plan);
+    ++this->RefusedBy[static_cast<std::size_t>(failed)];
+    if (failed == CollapseCheck::Passed && this->Mesh.NumberOfAliveTriangles() - this->CountRemoved(plan) >= floor)
     {
       this->Commit(plan, option.Cost, result);
       any = true;
@@ -1398,6 +1410,42 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
   result.FieldValues.emplace_back("SquareVolumeError", result.SquareVolumeError);
 }
 
+std::string VolumeCollapser::RefusalSummary() const
+{
+  // What refused the edge collapses left (the last resort's last pass), the two commonest
+  // reasons first, with their shares: on a mesh stuck at its non-manifold edges the user reads
+  // that locks stop it, not that something is wrong.
+  static const char* const Refusal[] = { "", "", "would remove or move a locked vertex (non-manifold ones always are)",
+    "would merge two regions of the border array", "would break the surface's topology (link condition)",
+    "would join two vertices on a piece border", "would turn a triangle over", "would leave a triangle without area",
+    "would fold a triangle onto its neighbour", "would make a new angle below the angle guard" };
+  static_assert(sizeof(Refusal) / sizeof(Refusal[0]) == NumberOfCollapseChecks, "one text per CollapseCheck");
+  std::int64_t total = 0;
+  std::vector<std::size_t> order;
+  for (std::size_t k = 2; k < this->RefusedBy.size(); ++k)
+  {
+    total += this->RefusedBy[k];
+    if (this->RefusedBy[k] > 0)
+    {
+      order.push_back(k);
+    }
+  }
+  if (total == 0)
+  {
+    return std::string();
+  }
+  std::stable_sort(order.begin(), order.end(),
+    [this](std::size_t a, std::size_t b) { return this->RefusedBy[a] > this->RefusedBy[b]; });
+  std::ostringstream text;
+  text << ": of the " << total << " half-edge collapses tried, ";
+  for (std::size_t i = 0; i < std::min<std::size_t>(2, order.size()); ++i)
+  {
+    text << (i > 0 ? ", " : "") << std::llround(100.0 * this->RefusedBy[order[i]] / total) << " % "
+         << Refusal[order[i]];
+  }
+  return text.str();
+}
+
 void VolumeCollapser::Judge(VolumeCollapseResult& result) const
 {
   // Why the count is where it is: the reason first, then what was changed to get there.
@@ -1405,7 +1453,7 @@ void VolumeCollapser::Judge(VolumeCollapseResult& result) const
   if (this->StoppedEarly && report.Stop == StopReason::TargetMet && this->BoundLimit < 0.0)
   {
     report.Stop = StopReason::NothingRemovable;
-    report.Reason = "no collapse is left that keeps the mesh valid";
+    report.Reason = "no collapse is left that keeps the mesh valid" + this->RefusalSummary();
   }
   if (this->GuardAngle < std::min(60.0, this->Options.MinimumAngle))
   {

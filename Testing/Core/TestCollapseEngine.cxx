@@ -1032,6 +1032,29 @@ void VolumeCollapseReachesSmallTargets()
   }
 }
 
+void VolumeCollapseSaysWhatStopsIt()
+{
+  // A grid whose points are all locked but every seventh stops far above a target of 10
+  // triangles; the reason names what refused the collapses left: the locks, first.
+  const Mesh grid = Grid(20);
+  std::vector<std::uint8_t> locks(grid.Points.size() / 3, 1);
+  for (std::size_t i = 0; i < locks.size(); i += 7)
+  {
+    locks[i] = 0;
+  }
+  meshsimp::VolumeCollapseOptions options;
+  options.Goal.SetTriangleCount(10);
+  options.LockedPoints = locks.data();
+  meshsimp::VolumeCollapseResult result;
+  CHECK(meshsimp::VolumeTriangleCollapse(grid.View(), options, result));
+  CHECK(result.Triangles.size() / 3 > 400);
+  CHECK(result.Report.Stop == meshsimp::StopReason::NothingRemovable);
+  const std::string& reason = result.Report.Reason;
+  const std::size_t tried = reason.find("half-edge collapses tried, ");
+  CHECK(tried != std::string::npos);
+  CHECK(reason.find("would", tried) == reason.find("would remove or move a locked vertex", tried));
+}
+
 void VolumeCollapseDefaultGuardReachesPlaneTarget()
 {
   // The default angle guard (10°) does not stop a flat grid short of a 95 % target, and the
@@ -1284,6 +1307,7 @@ int main()
     { "VolumeCollapseSurfaceTermKeepsSurfaceClose", VolumeCollapseSurfaceTermKeepsSurfaceClose },
     { "VolumeCollapseKeepsErrorBound", VolumeCollapseKeepsErrorBound },
     { "VolumeCollapseReachesSmallTargets", VolumeCollapseReachesSmallTargets },
+    { "VolumeCollapseSaysWhatStopsIt", VolumeCollapseSaysWhatStopsIt },
     { "VolumeCollapseDefaultGuardReachesPlaneTarget", VolumeCollapseDefaultGuardReachesPlaneTarget },
     { "VolumeCollapseLowersGuardRatherThanStop", VolumeCollapseLowersGuardRatherThanStop },
     { "VolumeCollapseKeepsHoleRims", VolumeCollapseKeepsHoleRims },
