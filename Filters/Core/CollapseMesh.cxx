@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <sstream>
 
 namespace meshsimp
 {
@@ -1070,6 +1071,27 @@ bool CollapseMesh::Redo()
   this->Apply(plan);
   undone.swap(this->Undone);
   return true;
+}
+
+std::string DescribeRefusals(const RefusalCounts& counts)
+{
+  // One text per CollapseCheck, in its order.
+  static const char* const Refusal[] = { "pass the engine's checks but not the filter's own",
+    "are not plans of two or three vertices", "would remove or move a locked vertex (non-manifold ones always are)",
+    "would merge two regions of the border array", "would break the surface's topology (link condition)",
+    "would join two vertices on a piece border", "would turn a triangle over", "would leave a triangle without area",
+    "would fold a triangle onto its neighbour", "would make a new angle below the angle guard" };
+  static_assert(sizeof(Refusal) / sizeof(Refusal[0]) == NumberOfCollapseChecks, "one text per CollapseCheck");
+  const std::int64_t total = std::accumulate(counts.begin(), counts.end(), std::int64_t(0));
+  std::vector<std::size_t> order(counts.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&counts](std::size_t a, std::size_t b) { return counts[a] > counts[b]; });
+  std::ostringstream text;
+  for (std::size_t i = 0; i < 2 && total > 0 && counts[order[i]] > 0; ++i)
+  {
+    text << (i > 0 ? ", " : "") << std::llround(100.0 * counts[order[i]] / total) << " % " << Refusal[order[i]];
+  }
+  return text.str();
 }
 
 void InterpolateAttributes(const std::vector<CollapseRecord>& records, double* values, int components)

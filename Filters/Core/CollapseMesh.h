@@ -54,8 +54,10 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -135,6 +137,15 @@ enum class CollapseCheck : std::uint8_t
   AngleGuard     // a new angle below the minimum (SetMinimumAngle); every other check passed
 };
 constexpr std::size_t NumberOfCollapseChecks = 10; // the values of CollapseCheck
+/// How many plans failed each check first (indexed by CollapseCheck; Passed counts legal ones).
+using RefusalCounts = std::array<std::int64_t, NumberOfCollapseChecks>;
+
+/**
+ * The two commonest refusals among counts, with their shares of all the plans counted, for a
+ * report: "71 % would remove or move a locked vertex (...), 25 % would break ...". Passed plans
+ * count as refused by the filter's own rules. Empty when nothing was counted.
+ */
+std::string DescribeRefusals(const RefusalCounts& counts);
 
 /// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
 struct CollapsePlan

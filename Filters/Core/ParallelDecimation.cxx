@@ -303,6 +303,9 @@ private:
   bool Unstick(bool all, double& fraction, ParallelDecimationResult& result);
   /// The outcome: why it stopped where it did, and the relaxations' note.
   void Judge(ParallelDecimationResult& result) const;
+  /// ": of the N vertices left, L are locked ...; of the others' M half-edge collapses, x % would
+  /// ..." for a stop short of the target.
+  std::string RefusalSummary() const;
   /// MoveSurvivors: each survivor to its quadric's point of least error, where that turns no
   /// triangle too far. Returns the number moved.
   std::int64_t MoveSurvivors();
@@ -1097,6 +1100,43 @@ bool Decimator::RemoveToTarget(std::int64_t target, ParallelDecimationResult& re
   return true;
 }
 
+std::string Decimator::RefusalSummary() const
+{
+  // Why no vertex can be removed: the locked ones (non-manifold ones always are), and what
+  // refuses every half-edge collapse of the others (measured once, at the stop).
+  std::int64_t left = 0, locked = 0;
+  RefusalCounts refused{};
+  std::vector<std::int32_t> neighbours;
+  CollapsePlan plan;
+  plan.Count = 2;
+  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
+  {
+    if (this->Mesh.NumberOfTrianglesAround(v) == 0)
+    {
+      continue;
+    }
+    ++left;
+    if (this->Mesh.IsLocked(v))
+    {
+      ++locked;
+      continue;
+    }
+    this->Mesh.Neighbours(v, neighbours);
+    for (const std::int32_t u : neighbours)
+    {
+      plan.Vertices[0] = u;
+      plan.Vertices[1] = v;
+      plan.Position = this->Mesh.Point(u);
+      ++refused[static_cast<std::size_t>(this->Mesh.FirstFailedCheck(plan))];
+    }
+  }
+  const std::int64_t tried = std::accumulate(refused.begin(), refused.end(), std::int64_t(0));
+  std::string text = ": of the " + std::to_string(left) + " vertices left, " + std::to_string(locked) +
+    " are locked (non-manifold ones always are)";
+  return tried == 0 ? text
+                    : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " + DescribeRefusals(refused);
+}
+
 void Decimator::Judge(ParallelDecimationResult& result) const
 {
   // Why the count is where it is: the reason first, then what was changed to get there.
@@ -1104,7 +1144,7 @@ void Decimator::Judge(ParallelDecimationResult& result) const
   if (this->StoppedEarly && this->BoundLimit < 0.0 && report.Stop == StopReason::TargetMet)
   {
     report.Stop = StopReason::NothingRemovable;
-    report.Reason = "no vertex is left that can be removed";
+    report.Reason = "no vertex is left that can be removed" + this->RefusalSummary();
   }
   if (result.Relaxations > 0)
   {

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -248,7 +249,7 @@ private:
   bool StoppedEarly = false; // no legal collapse was left before the target
   // The last resort's last pass, when it found no legal edge: what refused each edge collapse
   // (by CollapseCheck), for the report.
-  std::array<std::int64_t, NumberOfCollapseChecks> RefusedBy{};
+  RefusalCounts RefusedBy{};
   std::int64_t BatchLimit = 1;            // Options.BatchSize, at most BatchShare of the mesh
   std::vector<std::uint32_t> VertexMarks; // ClaimNeighbourhood's stamps
   std::uint32_t Stamp = 0;
@@ -1412,38 +1413,11 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
 
 std::string VolumeCollapser::RefusalSummary() const
 {
-  // What refused the edge collapses left (the last resort's last pass), the two commonest
-  // reasons first, with their shares: on a mesh stuck at its non-manifold edges the user reads
-  // that locks stop it, not that something is wrong.
-  static const char* const Refusal[] = { "", "", "would remove or move a locked vertex (non-manifold ones always are)",
-    "would merge two regions of the border array", "would break the surface's topology (link condition)",
-    "would join two vertices on a piece border", "would turn a triangle over", "would leave a triangle without area",
-    "would fold a triangle onto its neighbour", "would make a new angle below the angle guard" };
-  static_assert(sizeof(Refusal) / sizeof(Refusal[0]) == NumberOfCollapseChecks, "one text per CollapseCheck");
-  std::int64_t total = 0;
-  std::vector<std::size_t> order;
-  for (std::size_t k = 2; k < this->RefusedBy.size(); ++k)
-  {
-    total += this->RefusedBy[k];
-    if (this->RefusedBy[k] > 0)
-    {
-      order.push_back(k);
-    }
-  }
-  if (total == 0)
-  {
-    return std::string();
-  }
-  std::stable_sort(order.begin(), order.end(),
-    [this](std::size_t a, std::size_t b) { return this->RefusedBy[a] > this->RefusedBy[b]; });
-  std::ostringstream text;
-  text << ": of the " << total << " half-edge collapses tried, ";
-  for (std::size_t i = 0; i < std::min<std::size_t>(2, order.size()); ++i)
-  {
-    text << (i > 0 ? ", " : "") << std::llround(100.0 * this->RefusedBy[order[i]] / total) << " % "
-         << Refusal[order[i]];
-  }
-  return text.str();
+  // What refused the half-edge collapses left: on a mesh stuck at its non-manifold edges the
+  // user reads that locks stop it, not that something is wrong.
+  const std::int64_t tried = std::accumulate(this->RefusedBy.begin(), this->RefusedBy.end(), std::int64_t(0));
+  return tried == 0 ? std::string()
+                    : ": of the " + std::to_string(tried) + " half-edge collapses tried, " + DescribeRefusals(this->RefusedBy);
 }
 
 void VolumeCollapser::Judge(VolumeCollapseResult& result) const

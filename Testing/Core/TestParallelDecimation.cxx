@@ -556,6 +556,18 @@ void BoundariesAndLocks()
   {
     CHECK(!locks[v] || present[v]);
   }
+  // Every point locked but every seventh: far above the target, and the reason counts the
+  // locked points and names what refuses the others' collapses.
+  std::fill(locks.begin(), locks.end(), 1);
+  for (std::size_t v = 0; v < locks.size(); v += 7)
+  {
+    locks[v] = 0;
+  }
+  ParallelDecimationResult stuck;
+  CHECK(meshsimp::ParallelDecimation(grid.View(), locked, stuck));
+  CHECK(stuck.Report.Stop == meshsimp::StopReason::NothingRemovable);
+  CHECK(stuck.Report.Reason.find("vertices left, ") != std::string::npos);
+  CHECK(stuck.Report.Reason.find(" are locked (non-manifold ones always are)") != std::string::npos);
 }
 
 void ProgressAndAbort()
