@@ -552,7 +552,11 @@ CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) cons
 void CollapseMesh::SetMinimumAngle(double degrees)
 {
   this->MinimumAngleCosine = degrees > 0.0 ? std::cos(degrees * 3.14159265358979323846 / 180.0) : 1.0;
-  if (this->MinimumAngleCosine < 1.0 && this->AngleCosines.empty())
+  if (this->MinimumAngleCosine == 1.0)
+  {
+    std::vector<double>().swap(this->AngleCosines); // nothing reads them until a guard is set
+  }
+  else if (this->AngleCosines.empty())
   {
     this->MeasureAllAngles({});
   }
@@ -1073,14 +1077,16 @@ bool CollapseMesh::Redo()
   return true;
 }
 
-std::string DescribeRefusals(const RefusalCounts& counts)
+std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText)
 {
-  // One text per CollapseCheck, in its order.
-  static const char* const Refusal[] = { "pass the engine's checks but not the filter's own",
-    "are not plans of two or three vertices", "would remove or move a locked vertex (non-manifold ones always are)",
+  // One text per CollapseCheck, in its order; Passed is the caller's.
+  static const char* const Refusal[] = { nullptr,
+    "are not valid plans (a repeated vertex or a position that is not finite)",
+    "would remove or move a locked vertex (non-manifold, or locked by the filter or its options)",
     "would merge two regions of the border array", "would break the surface's topology (link condition)",
-    "would join two vertices on a piece border", "would turn a triangle over", "would leave a triangle without area",
-    "would fold a triangle onto its neighbour", "would make a new angle below the angle guard" };
+    "would make a new edge between two vertices on a piece border", "would turn a triangle over",
+    "would leave a triangle without area", "would fold a triangle onto its neighbour",
+    "would make a new angle below the angle guard" };
   static_assert(sizeof(Refusal) / sizeof(Refusal[0]) == NumberOfCollapseChecks, "one text per CollapseCheck");
   const std::int64_t total = std::accumulate(counts.begin(), counts.end(), std::int64_t(0));
   std::vector<std::size_t> order(counts.size());
@@ -1089,7 +1095,9 @@ std::string DescribeRefusals(const RefusalCounts& counts)
   std::ostringstream text;
   for (std::size_t i = 0; i < 2 && total > 0 && counts[order[i]] > 0; ++i)
   {
-    text << (i > 0 ? ", " : "") << std::llround(100.0 * counts[order[i]] / total) << " % " << Refusal[order[i]];
+    const std::int64_t percent = std::llround(100.0 * counts[order[i]] / total);
+    text << (i > 0 ? ", " : "") << (percent > 0 ? std::to_string(percent) : std::string("<1")) << " % "
+         << (order[i] == 0 ? passedText : Refusal[order[i]]);
   }
   return text.str();
 }

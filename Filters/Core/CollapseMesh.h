@@ -23,17 +23,20 @@
  * trimmed, what Undo() needs to split the vertex again.
  *
  * The checks (IsLegal; FirstFailedCheck names the first that fails, CollapseCheck) are those of
- * the decimators built on the engine, in the order they run:
+ * the decimators built on the engine, in the order they run (the plan itself first: two or three
+ * distinct vertices, a finite position):
  * - locks: a locked vertex is never removed or moved (non-manifold vertices are always locked);
- *   no collapse joins two vertices locked as shared with another piece of a distributed mesh by
- *   an edge they did not have (the other piece might make the same edge, and the merged pieces
- *   would get an edge of four triangles);
  * - regions (SetRegions): no collapse merges vertices of different regions, so that the border
  *   between two values of a label or colour array stays sharp;
  * - the link condition, collapse by collapse: the common neighbours of the two sides are exactly
  *   the far corners of their shared triangles, so no edge gets three triangles and no "hidden
  *   cycle" (paper 004 Fig. 8) is closed; two boundary vertices are not joined across the
  *   interior; no vertex falls below three neighbours;
+ * - shared edges: no collapse joins two vertices locked as shared with another piece of a
+ *   distributed mesh by an edge they did not have (the other piece might make the same edge,
+ *   and the merged pieces would get an edge of four triangles);
+ * - then, triangle by triangle of those the plan changes, the next three (so the first failure
+ *   is that of the first such triangle to fail one):
  * - no fold-over, by the plane-side test of paper 001 §5.3: the new position stays on the inner
  *   side of the plane through every opposite edge perpendicular to its triangle;
  * - no degenerate triangle: every changed triangle keeps a non-zero area (a merged vertex that
@@ -42,7 +45,7 @@
  *   back to back (normals over 150 degrees apart) with the unchanged triangle across its far
  *   edge, nor more so where it already was (the plane-side test lets a turn of up to 90 degrees
  *   through, which on exact CAD geometry lays a wall triangle flat onto the face at its rim);
- * - optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
+ * - last, optionally (SetMinimumAngle), no new angle below a minimum unless the collapsed
  *   neighbourhood already had one as small, so simplification does not breed slivers (each
  *   triangle's smallest angle is kept from then on, so the neighbourhood's is looked up).
  */
@@ -137,15 +140,18 @@ enum class CollapseCheck : std::uint8_t
   AngleGuard     // a new angle below the minimum (SetMinimumAngle); every other check passed
 };
 constexpr std::size_t NumberOfCollapseChecks = 10; // the values of CollapseCheck
+static_assert(static_cast<std::size_t>(CollapseCheck::AngleGuard) + 1 == NumberOfCollapseChecks,
+  "NumberOfCollapseChecks counts CollapseCheck's values");
 /// How many plans failed each check first (indexed by CollapseCheck; Passed counts legal ones).
 using RefusalCounts = std::array<std::int64_t, NumberOfCollapseChecks>;
 
 /**
  * The two commonest refusals among counts, with their shares of all the plans counted, for a
- * report: "71 % would remove or move a locked vertex (...), 25 % would break ...". Passed plans
- * count as refused by the filter's own rules. Empty when nothing was counted.
+ * report: "71 % would remove or move a locked vertex (...), 25 % would break ...". Plans that
+ * passed were refused by a rule of the caller's, which passedText says ("would ..."). Empty
+ * when nothing was counted.
  */
-std::string DescribeRefusals(const RefusalCounts& counts);
+std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText);
 
 /// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
 struct CollapsePlan
@@ -184,8 +190,8 @@ public:
   bool IsAlive(std::int32_t t) const { return this->Alive[t] != 0; }
   const std::int32_t* Triangle(std::int32_t t) const { return this->Triangles.data() + 3 * t; }
   const Eigen::Vector3d& Point(std::int32_t v) const { return this->Points[v]; }
-  /// Moves v (while the angle guard is on, also re-measures its triangles: then not
-  /// concurrently with a neighbour).
+  /// Moves v (while an angle guard is set, also re-measures v's triangles: then not concurrently
+  /// with a neighbour).
   void SetPoint(std::int32_t v, const Eigen::Vector3d& x);
 
   VertexClass Class(std::int32_t v) const { return this->Classes[v]; }
@@ -293,7 +299,9 @@ public:
     return this->FirstFailedCheck(plan, this->Scratch);
   }
 
-  /// The angle guard's minimum in degrees; 0 (default) turns it off.
+  /// The angle guard's minimum in degrees; 0 (default) turns it off. From the first positive
+  /// minimum on (also when set before Build) every triangle's smallest angle is kept, measured
+  /// here in one thread, or in Build with its context.
   void SetMinimumAngle(double degrees);
   /// The cosine of the smallest angle among the triangles the plan keeps but changes, at its
   /// position: the angle guard's measure (-1 when it changes none).

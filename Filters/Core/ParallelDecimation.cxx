@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <string>
 
 namespace meshsimp
 {
@@ -364,6 +365,7 @@ private:
   std::vector<CollapsePlan> Plans, Applied;
   std::vector<std::uint8_t> Planned;
   bool StoppedEarly = false; // no removable vertex was left before the target
+  std::string StopSummary;   // then RefusalSummary, as the rounds stopped
 };
 
 void Decimator::CollectStar(std::int32_t v, Workspace& work) const
@@ -1084,6 +1086,7 @@ bool Decimator::RemoveToTarget(std::int64_t target, ParallelDecimationResult& re
       if (!this->Unstick(all, fraction, result))
       {
         this->StoppedEarly = true;
+        this->StopSummary = this->RefusalSummary(); // before survivors move (MoveSurvivors)
         break;
       }
       continue;
@@ -1103,7 +1106,7 @@ bool Decimator::RemoveToTarget(std::int64_t target, ParallelDecimationResult& re
 std::string Decimator::RefusalSummary() const
 {
   // Why no vertex can be removed: the locked ones (non-manifold ones always are), and what
-  // refuses every half-edge collapse of the others (measured once, at the stop).
+  // refuses every half-edge collapse of the others (measured once, where the rounds stop).
   std::int64_t left = 0, locked = 0;
   RefusalCounts refused{};
   std::vector<std::int32_t> neighbours;
@@ -1134,7 +1137,8 @@ std::string Decimator::RefusalSummary() const
   std::string text = ": of the " + std::to_string(left) + " vertices left, " + std::to_string(locked) +
     " are locked (non-manifold ones always are)";
   return tried == 0 ? text
-                    : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " + DescribeRefusals(refused);
+                    : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " +
+      DescribeRefusals(refused, "are refused by the filter's own rules (corners, normal deviation)");
 }
 
 void Decimator::Judge(ParallelDecimationResult& result) const
@@ -1144,7 +1148,7 @@ void Decimator::Judge(ParallelDecimationResult& result) const
   if (this->StoppedEarly && this->BoundLimit < 0.0 && report.Stop == StopReason::TargetMet)
   {
     report.Stop = StopReason::NothingRemovable;
-    report.Reason = "no vertex is left that can be removed" + this->RefusalSummary();
+    report.Reason = "no vertex is left that can be removed" + this->StopSummary;
   }
   if (result.Relaxations > 0)
   {

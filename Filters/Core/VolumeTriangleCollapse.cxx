@@ -14,6 +14,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace meshsimp
@@ -215,7 +216,7 @@ private:
   /// The last resort when no triangle's plan is legal: half-edge collapses of any edge, cheapest
   /// first, while at least floor triangles stay. Returns whether any was made.
   bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
-  /// ": of the N half-edge collapses tried, x % would ..." from RefusedBy, or empty.
+  /// ": of the N half-edge collapses left, x % would ..." from RefusedBy, or empty.
   std::string RefusalSummary() const;
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
   /// The outcome: why it stopped where it did, and the angle guard's note.
@@ -740,7 +741,7 @@ bool VolumeCollapser::OntoCheapestCorner(Candidate& candidate, Scratch& scratch)
 {
   // When the free placement folds or degenerates the mesh, the triangle (or edge) may still
   // collapse onto one of its corners: the legal one of least error (the first of equal ones),
-  // so the corners are checked cheapest first. A valid candidate's quadric is finite.
+  // so the corners are checked cheapest first (Quadric::Evaluate gives no NaN: it clamps at 0).
   const CollapsePlan original = candidate.Plan;
   const int count = original.Count;
   std::array<std::pair<double, int>, 3> corners;
@@ -1002,6 +1003,12 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
   this->Normalised = prepared;
   this->Diagonal = prepared.Diagonal > 0.0 ? prepared.Diagonal : 1.0;
+  // No triangle's smallest angle exceeds 60°: a larger guard (or an infinite one, which
+  // halving never lowers) would only refuse every collapse. Set before Build, which then
+  // measures every triangle's angles concurrently.
+  this->GuardAngle = std::min(60.0, std::max(0.0, this->Options.MinimumAngle));
+  result.FinalMinimumAngle = this->GuardAngle;
+  this->Mesh.SetMinimumAngle(this->GuardAngle);
   this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
   this->Mesh.SetRegions(std::move(prepared.Regions));
   if (prepared.Bound >= 0.0)
@@ -1009,11 +1016,6 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
     this->Bound.Build(this->Mesh);
     this->BoundLimit = prepared.Bound;
   }
-  // No triangle's smallest angle exceeds 60°: a larger guard (or an infinite one, which
-  // halving never lowers) would only refuse every collapse.
-  this->GuardAngle = std::min(60.0, std::max(0.0, this->Options.MinimumAngle));
-  result.FinalMinimumAngle = this->GuardAngle;
-  this->Mesh.SetMinimumAngle(this->GuardAngle);
   for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
   {
     if (prepared.Locks[v] || this->Mesh.Class(v) == VertexClass::Corner)
@@ -1203,6 +1205,7 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
   std::stable_sort(options.begin(), options.end(), [](const Option& a, const Option& b) { return a.Cost < b.Cost; });
   bool any = false;
   this->RefusedBy.fill(0);
+  std::vector<std::tuple<std::int32_t, std::int32_t, CollapseCheck>> verdicts; // for RefusedBy
   for (const Option& option : options)
   {
     CollapsePlan plan;
@@ -1219,11 +1222,21 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
       continue;
     }
     const CollapseCheck failed = this->Mesh.FirstFailedCheck(plan);
-    ++this->RefusedBy[static_cast<std::size_t>(failed)];
+    verdicts.emplace_back(option.Kept, option.Other, failed);
     if (failed == CollapseCheck::Passed && this->Mesh.NumberOfAliveTriangles() - this->CountRemoved(plan) >= floor)
     {
       this->Commit(plan, option.Cost, result);
       any = true;
+    }
+  }
+  if (!any)
+  {
+    // Nothing changed during the pass: each half-edge (listed from both its triangles) once.
+    std::sort(verdicts.begin(), verdicts.end());
+    verdicts.erase(std::unique(verdicts.begin(), verdicts.end()), verdicts.end());
+    for (const auto& verdict : verdicts)
+    {
+      ++this->RefusedBy[static_cast<std::size_t>(std::get<2>(verdict))];
     }
   }
   return any;
@@ -1417,7 +1430,8 @@ std::string VolumeCollapser::RefusalSummary() const
   // user reads that locks stop it, not that something is wrong.
   const std::int64_t tried = std::accumulate(this->RefusedBy.begin(), this->RefusedBy.end(), std::int64_t(0));
   return tried == 0 ? std::string()
-                    : ": of the " + std::to_string(tried) + " half-edge collapses tried, " + DescribeRefusals(this->RefusedBy);
+                    : ": of the " + std::to_string(tried) + " half-edge collapses left, " +
+      DescribeRefusals(this->RefusedBy, "would take the count below the target");
 }
 
 void VolumeCollapser::Judge(VolumeCollapseResult& result) const
