@@ -1205,7 +1205,8 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
   std::stable_sort(options.begin(), options.end(), [](const Option& a, const Option& b) { return a.Cost < b.Cost; });
   bool any = false;
   this->RefusedBy.fill(0);
-  std::vector<std::tuple<std::int32_t, std::int32_t, CollapseCheck>> verdicts; // for RefusedBy
+  // Until a collapse is made, what refused each option: the report of a pass that makes none.
+  std::vector<std::tuple<std::int32_t, std::int32_t, CollapseCheck>> verdicts;
   for (const Option& option : options)
   {
     CollapsePlan plan;
@@ -1222,11 +1223,14 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
       continue;
     }
     const CollapseCheck failed = this->Mesh.FirstFailedCheck(plan);
-    verdicts.emplace_back(option.Kept, option.Other, failed);
     if (failed == CollapseCheck::Passed && this->Mesh.NumberOfAliveTriangles() - this->CountRemoved(plan) >= floor)
     {
       this->Commit(plan, option.Cost, result);
       any = true;
+    }
+    else if (!any)
+    {
+      verdicts.emplace_back(option.Kept, option.Other, failed);
     }
   }
   if (!any)
