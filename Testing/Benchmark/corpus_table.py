@@ -2,8 +2,8 @@
 """The filters on the broad corpus: per class of input, geometric means of ours / peer, and
 whether each target holds (also in the worst class and the worst case).
 
-  /usr/bin/python3 Testing/Benchmark/corpus_table.py --kit KIT --corpus CORPUS \\
-      --cli build/bin/meshsimplify --workdir /tmp/corpus \\
+  python3 Testing/Benchmark/corpus_table.py --kit KIT --corpus CORPUS \\
+      --cli build/bin/meshsimplify --workdir corpus-work \\
       [--filters octree,volume,parallel,progressive] [--repeat 3] [--meshes REGEX] [--no-run] [--out table.md]
 
 KIT is the benchmark kit's folder (run_corpus.py, compare.py, its built metro and peers) and
@@ -49,7 +49,7 @@ def run(args, name, spec):
     out = os.path.join(args.workdir, name)
     template = "%s --method %s --target-triangles {target} --threads %d --json {in} {out}" % (
         os.path.abspath(args.cli), name, args.threads)
-    command = ["/usr/bin/python3", os.path.join(args.kit, "run_corpus.py"), "--corpus", args.corpus,
+    command = [sys.executable, os.path.join(args.kit, "run_corpus.py"), "--corpus", args.corpus,
                "--method", "ours", "--peers", spec["peer"], "--extra", "ours=" + template,
                "--reduction", *map(str, spec["reductions"]), "--repeat", str(args.repeat), "--out", out]
     if args.bin:
