@@ -152,6 +152,7 @@ public:
     this->Label = label;
     this->Near.clear();
     this->Piece.clear();
+    this->TrackingThirds = false;
     std::priority_queue<std::pair<std::int32_t, std::int32_t>> candidates;
     const auto add = [&](std::int32_t w) {
       this->Merge(w);
@@ -197,16 +198,81 @@ private:
     return count;
   }
 
-  /// The triangle (a, b, c) of labels, as the piece sees it: its other labels counted sign times.
+  /// The triangle (a, b, c) of labels, as the piece sees it: its other labels counted sign times,
+  /// and each of them as the third of the piece's edge to the other (see CountThird).
   void Tally(std::int32_t a, std::int32_t b, std::int32_t c, std::int32_t sign)
   {
     if ((a == this->Label || b == this->Label || c == this->Label) && a != b && b != c && a != c)
     {
+      std::array<std::int32_t, 2> others;
+      int n = 0;
       for (const std::int32_t x : { a, b, c })
       {
         this->Near[x] += x != this->Label ? sign : 0;
+        if (x != this->Label)
+        {
+          others[n++] = x;
+        }
+      }
+      if (this->TrackingThirds)
+      {
+        this->CountThird(others[0], others[1], sign);
+        this->CountThird(others[1], others[0], sign);
       }
     }
+  }
+
+  static std::int64_t PairKey(std::int32_t x, std::int32_t y)
+  {
+    return static_cast<std::int64_t>(x) << 32 | static_cast<std::uint32_t>(y);
+  }
+
+  /// The piece's edges and their thirds, from the first time Mergeable asks for them (most
+  /// pieces never need them) and then kept up by Tally as the piece grows: EdgeThirds of all its
+  /// vertices without rescanning them at each ask.
+  void TrackThirds()
+  {
+    this->PieceThirds.clear();
+    this->ThirdsPerEdge.clear();
+    this->SingleThirdEdges = 0;
+    for (const std::int32_t u : this->Piece)
+    {
+      for (const Corner* c = this->Adjacency.Begin(u); c != this->Adjacency.End(u); ++c)
+      {
+        const std::int32_t x = this->Labels[c->Next], y = this->Labels[c->Previous];
+        if (x != y && x != this->Label && y != this->Label)
+        {
+          this->CountThird(x, y, 1);
+          this->CountThird(y, x, 1);
+        }
+      }
+    }
+    this->TrackingThirds = true;
+  }
+
+  /// The piece's edge to x gains (sign 1) or loses (−1) a triangle whose third is y: the pairs
+  /// with a positive count, and how many of its edges have a single third.
+  void CountThird(std::int32_t x, std::int32_t y, std::int32_t sign)
+  {
+    std::int32_t& count = this->PieceThirds[PairKey(x, y)];
+    const bool had = count > 0;
+    count += sign;
+    if (had == (count > 0))
+    {
+      return;
+    }
+    std::int32_t& thirds = this->ThirdsPerEdge[x];
+    this->SingleThirdEdges -= thirds == 1 ? 1 : 0;
+    thirds += had ? -1 : 1;
+    this->SingleThirdEdges += thirds == 1 ? 1 : 0;
+  }
+
+  /// Whether the piece's edges have the pair (x, y) of thirds: x and y are both its neighbours
+  /// in one of its triangles.
+  bool PieceHasThirds(const std::pair<std::int32_t, std::int32_t>& pair) const
+  {
+    const auto found = this->PieceThirds.find(PairKey(pair.first, pair.second));
+    return found != this->PieceThirds.end() && found->second > 0;
   }
 
   void Merge(std::int32_t w)
@@ -225,7 +291,7 @@ private:
 
   bool Mergeable(std::int32_t w)
   {
-    this->EdgeThirds(&w, &w + 1, this->Ends);
+    this->EdgeThirds(w, this->Ends);
     const Thirds& ends = this->Ends;
     const auto first = std::lower_bound(ends.begin(), ends.end(),
       std::make_pair(this->Label, std::numeric_limits<std::int32_t>::min()));
@@ -254,27 +320,26 @@ private:
     {
       return true;
     }
-    this->EdgeThirds(this->Piece.data(), this->Piece.data() + this->Piece.size(), this->PieceEnds);
-    const Thirds& piece = this->PieceEnds;
-    return !(SingleThird(ends) && SingleThird(piece)) &&
-      !(closesTetrahedron && std::binary_search(piece.begin(), piece.end(), opposite));
+    if (!this->TrackingThirds)
+    {
+      this->TrackThirds();
+    }
+    return !(SingleThird(ends) && this->SingleThirdEdges > 0) &&
+      !(closesTetrahedron && this->PieceHasThirds(opposite));
   }
 
-  /// The edges at the point of the vertices [begin, end) (one label) with their thirds: each
-  /// triangle of theirs that keeps three labels gives its two edges there its third corners.
-  void EdgeThirds(const std::int32_t* begin, const std::int32_t* end, Thirds& thirds) const
+  /// The edges at u's point with their thirds: each triangle of u's that keeps three labels
+  /// gives its two edges there its third corners. Sorted, unique.
+  void EdgeThirds(std::int32_t u, Thirds& thirds) const
   {
     thirds.clear();
-    for (const std::int32_t* u = begin; u != end; ++u)
+    for (const Corner* c = this->Adjacency.Begin(u); c != this->Adjacency.End(u); ++c)
     {
-      for (const Corner* c = this->Adjacency.Begin(*u); c != this->Adjacency.End(*u); ++c)
+      const std::int32_t x = this->Labels[c->Next], y = this->Labels[c->Previous];
+      if (x != y && x != this->Labels[u] && y != this->Labels[u])
       {
-        const std::int32_t x = this->Labels[c->Next], y = this->Labels[c->Previous];
-        if (x != y && x != this->Labels[*u] && y != this->Labels[*u])
-        {
-          thirds.emplace_back(x, y);
-          thirds.emplace_back(y, x);
-        }
+        thirds.emplace_back(x, y);
+        thirds.emplace_back(y, x);
       }
     }
     std::sort(thirds.begin(), thirds.end());
@@ -286,9 +351,16 @@ private:
   const std::vector<std::uint8_t>& Shown;
   std::vector<std::int32_t>& Labels;
   std::int32_t Label = 0;                              // the growing piece's
-  std::vector<std::int32_t> Piece;                     // its vertices
   std::unordered_map<std::int32_t, std::int32_t> Near; // its neighbours: their triangles with it
-  Thirds Ends, PieceEnds;
+  std::vector<std::int32_t> Piece; // its vertices
+  Thirds Ends; // Mergeable's: the candidate's edges and their thirds
+  // The piece's edges and their thirds (EdgeThirds of all its vertices), kept up by CountThird:
+  // the triangles of each (neighbour, third) pair, the thirds of each neighbour, and how many
+  // neighbours have one.
+  std::unordered_map<std::int64_t, std::int32_t> PieceThirds;
+  std::unordered_map<std::int32_t, std::int32_t> ThirdsPerEdge;
+  std::int32_t SingleThirdEdges = 0;
+  bool TrackingThirds = false;
 };
 
 class Clusterer
