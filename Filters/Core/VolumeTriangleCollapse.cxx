@@ -655,9 +655,13 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
   // the triangle's: on a cylinder an edge along a ruling line merges without error, a triangle
   // never does. An edge's quadric sums the triangles around its two ends (t and the one across,
   // which hold both, once); its point minimises it as in §3.4.
+  double bestCost = EdgeErrorShare * candidate.Cost;
+  if (!(bestCost > 0.0))
+  {
+    return; // a free triangle: no edge is cheaper (Quadric::Evaluate is never negative)
+  }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   int best = -1;
-  double bestCost = EdgeErrorShare * candidate.Cost;
   Quadric bestQ;
   Vec3 bestX;
   for (int k = 0; k < 3; ++k)
@@ -714,6 +718,10 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
   if (across.Count[k] != 0)
   {
     return; // not a boundary edge: two boundary vertices joined across the interior
+  }
+  if (!(EdgeErrorShare * candidate.Cost > 0.0))
+  {
+    return; // a free triangle: the edge is no cheaper (Quadric::Evaluate is never negative)
   }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
