@@ -12,6 +12,7 @@
 #include <numeric>
 #include <map>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
 
 namespace meshsimp
@@ -1607,8 +1608,9 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles(const std::vector
     Survivor Triangle;
     bool operator<(const Key& o) const
     {
-      return this->Clusters != o.Clusters ? this->Clusters < o.Clusters
-                                          : this->InputTriangle < o.InputTriangle;
+      // Element by element: std::array's comparison calls memcmp for its equality.
+      return std::tie(this->Clusters[0], this->Clusters[1], this->Clusters[2], this->InputTriangle) <
+        std::tie(o.Clusters[0], o.Clusters[1], o.Clusters[2], o.InputTriangle);
     }
   };
   // Gathered per chunk of vertices (in parallel), then joined in chunk order.
