@@ -200,7 +200,7 @@ private:
   }
 
   /// The triangle (a, b, c) of labels, as the piece sees it: its other labels counted sign times,
-  /// and each of them as the third of the piece's edge to the other (see CountThird).
+  /// and, once tracked (TrackThirds), each of them as the third of the piece's edge to the other.
   void Tally(std::int32_t a, std::int32_t b, std::int32_t c, std::int32_t sign)
   {
     if ((a == this->Label || b == this->Label || c == this->Label) && a != b && b != c && a != c)
@@ -223,14 +223,16 @@ private:
     }
   }
 
-  static std::int64_t PairKey(std::int32_t x, std::int32_t y)
+  /// Labels are negative for single members: their bits, unsigned, make the key.
+  static std::uint64_t PairKey(std::int32_t x, std::int32_t y)
   {
-    return static_cast<std::int64_t>(x) << 32 | static_cast<std::uint32_t>(y);
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32 |
+      static_cast<std::uint32_t>(y);
   }
 
   /// The piece's edges and their thirds, from the first time Mergeable asks for them (most
-  /// pieces never need them) and then kept up by Tally as the piece grows: EdgeThirds of all its
-  /// vertices without rescanning them at each ask.
+  /// pieces never need them) and then kept up by Tally as the piece grows: what EdgeThirds gives
+  /// over all its vertices, with triangle counts, without rescanning them at each ask.
   void TrackThirds()
   {
     this->PieceThirds.clear();
@@ -268,8 +270,8 @@ private:
     this->SingleThirdEdges += thirds == 1 ? 1 : 0;
   }
 
-  /// Whether the piece's edges have the pair (x, y) of thirds: x and y are both its neighbours
-  /// in one of its triangles.
+  /// Whether the piece's edge to pair.first has the third pair.second: a triangle holds the
+  /// piece and both.
   bool PieceHasThirds(const std::pair<std::int32_t, std::int32_t>& pair) const
   {
     const auto found = this->PieceThirds.find(PairKey(pair.first, pair.second));
@@ -352,13 +354,12 @@ private:
   const std::vector<std::uint8_t>& Shown;
   std::vector<std::int32_t>& Labels;
   std::int32_t Label = 0;                              // the growing piece's
+  std::vector<std::int32_t> Piece;                     // its vertices
   std::unordered_map<std::int32_t, std::int32_t> Near; // its neighbours: their triangles with it
-  std::vector<std::int32_t> Piece; // its vertices
   Thirds Ends; // Mergeable's: the candidate's edges and their thirds
-  // The piece's edges and their thirds (EdgeThirds of all its vertices), kept up by CountThird:
-  // the triangles of each (neighbour, third) pair, the thirds of each neighbour, and how many
-  // neighbours have one.
-  std::unordered_map<std::int64_t, std::int32_t> PieceThirds;
+  // The piece's edges and their thirds (TrackThirds), kept up by CountThird: the triangles of
+  // each (neighbour, third) pair, the thirds of each neighbour, and how many neighbours have one.
+  std::unordered_map<std::uint64_t, std::int32_t> PieceThirds;
   std::unordered_map<std::int32_t, std::int32_t> ThirdsPerEdge;
   std::int32_t SingleThirdEdges = 0;
   bool TrackingThirds = false;
@@ -1608,7 +1609,7 @@ std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles(const std::vector
     Survivor Triangle;
     bool operator<(const Key& o) const
     {
-      // Element by element: std::array's comparison calls memcmp for its equality.
+      // One pass over the fields: std::array's != goes through memcmp (libstdc++).
       return std::tie(this->Clusters[0], this->Clusters[1], this->Clusters[2], this->InputTriangle) <
         std::tie(o.Clusters[0], o.Clusters[1], o.Clusters[2], o.InputTriangle);
     }

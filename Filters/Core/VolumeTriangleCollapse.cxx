@@ -658,7 +658,7 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
   double bestCost = EdgeErrorShare * candidate.Cost;
   if (!(bestCost > 0.0))
   {
-    return; // a free triangle: no edge is cheaper (Quadric::Evaluate is never negative)
+    return; // a triangle of zero error: no edge is cheaper (Quadric::Evaluate is never negative)
   }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   int best = -1;
@@ -719,9 +719,10 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
   {
     return; // not a boundary edge: two boundary vertices joined across the interior
   }
-  if (!(EdgeErrorShare * candidate.Cost > 0.0))
+  const double bound = EdgeErrorShare * candidate.Cost;
+  if (!(bound > 0.0))
   {
-    return; // a free triangle: the edge is no cheaper (Quadric::Evaluate is never negative)
+    return; // a triangle of zero error: the edge is no cheaper (Evaluate is never negative)
   }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
@@ -731,7 +732,7 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
   const double omega = SegmentMinimum(q, this->Mesh.Point(a), this->Mesh.Point(b));
   const Vec3 x = this->Mesh.Point(b) + omega * (this->Mesh.Point(a) - this->Mesh.Point(b));
   const double cost = q.Evaluate(x);
-  if (!(cost < EdgeErrorShare * candidate.Cost))
+  if (!(cost < bound))
   {
     return;
   }
