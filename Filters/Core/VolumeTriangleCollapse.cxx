@@ -601,11 +601,14 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   candidate.Q = q;
   candidate.Cost = q.Evaluate(plan.Position); // eq. (5)
   candidate.Priority = PriorityOf(candidate.Cost, 3);
-  if (candidate.FreePlacement && this->Options.EdgeCollapses)
+  // An edge can only be cheaper than a triangle of positive error: Quadric::Evaluate is never
+  // negative (a flat region's triangles skip the search).
+  const bool edgeMayBeCheaper = this->Options.EdgeCollapses && EdgeErrorShare * candidate.Cost > 0.0;
+  if (candidate.FreePlacement && edgeMayBeCheaper)
   {
     this->CheaperEdge(t, across, candidate);
   }
-  else if (boundaryEdge >= 0 && this->Options.EdgeCollapses)
+  else if (boundaryEdge >= 0 && edgeMayBeCheaper)
   {
     this->CheaperBoundaryEdge(t, boundaryEdge, across, candidate);
   }
@@ -655,13 +658,9 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
   // the triangle's: on a cylinder an edge along a ruling line merges without error, a triangle
   // never does. An edge's quadric sums the triangles around its two ends (t and the one across,
   // which hold both, once); its point minimises it as in §3.4.
-  double bestCost = EdgeErrorShare * candidate.Cost;
-  if (!(bestCost > 0.0))
-  {
-    return; // a triangle of zero error: no edge is cheaper (Quadric::Evaluate is never negative)
-  }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   int best = -1;
+  double bestCost = EdgeErrorShare * candidate.Cost;
   Quadric bestQ;
   Vec3 bestX;
   for (int k = 0; k < 3; ++k)
@@ -719,11 +718,6 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
   {
     return; // not a boundary edge: two boundary vertices joined across the interior
   }
-  const double bound = EdgeErrorShare * candidate.Cost;
-  if (!(bound > 0.0))
-  {
-    return; // a triangle of zero error: the edge is no cheaper (Evaluate is never negative)
-  }
   const std::int32_t* tri = this->Mesh.Triangle(t);
   const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
   Quadric q = this->VertexQuadrics[a];
@@ -732,7 +726,7 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
   const double omega = SegmentMinimum(q, this->Mesh.Point(a), this->Mesh.Point(b));
   const Vec3 x = this->Mesh.Point(b) + omega * (this->Mesh.Point(a) - this->Mesh.Point(b));
   const double cost = q.Evaluate(x);
-  if (!(cost < bound))
+  if (!(cost < EdgeErrorShare * candidate.Cost))
   {
     return;
   }
