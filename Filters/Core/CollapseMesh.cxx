@@ -78,6 +78,79 @@ VertexClass ClassifyFan(
   return opening >= 0 ? VertexClass::Boundary : VertexClass::Interior;
 }
 
+bool IsHinge(const Corner* first, const Corner* last, std::int32_t ends[2], FanWorkspace& work)
+{
+  // The link's edges (next, previous), one per corner, listed at both ends and sorted by vertex:
+  // a run of 2 is a vertex inside a fan, the two hinge ends have runs of k >= 3, a run of 1
+  // would be an open border.
+  const std::int32_t degree = static_cast<std::int32_t>(last - first);
+  work.Ends.clear();
+  for (std::int32_t i = 0; i < degree; ++i)
+  {
+    work.Ends.emplace_back(first[i].Next, i);
+    work.Ends.emplace_back(first[i].Previous, i);
+  }
+  std::sort(work.Ends.begin(), work.Ends.end());
+  std::int32_t found = 0, pages = 0;
+  for (std::size_t run = 0, next = 0; run < work.Ends.size(); run = next)
+  {
+    for (next = run + 1; next < work.Ends.size() && work.Ends[next].first == work.Ends[run].first; ++next)
+    {
+    }
+    const std::int32_t size = static_cast<std::int32_t>(next - run);
+    if (size == 2)
+    {
+      continue;
+    }
+    if (size < 3 || found == 2 || (found == 1 && size != pages))
+    {
+      return false;
+    }
+    ends[found++] = work.Ends[run].first;
+    pages = size;
+  }
+  if (found != 2)
+  {
+    return false;
+  }
+  // Every page walked from ends[0], corner by corner through vertices of two corners, must
+  // arrive at ends[1], and the pages together must use every corner once.
+  const auto cornersOf = [&work](std::int32_t w) {
+    return std::equal_range(work.Ends.begin(), work.Ends.end(), std::make_pair(w, std::int32_t(-1)),
+      [](const std::pair<std::int32_t, std::int32_t>& a, const std::pair<std::int32_t, std::int32_t>& b) {
+        return a.first < b.first;
+      });
+  };
+  work.Reached.assign(degree, 0);
+  std::int32_t used = 0;
+  const auto starts = cornersOf(ends[0]);
+  for (auto start = starts.first; start != starts.second; ++start)
+  {
+    std::int32_t corner = start->second, at = ends[0];
+    while (true)
+    {
+      if (work.Reached[corner])
+      {
+        return false;
+      }
+      work.Reached[corner] = 1;
+      ++used;
+      at = first[corner].Next == at ? first[corner].Previous : first[corner].Next;
+      if (at == ends[1])
+      {
+        break;
+      }
+      const auto both = cornersOf(at); // two corners: the one just used and the next
+      if (at == ends[0] || both.second - both.first != 2)
+      {
+        return false;
+      }
+      corner = both.first->second == corner ? (both.first + 1)->second : both.first->second;
+    }
+  }
+  return used == degree;
+}
+
 namespace
 {
 bool Contains(const std::int32_t* tri, std::int32_t v)
@@ -120,22 +193,32 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
       }
       std::int32_t opening = -1, closing = -1;
       VertexClass c = ClassifyFan(adjacency.Begin(v), adjacency.End(v), opening, closing, fan);
-      if (c == VertexClass::Boundary)
+      // Where a boundary or a hinge turns sharply at v, v is a corner that stays: a corner of
+      // the boundary, a non-manifold (locked) vertex of the hinge.
+      const auto turnsSharply = [&](std::int32_t from, std::int32_t to) {
+        const Eigen::Vector3d in = this->Points[v] - this->Points[from];
+        const Eigen::Vector3d out = this->Points[to] - this->Points[v];
+        const double lengths = in.norm() * out.norm();
+        return lengths > 0.0 && in.dot(out) < cosCorner * lengths;
+      };
+      std::int32_t ends[2];
+      if (c == VertexClass::Boundary &&
+        turnsSharply(adjacency.Begin(v)[opening].Previous, adjacency.Begin(v)[closing].Next))
       {
         // The boundary runs into v along the closing corner's far edge and leaves along the
         // opening corner's: (Previous of opening) -> v -> (Next of closing), by orientation.
-        const Eigen::Vector3d in = this->Points[v] - this->Points[adjacency.Begin(v)[opening].Previous];
-        const Eigen::Vector3d out = this->Points[adjacency.Begin(v)[closing].Next] - this->Points[v];
-        const double lengths = in.norm() * out.norm();
-        if (lengths > 0.0 && in.dot(out) < cosCorner * lengths)
-        {
-          c = VertexClass::Corner;
-        }
+        c = VertexClass::Corner;
+      }
+      else if (c == VertexClass::NonManifold && IsHinge(adjacency.Begin(v), adjacency.End(v), ends, fan) &&
+        !turnsSharply(ends[0], ends[1]))
+      {
+        c = VertexClass::Hinge;
       }
       this->Classes[v] = c;
       this->Locked[v] = c == VertexClass::NonManifold ? 1 : 0;
     }
   }, 50 * static_cast<std::int64_t>(n));
+  this->HasHingeVertices = std::find(this->Classes.begin(), this->Classes.end(), VertexClass::Hinge) != this->Classes.end();
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
   this->Indexed.clear();
   this->Places.clear();
@@ -230,10 +313,35 @@ void CollapseMesh::Neighbours(std::int32_t v, std::vector<std::int32_t>& out, Ch
   });
 }
 
+int CollapseMesh::HingeEnds(std::int32_t v, std::int32_t ends[2]) const
+{
+  // v's far edges list each neighbour once per triangle of its edge with v.
+  std::vector<std::int32_t> around;
+  this->ForEachCorner(v, [&around](std::int32_t, std::int32_t next, std::int32_t previous) {
+    around.push_back(next);
+    around.push_back(previous);
+  });
+  std::sort(around.begin(), around.end());
+  int found = 0;
+  for (std::size_t run = 0, next = 0; run < around.size(); run = next)
+  {
+    next = std::upper_bound(around.begin() + run, around.end(), around[run]) - around.begin();
+    if (next - run >= 3)
+    {
+      if (found < 2)
+      {
+        ends[found] = around[run];
+      }
+      ++found;
+    }
+  }
+  return found;
+}
+
 std::int32_t CollapseMesh::Valence(std::int32_t v, CheckScratch& scratch) const
 {
   // A manifold fan has as many neighbours as triangles, one more when it is open.
-  if (this->Classes[v] == VertexClass::NonManifold)
+  if (this->Classes[v] == VertexClass::NonManifold || this->Classes[v] == VertexClass::Hinge)
   {
     this->Neighbours(v, scratch.Vertices, scratch);
     return static_cast<std::int32_t>(scratch.Vertices.size());
@@ -290,11 +398,12 @@ std::vector<std::int32_t> CollapseMesh::SortedTrianglesAround(std::int32_t v) co
 struct CollapseMesh::LinkState
 {
   std::uint32_t InSet, Neighbour, Common, NextOnly; // marks: see LinkCondition
-  bool MergedOnBoundary = false;
+  bool MergedOnBoundary = false, MergedOnHinge = false;
   std::int32_t ValenceM = 0, ValenceNext = 0;
-  std::int32_t Opposite[2] = { -1, -1 }; // far corners of the triangles (m, next, w)
+  // The far corners of the triangles (m, next, w): the first two here, more (a hinge edge) in
+  // the scratch's FarCorners.
+  std::int32_t Opposite[2] = { -1, -1 };
   int OppositeCount = 0, CommonCount = 0;
-  bool ThreeTriangles = false; // an edge of three or more triangles
 };
 
 bool CollapseMesh::LinkCondition(
@@ -311,24 +420,26 @@ bool CollapseMesh::LinkCondition(
   link.NextOnly = link.InSet + 3;
   this->MarkMergedNeighbours(merged, count, link, scratch);
   this->ScanAroundNext(next, link, scratch);
-  // The checks, in order: one or two triangles on the edge, with distinct far corners; the
-  // common neighbours are exactly the far corners (the link condition); no two boundary
-  // vertices joined across the interior (a pinch); nobody falls below three neighbours (two on
-  // the boundary): the merged vertex keeps m's neighbours but next and next's neighbours but
-  // m, the common ones once; each far corner loses one.
+  // The checks, in order: triangles on the edge, with distinct far corners (more than two only
+  // along a hinge, whose collapse the locks check admitted); the common neighbours are exactly
+  // the far corners (the link condition); no two vertices of a boundary or hinge joined across
+  // a sheet (a pinch); nobody falls below three neighbours (two on the boundary): the merged
+  // vertex keeps m's neighbours but next and next's neighbours but m, the common ones once;
+  // each far corner loses one.
   const std::int32_t* opposite = link.Opposite;
   const int sides = link.OppositeCount;
-  if (link.ThreeTriangles || sides == 0 || (sides == 2 && opposite[0] == opposite[1]))
+  if (sides == 0 || (sides == 2 && opposite[0] == opposite[1]))
   {
     return false;
   }
   if (link.CommonCount != sides ||
-    std::any_of(opposite, opposite + sides, [&](std::int32_t w) { return scratch.Marks[w] != link.Common; }))
+    std::any_of(opposite, opposite + std::min(sides, 2), [&](std::int32_t w) { return scratch.Marks[w] != link.Common; }))
   {
     return false;
   }
   const bool nextOnBoundary = this->OnBoundary(next);
-  if (link.MergedOnBoundary && nextOnBoundary && sides == 2)
+  const bool mergedOnCrease = link.MergedOnBoundary || link.MergedOnHinge;
+  if (mergedOnCrease && (nextOnBoundary || this->OnHinge(next)) && sides == 2)
   {
     return false;
   }
@@ -337,9 +448,64 @@ bool CollapseMesh::LinkCondition(
   {
     return false;
   }
-  return std::none_of(opposite, opposite + sides, [&](std::int32_t w) {
+  const auto losesTooMany = [&](std::int32_t w) {
     return this->Valence(w, scratch) - 1 < (this->OnBoundary(w) ? 2 : 3);
+  };
+  // Valence may reuse the scratch's vertex list and marks, not FarCorners; the hinge's checks
+  // come last, as they take new marks too.
+  return std::none_of(opposite, opposite + std::min(sides, 2), losesTooMany) &&
+    (sides <= 2 ||
+      (std::none_of(scratch.FarCorners.begin(), scratch.FarCorners.end(), losesTooMany) &&
+        this->HingeLinkCondition(merged, count, next, link, scratch)));
+}
+
+MESHSIMP_RARE_PATH bool CollapseMesh::HingeLinkCondition(
+  const std::int32_t* merged, int count, std::int32_t next, const LinkState& link, CheckScratch& scratch) const
+{
+  // The link condition's edge part, which neighbour counts do not cover on a hinge: the far
+  // corners are distinct, and no two of them x, y span both a triangle (m, x, y) and a triangle
+  // (next, x, y) (the two would become one triangle twice).
+  std::vector<std::int32_t>& far = scratch.FarCorners;
+  far.push_back(link.Opposite[0]);
+  far.push_back(link.Opposite[1]);
+  std::sort(far.begin(), far.end());
+  if (std::adjacent_find(far.begin(), far.end()) != far.end())
+  {
+    return false;
+  }
+  const std::uint32_t farMark = this->NewMarks(1, scratch);
+  for (const std::int32_t w : far)
+  {
+    scratch.Marks[w] = farMark;
+  }
+  // The far edges (x, y) of next's triangles with two far corners, then m's triangles'.
+  std::vector<std::int32_t>& pairs = scratch.Vertices;
+  pairs.clear();
+  this->ForEachTriangle(next, [&](std::int32_t t) {
+    const std::int32_t* tri = this->Triangle(t);
+    const int k = tri[0] == next ? 0 : tri[1] == next ? 1 : 2;
+    const std::int32_t x = tri[(k + 1) % 3], y = tri[(k + 2) % 3];
+    if (scratch.Marks[x] == farMark && scratch.Marks[y] == farMark)
+    {
+      pairs.push_back(std::min(x, y));
+      pairs.push_back(std::max(x, y));
+    }
   });
+  bool closes = false;
+  for (int i = 0; i < count && !closes && !pairs.empty(); ++i)
+  {
+    this->ForEachTriangle(merged[i], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      const int k = tri[0] == merged[i] ? 0 : tri[1] == merged[i] ? 1 : 2;
+      const std::int32_t x = std::min(tri[(k + 1) % 3], tri[(k + 2) % 3]);
+      const std::int32_t y = std::max(tri[(k + 1) % 3], tri[(k + 2) % 3]);
+      for (std::size_t j = 0; j < pairs.size() && !closes; j += 2)
+      {
+        closes = pairs[j] == x && pairs[j + 1] == y;
+      }
+    });
+  }
+  return !closes;
 }
 
 void CollapseMesh::MarkMergedNeighbours(
@@ -350,6 +516,7 @@ void CollapseMesh::MarkMergedNeighbours(
   {
     scratch.Marks[merged[i]] = link.InSet;
     link.MergedOnBoundary = link.MergedOnBoundary || this->OnBoundary(merged[i]);
+    link.MergedOnHinge = link.MergedOnHinge || (this->HasHingeVertices && this->OnHinge(merged[i]));
   }
   for (int i = 0; i < count; ++i)
   {
@@ -390,11 +557,19 @@ void CollapseMesh::ScanAroundNext(std::int32_t next, LinkState& link, CheckScrat
       }
       if (inside == 1)
       {
-        link.ThreeTriangles = link.ThreeTriangles || link.OppositeCount == 2;
         if (link.OppositeCount < 2)
         {
-          link.Opposite[link.OppositeCount++] = w;
+          link.Opposite[link.OppositeCount] = w;
         }
+        else
+        {
+          if (link.OppositeCount == 2)
+          {
+            scratch.FarCorners.clear();
+          }
+          scratch.FarCorners.push_back(w);
+        }
+        ++link.OppositeCount;
       }
       if (scratch.Marks[w] == link.Neighbour)
       {
@@ -575,7 +750,8 @@ CollapseCheck CollapseMesh::FirstFailedCheck(const CollapsePlan& plan, CheckScra
   }
   const bool removesLocked =
     std::any_of(v + 1, v + plan.Count, [this](std::int32_t w) { return this->Locked[w] != 0; });
-  if (removesLocked || (this->Locked[v[0]] && plan.Position != this->Points[v[0]]))
+  if (removesLocked || (this->Locked[v[0]] && plan.Position != this->Points[v[0]]) ||
+    (this->HasHingeVertices && !this->StaysOnHinges(plan)))
   {
     return CollapseCheck::Locks;
   }
@@ -595,6 +771,32 @@ CollapseCheck CollapseMesh::FirstFailedCheck(const CollapsePlan& plan, CheckScra
     return CollapseCheck::SharedEdges;
   }
   return this->ChangedTrianglesCheck(plan);
+}
+
+MESHSIMP_RARE_PATH bool CollapseMesh::StaysOnHinges(const CollapsePlan& plan) const
+{
+  // A hinge vertex never moves: kept, it stays where it is; merged, it goes along one of its
+  // hinge edges (of three or more triangles) to the kept vertex at the other end, which is on
+  // the hinge too (a hinge vertex, or a locked end or turn of it).
+  const std::int32_t kept = plan.Vertices[0];
+  if (this->OnHinge(kept) && plan.Position != this->Points[kept])
+  {
+    return false;
+  }
+  for (int i = 1; i < plan.Count; ++i)
+  {
+    if (!this->OnHinge(plan.Vertices[i]))
+    {
+      continue;
+    }
+    int triangles = 0;
+    this->ForEachTriangleOnEdge(kept, plan.Vertices[i], [&triangles](std::int32_t) { ++triangles; });
+    if (triangles < 3)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool CollapseMesh::KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const
@@ -1082,7 +1284,8 @@ std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText
   // One text per CollapseCheck, in its order; Passed is the caller's.
   static const char* const Refusal[] = { nullptr,
     "are not valid plans (a repeated vertex or a position that is not finite)",
-    "would remove or move a locked vertex (non-manifold, or locked by the filter or its options)",
+    "would remove or move a locked vertex (non-manifold, or locked by the filter or its options) or move a "
+    "vertex off its hinge",
     "would merge two regions of the border array", "would break the surface's topology (link condition)",
     "would make a new edge between two vertices on a piece border", "would turn a triangle over",
     "would leave a triangle without area", "would fold a triangle onto its neighbour",

@@ -26,12 +26,16 @@
  * the decimators built on the engine, in the order they run (the plan itself first: two or three
  * distinct vertices, a finite position):
  * - locks: a locked vertex is never removed or moved (non-manifold vertices are always locked);
+ *   a hinge vertex (where three or more sheets meet along a chain of edges) never moves either,
+ *   but may be merged along its hinge into the vertex at the other end of a hinge edge, so that
+ *   a hinge only loses vertices, like a polyline;
  * - regions (SetRegions): no collapse merges vertices of different regions, so that the border
  *   between two values of a label or colour array stays sharp;
  * - the link condition, collapse by collapse: the common neighbours of the two sides are exactly
- *   the far corners of their shared triangles, so no edge gets three triangles and no "hidden
- *   cycle" (paper 004 Fig. 8) is closed; two boundary vertices are not joined across the
- *   interior; no vertex falls below three neighbours;
+ *   the far corners of their shared triangles (two, one on a boundary, k on a hinge), so no edge
+ *   gains triangles and no "hidden cycle" (paper 004 Fig. 8) is closed, and on a hinge no two of
+ *   the far corners span triangles with both sides; two vertices of a boundary or hinge are not
+ *   joined across a sheet; no vertex falls below three neighbours;
  * - shared edges: no collapse joins two vertices locked as shared with another piece of a
  *   distributed mesh by an edge they did not have (the other piece might make the same edge,
  *   and the merged pieces would get an edge of four triangles);
@@ -75,6 +79,14 @@ namespace meshsimp
 #define MESHSIMP_PREFETCH_HELPER inline
 #endif
 
+/// For a function on a path most meshes never take (hinges, say): kept out of line, and calls
+/// to it taken as unlikely, so that it costs the common path nothing (GCC and Clang only).
+#if defined(__GNUC__) || defined(__clang__)
+#define MESHSIMP_RARE_PATH __attribute__((noinline, cold))
+#else
+#define MESHSIMP_RARE_PATH
+#endif
+
 /// A hint to start loading the cache line holding p; it changes no result (GCC and Clang only).
 MESHSIMP_PREFETCH_HELPER void Prefetch(const void* p)
 {
@@ -90,7 +102,8 @@ enum class VertexClass : std::uint8_t
   Interior,   // a closed fan of triangles
   Boundary,   // an open fan: two boundary edges
   Corner,     // a boundary vertex where the boundary turns sharply (see Build)
-  NonManifold // several fans, an edge of three or more triangles, or inconsistent orientation
+  Hinge,      // inside a hinge: a chain of edges of k >= 3 triangles each (see IsHinge)
+  NonManifold // anything else: several fans, a hinge's end or turn, inconsistent orientation
 };
 
 /// ClassifyFan's working memory: reuse one per thread, it keeps its allocations.
@@ -99,6 +112,7 @@ struct FanWorkspace
   FanLookup ByPrevious;
   std::vector<std::int32_t> Successor;
   std::vector<std::uint8_t> Reached;
+  std::vector<std::pair<std::int32_t, std::int32_t>> Ends; // IsHinge: (far vertex, corner)
 };
 
 /**
@@ -109,6 +123,15 @@ struct FanWorkspace
  */
 VertexClass ClassifyFan(
   const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast, FanWorkspace& work);
+
+/**
+ * Whether a vertex whose fan is not one (ClassifyFan: NonManifold) lies inside a hinge, where k
+ * >= 3 sheets meet along a chain of edges like the pages of a book at its spine (the walls and
+ * slabs of a building model): it has exactly two edges of more than two triangles, to ends[0]
+ * and ends[1], with k triangles each, and its triangles are k fans, each from one of those edges
+ * to the other (its link is k paths from ends[0] to ends[1]). No edge of one triangle is allowed.
+ */
+bool IsHinge(const Corner* first, const Corner* last, std::int32_t ends[2], FanWorkspace& work);
 
 /// One collapse: the kept vertex, the one or two merged into it, the attribute weights and what
 /// undoing it needs (spans into CollapseMesh's change and removed-triangle lists).
@@ -130,7 +153,7 @@ enum class CollapseCheck : std::uint8_t
 {
   Passed,        // every check passed
   Plan,          // not two or three distinct vertices, or a position that is not finite
-  Locks,         // removes or moves a locked vertex
+  Locks,         // removes or moves a locked vertex, or moves a hinge vertex off its hinge
   Regions,       // merges vertices of different regions
   LinkCondition, // an edge of three triangles, a hidden cycle, a pinch, a vertex left too few neighbours
   SharedEdges,   // a new edge between two vertices shared with another piece
@@ -175,12 +198,14 @@ public:
     std::vector<std::uint32_t> Marks;
     std::uint32_t Stamp = 0;
     std::vector<std::int32_t> Vertices;
+    std::vector<std::int32_t> FarCorners; // of a hinge edge, past the first two
   };
 
   /**
    * Takes a compact mesh's points, triangles and adjacency (moved out of it). A boundary vertex
-   * whose two boundary edges turn by more than cornerAngleDegrees is a Corner. The vertices are
-   * classified on the context's threads.
+   * whose two boundary edges turn by more than cornerAngleDegrees is a Corner; a vertex inside a
+   * hinge (IsHinge) is a Hinge, unless its hinge turns so (then it stays NonManifold, locked).
+   * The vertices are classified on the context's threads.
    */
   void Build(CompactMesh&& mesh, double cornerAngleDegrees = 60.0, const ExecutionContext& context = {});
 
@@ -199,6 +224,12 @@ public:
   {
     return this->Classes[v] == VertexClass::Boundary || this->Classes[v] == VertexClass::Corner;
   }
+  bool OnHinge(std::int32_t v) const { return this->Classes[v] == VertexClass::Hinge; }
+  /// Whether any vertex is a hinge vertex (then its rules apply; meshes without run as before).
+  bool HasHinges() const { return this->HasHingeVertices; }
+  /// How many hinge edges (of three or more triangles) v has: two for a hinge vertex. The
+  /// vertices at their other ends go to ends in increasing order, the first two of them.
+  int HingeEnds(std::int32_t v, std::int32_t ends[2]) const;
   bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
   /// Locks v; shared: v is also in another piece of a distributed mesh (see IsLegal).
   void Lock(std::int32_t v, bool shared = false)
@@ -386,6 +417,12 @@ private:
   /// with the unchanged triangle across its edge pq (see ChangedTrianglesCheck).
   bool FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::int32_t p, std::int32_t q,
     const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
+  /// The edge part of the link condition on an edge of more than two triangles (LinkCondition
+  /// checked the rest).
+  bool HingeLinkCondition(const std::int32_t* merged, int count, std::int32_t next, const LinkState& link,
+    CheckScratch& scratch) const;
+  /// The hinge rule of the locks check (see the top of this file).
+  bool StaysOnHinges(const CollapsePlan& plan) const;
   /// No new edge between the kept vertex and another shared one, when the kept one is shared.
   bool KeepsSharedEdges(const CollapsePlan& plan, CheckScratch& scratch) const;
   void SetSpan(std::int32_t v, const std::vector<std::int32_t>& triangles);
@@ -420,6 +457,7 @@ private:
   std::vector<VertexClass> Classes;
   std::vector<std::uint8_t> Locked; // 0, 1 or SharedPointLock
   bool HasSharedLocks = false;
+  bool HasHingeVertices = false; // see HasHinges
   std::vector<std::int64_t> Start; // per vertex, into Refs (which grows past 2^31 entries on
                                    // inputs of over 238 million triangles before a compaction)
   std::vector<std::int32_t> Count;

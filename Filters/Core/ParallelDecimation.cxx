@@ -457,6 +457,24 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work, bool starCollect
   {
     return state;
   }
+  if (c == VertexClass::Hinge)
+  {
+    // Where sheets meet (CollapseMesh: a hinge vertex never moves), v goes along the hinge onto
+    // one of its two ends, as a vertex on a sharp edge goes along the edge.
+    if (!starCollected)
+    {
+      this->CollectStar(v, work);
+    }
+    if (this->Mesh.HingeEnds(v, state.Along) != 2)
+    {
+      state.Along[0] = state.Along[1] = -1;
+      return state;
+    }
+    state.Type = DecimationVertexType::InteriorEdge;
+    state.Importance = DistanceToLine(
+      this->Mesh.Point(v), this->Mesh.Point(state.Along[0]), this->Mesh.Point(state.Along[1]));
+    return state;
+  }
   if (!starCollected)
   {
     this->CollectStar(v, work);
@@ -1204,7 +1222,8 @@ std::int64_t Decimator::MoveSurvivors()
     const Vec3& p = this->Mesh.Point(v);
     before[v] = p;
     const VertexClass c = this->Mesh.Class(v);
-    if (this->Gone[v] || this->Mesh.IsLocked(v) || c == VertexClass::NonManifold || c == VertexClass::Corner)
+    if (this->Gone[v] || this->Mesh.IsLocked(v) || c == VertexClass::NonManifold || c == VertexClass::Corner ||
+      c == VertexClass::Hinge)
     {
       return;
     }

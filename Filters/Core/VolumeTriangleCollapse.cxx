@@ -148,6 +148,13 @@ private:
   void OntoCorner(const std::int32_t* v, int k, CollapsePlan& plan) const;
   int OntoBoundaryEdge(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const;
   int StrongFeatureCorner(const std::int32_t* v) const;
+  /// A triangle with a hinge corner: the corner it collapses onto (a hinge corner never moves,
+  /// see CollapseMesh), or -1 when it has none; edge gets the corner starting its edge between
+  /// two pinned corners when that is a hinge edge, else -1.
+  int OntoHinge(const std::int32_t* v, const Quadric& q, int& edge) const;
+  /// The hinge edge of t from corner k to the next alone, onto its cheaper pinned end, when that
+  /// costs under EdgeErrorShare of the triangle's error.
+  void CheaperHingeEdge(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const;
   void PlaceFreely(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const;
   /// Per thread: the checks' marks and the updates' ring.
   struct Scratch
@@ -503,6 +510,69 @@ int VolumeCollapser::StrongFeatureCorner(const std::int32_t* v) const
   return strongest;
 }
 
+MESHSIMP_RARE_PATH int VolumeCollapser::OntoHinge(const std::int32_t* v, const Quadric& q, int& edge) const
+{
+  // Pinned corners (hinge or locked) stay where they are: one is the kept corner; two must be
+  // the ends of a hinge edge, the hinge corner merged into the other end (a locked one, or the
+  // cheaper); three cannot collapse.
+  edge = -1;
+  int pinned[3], count = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (this->Mesh.OnHinge(v[k]) || this->Mesh.IsLocked(v[k]))
+    {
+      pinned[count++] = k;
+    }
+  }
+  if (count == 1)
+  {
+    return pinned[0];
+  }
+  if (count != 2)
+  {
+    return -1;
+  }
+  const int a = pinned[0], b = pinned[1];
+  int triangles = 0;
+  this->Mesh.ForEachTriangleOnEdge(v[a], v[b], [&triangles](std::int32_t) { ++triangles; });
+  if (triangles < 3)
+  {
+    return -1; // two pinned corners across a sheet
+  }
+  edge = b == a + 1 ? a : b; // corners (0, 1) start edge 0, (1, 2) edge 1, (0, 2) edge 2
+  if (this->Mesh.IsLocked(v[a]) || this->Mesh.IsLocked(v[b]))
+  {
+    return this->Mesh.IsLocked(v[a]) ? a : b;
+  }
+  return q.Evaluate(this->Mesh.Point(v[b])) < q.Evaluate(this->Mesh.Point(v[a])) ? b : a;
+}
+
+MESHSIMP_RARE_PATH void VolumeCollapser::CheaperHingeEdge(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const
+{
+  // A straight run of a hinge loses a vertex without error this way; the triangle never does.
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  const std::int32_t ends[2] = { tri[k], tri[(k + 1) % 3] };
+  Quadric q = this->VertexQuadrics[ends[0]];
+  q += this->VertexQuadrics[ends[1]];
+  q -= this->TriangleQuadrics[t];
+  q -= across.Quadrics[k];
+  double best = EdgeErrorShare * candidate.Cost;
+  int kept = -1;
+  for (int i = 0; i < 2; ++i)
+  {
+    const double cost = q.Evaluate(this->Mesh.Point(ends[i]));
+    if (!this->Mesh.IsLocked(ends[1 - i]) && cost < best)
+    {
+      best = cost;
+      kept = i;
+    }
+  }
+  if (kept >= 0)
+  {
+    SetEdgePlan(ends[kept], ends[1 - kept], 1.0, this->Mesh.Point(ends[kept]), q, best, candidate);
+  }
+}
+
 void VolumeCollapser::PlaceFreely(const std::int32_t* v, const Quadric& q, CollapsePlan& plan) const
 {
   // Eq. (8): the blend weighted by the corners' adjacent areas; eq. (5)'s minimiser where Q̄ is
@@ -564,8 +634,10 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
       locked = k;
     }
   }
+  const bool onHinge =
+    this->Mesh.HasHinges() && (this->Mesh.OnHinge(v[0]) || this->Mesh.OnHinge(v[1]) || this->Mesh.OnHinge(v[2]));
   if (lockedCount >= 2 || boundaryCount == 3 ||
-    (lockedCount == 1 && boundaryCount > 0 && !this->Mesh.OnBoundary(v[locked])))
+    (lockedCount == 1 && boundaryCount > 0 && !this->Mesh.OnBoundary(v[locked])) || (onHinge && boundaryCount > 0))
   {
     return candidate;
   }
@@ -575,8 +647,18 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   CollapsePlan& plan = candidate.Plan;
   plan.Count = 3;
   int boundaryEdge = -1; // an edge-boundary triangle's edge between its boundary corners
-  const int feature = lockedCount == 0 && boundaryCount == 0 ? this->StrongFeatureCorner(v) : -1;
-  if (lockedCount == 1)
+  int hingeEdge = -1;    // the same along a hinge
+  const int feature = lockedCount == 0 && boundaryCount == 0 && !onHinge ? this->StrongFeatureCorner(v) : -1;
+  if (onHinge)
+  {
+    const int kept = this->OntoHinge(v, q, hingeEdge);
+    if (kept < 0)
+    {
+      return candidate;
+    }
+    this->OntoCorner(v, kept, plan);
+  }
+  else if (lockedCount == 1)
   {
     this->OntoCorner(v, locked, plan);
   }
@@ -611,6 +693,10 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   else if (boundaryEdge >= 0 && edgeMayBeCheaper)
   {
     this->CheaperBoundaryEdge(t, boundaryEdge, across, candidate);
+  }
+  else if (hingeEdge >= 0 && edgeMayBeCheaper)
+  {
+    this->CheaperHingeEdge(t, hingeEdge, across, candidate);
   }
   candidate.Priority += this->SurfaceError(candidate.Plan);
   // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.

@@ -454,6 +454,43 @@ void LockedVerticesStay()
   CHECK(e.Mesh.IsLegal(e.Plan({ 12, 13 }, e.Point(12))));  // keeps it in place
 }
 
+void HingeVerticesSlideAlongTheHinge()
+{
+  // Three pages meet along a hinge of four segments (points 0 .. 4): its inner points never
+  // move but merge along the hinge, its ends are locked; point 7 is the first page's beside 2.
+  Engine e(Book(4, 1));
+  CHECK(e.Mesh.Class(e.Id[2]) == VertexClass::Hinge && !e.Mesh.IsLocked(e.Id[2]));
+  CHECK(e.Mesh.Class(e.Id[0]) == VertexClass::NonManifold && e.Mesh.IsLocked(e.Id[0]));
+  std::int32_t ends[2];
+  CHECK(e.Mesh.HingeEnds(e.Id[2], ends) == 2 && ends[0] == std::min(e.Id[1], e.Id[3]) &&
+    ends[1] == std::max(e.Id[1], e.Id[3]));
+  // Off the hinge, into a page, a page's border pinched onto the hinge: refused.
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 2, 1 }, 0.5 * (e.Point(1) + e.Point(2)))) == CollapseCheck::Locks);
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 7, 2 }, e.Point(7))) == CollapseCheck::Locks);
+  CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 2, 7 }, e.Point(2))) == CollapseCheck::LinkCondition);
+  // Along it, down to one segment between the locked ends: three triangles go each time, and no
+  // edge gains a triangle.
+  for (const auto& [kept, merged] : { std::pair<int, int>{ 1, 2 }, { 0, 1 }, { 4, 3 } })
+  {
+    const CollapsePlan plan = e.Plan({ kept, merged }, e.Point(kept));
+    CHECK(e.Mesh.IsLegal(plan));
+    CHECK(e.Mesh.Apply(plan) == 3);
+  }
+  CHECK(e.Mesh.NumberOfAliveTriangles() == 24 - 9);
+  std::vector<std::int32_t> used, triangles, kept;
+  e.Mesh.Surviving(used, triangles, kept);
+  for (const auto& [edge, count] : TrianglesPerEdge(triangles))
+  {
+    const bool hinge = used[edge.first] == e.Id[0] && used[edge.second] == e.Id[4];
+    CHECK((count == 3) == hinge && count <= 3);
+  }
+  // A turn of the hinge stays (non-manifold, locked), as a boundary's corner does.
+  Mesh bent = Book(4, 1);
+  bent.Points[3 * 2 + 2] = 1.0; // hinge point 2 lifted: the hinge turns by 90 degrees there, 45 at 1
+  Engine turned(bent);
+  CHECK(turned.Mesh.Class(turned.Id[2]) == VertexClass::NonManifold && turned.Mesh.Class(turned.Id[1]) == VertexClass::Hinge);
+}
+
 void SharedVerticesGetNoNewEdge()
 {
   // Vertices shared with another piece (12 and 14, two apart on the grid's middle row) are not
@@ -1262,6 +1299,16 @@ void VolumeCollapseSimplifiesFan()
   CHECK(StoppedEarly(result));
 }
 
+void VolumeCollapseSimplifiesAlongHinges()
+{
+  // A book of three pages of 72 triangles each: with its 11 inner hinge points locked the filter
+  // stopped at 34 triangles for 12; sliding them along the hinge, it reaches the target and the
+  // pages stay flat and joined at their hinge.
+  const meshsimp::VolumeCollapseResult result = Collapse(Book(12, 3), 12);
+  CHECK(result.Triangles.size() / 3 <= 12);
+  CHECK(StaysInBook(result.Points, result.Triangles));
+}
+
 void VolumeCollapseSurvivesDamagedMeshes()
 {
   // Damaged meshes (TestMeshes.h: soups with repeated and coincident points, duplicate,
@@ -1308,6 +1355,7 @@ int main()
     { "AngleGuardRejectsNewSlivers", AngleGuardRejectsNewSlivers },
     { "AngleGuardFollowsCollapses", AngleGuardFollowsCollapses },
     { "LockedVerticesStay", LockedVerticesStay },
+    { "HingeVerticesSlideAlongTheHinge", HingeVerticesSlideAlongTheHinge },
     { "SharedVerticesGetNoNewEdge", SharedVerticesGetNoNewEdge },
     { "CollapseUndoRedo", CollapseUndoRedo },
     { "IndependentCollapsesShareHubs", IndependentCollapsesShareHubs },
@@ -1331,6 +1379,7 @@ int main()
     { "VolumeCollapseHugeAndTinyCoordinates", VolumeCollapseHugeAndTinyCoordinates },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
     { "VolumeCollapseSimplifiesFan", VolumeCollapseSimplifiesFan },
+    { "VolumeCollapseSimplifiesAlongHinges", VolumeCollapseSimplifiesAlongHinges },
     { "VolumeCollapseSurvivesDamagedMeshes", VolumeCollapseSurvivesDamagedMeshes },
   });
 }

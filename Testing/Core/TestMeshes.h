@@ -145,6 +145,85 @@ Mesh Fan(int n, bool closed = false)
   return mesh;
 }
 
+/// Three strips of `rows` rows meeting along a straight hinge, like the pages of a book at its
+/// spine: the hinge is the x axis from 0 to `segments` (points 0 .. segments), the pages go one
+/// unit out along +y, +z and the diagonal between -y and -z, `segments` quads per row. Each
+/// hinge edge has three triangles; the hinge's ends have open borders, so they are
+/// non-manifold, the points between them hinge vertices.
+Mesh Book(int segments, int rows)
+{
+  Mesh mesh;
+  const double out[3][3] = { { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 }, { 0.0, -0.7071067811865476, -0.7071067811865476 } };
+  const int columns = segments + 1;
+  for (int i = 0; i < columns; ++i)
+  {
+    mesh.Points.insert(mesh.Points.end(), { static_cast<double>(i), 0.0, 0.0 });
+  }
+  for (const auto& direction : out)
+  {
+    for (int r = 1; r <= rows; ++r)
+    {
+      const double reach = static_cast<double>(r) / rows;
+      for (int i = 0; i < columns; ++i)
+      {
+        mesh.Points.insert(mesh.Points.end(),
+          { static_cast<double>(i) + reach * direction[0], reach * direction[1], reach * direction[2] });
+      }
+    }
+  }
+  for (int page = 0; page < 3; ++page)
+  {
+    for (int r = 1; r <= rows; ++r)
+    {
+      const int inner = r == 1 ? 0 : columns * (1 + page * rows + r - 2);
+      const int outer = columns * (1 + page * rows + r - 1);
+      for (int i = 0; i < segments; ++i)
+      {
+        mesh.Triangles.insert(mesh.Triangles.end(),
+          { inner + i, inner + i + 1, outer + i + 1, inner + i, outer + i + 1, outer + i });
+      }
+    }
+  }
+  return mesh;
+}
+
+/// How many triangles of the list hold each edge (keyed by its ends, the smaller first).
+std::map<std::pair<std::int32_t, std::int32_t>, int> TrianglesPerEdge(const std::vector<std::int32_t>& triangles)
+{
+  std::map<std::pair<std::int32_t, std::int32_t>, int> edges;
+  for (std::size_t t = 0; t < triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::int32_t a = triangles[t + k], b = triangles[t + (k + 1) % 3];
+      ++edges[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  return edges;
+}
+
+/// Whether a simplified Book still is one: every point on one of its pages (the hinge included),
+/// the pages joined along the hinge (edges of three triangles, all on the x axis) and nowhere
+/// else (no edge of more triangles).
+bool StaysInBook(const std::vector<double>& points, const std::vector<std::int32_t>& triangles)
+{
+  const auto onHinge = [&points](std::int32_t v) { return points[3 * v + 1] == 0.0 && points[3 * v + 2] == 0.0; };
+  bool inPages = true;
+  for (std::size_t v = 0; v < points.size() / 3; ++v)
+  {
+    const double y = points[3 * v + 1], z = points[3 * v + 2];
+    inPages = inPages && ((z == 0.0 && y >= 0.0) || (y == 0.0 && z >= 0.0) || (std::abs(y - z) < 1e-12 && y <= 0.0));
+  }
+  int hingeEdges = 0;
+  bool joinedOnHinge = true;
+  for (const auto& [edge, count] : TrianglesPerEdge(triangles))
+  {
+    hingeEdges += count == 3 ? 1 : 0;
+    joinedOnHinge = joinedOnHinge && count <= 3 && (count < 3 || (onHinge(edge.first) && onHinge(edge.second)));
+  }
+  return inPages && joinedOnHinge && hingeEdges > 0;
+}
+
 /// The mesh with every coordinate shifted, then multiplied by factor (a power of two keeps them
 /// exact).
 Mesh Scaled(Mesh mesh, double factor, double shift = 0.0)
