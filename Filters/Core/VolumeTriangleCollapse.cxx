@@ -1388,8 +1388,10 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
       continue;
     }
     CollapsePlan& plan = candidate.Plan;
+    // A collapse removes at most four triangles, but for one along a hinge (two more per page).
     const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
-    if (alive - 4 < target - tolerance && alive - this->CountRemoved(plan) < target - tolerance)
+    const bool mayPassTarget = alive - 4 < target - tolerance || this->Mesh.HasHinges();
+    if (mayPassTarget && alive - this->CountRemoved(plan) < target - tolerance)
     {
       // Near the target: collapse only the edge to the corner of larger weight instead.
       const int other = plan.Weights[1] >= plan.Weights[2] ? 1 : 2;
@@ -1462,8 +1464,9 @@ bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult
     }
     // A batch of the cheapest triangles whose neighbourhoods are disjoint: evaluated and checked
     // concurrently, then collapsed in key order, then updated concurrently. A collapse removes at
-    // most four triangles (the link condition leaves one across each edge), so near the target
-    // the batch shrinks to one: the strict heap order, with the exact count below.
+    // most four triangles (the link condition leaves one across each edge; more along a hinge,
+    // which CollapseBatch counts), so near the target the batch shrinks to one: the strict heap
+    // order, with the exact count below.
     const std::int64_t room = (this->Mesh.NumberOfAliveTriangles() - target) / 4;
     const std::int64_t limit = std::max<std::int64_t>(1, std::min<std::int64_t>(this->BatchLimit, room));
     this->SelectBatch(limit);

@@ -203,8 +203,8 @@ std::map<std::pair<std::int32_t, std::int32_t>, int> TrianglesPerEdge(const std:
 }
 
 /// Whether a simplified Book still is one: every point on one of its pages (the hinge included),
-/// the pages joined along the hinge (edges of three triangles, all on the x axis) and nowhere
-/// else (no edge of more triangles).
+/// the pages joined along the hinge (edges of three triangles, their ends exactly on the x axis)
+/// and nowhere else (no edge of more triangles).
 bool StaysInBook(const std::vector<double>& points, const std::vector<std::int32_t>& triangles)
 {
   const auto onHinge = [&points](std::int32_t v) { return points[3 * v + 1] == 0.0 && points[3 * v + 2] == 0.0; };
@@ -212,7 +212,8 @@ bool StaysInBook(const std::vector<double>& points, const std::vector<std::int32
   for (std::size_t v = 0; v < points.size() / 3; ++v)
   {
     const double y = points[3 * v + 1], z = points[3 * v + 2];
-    inPages = inPages && ((z == 0.0 && y >= 0.0) || (y == 0.0 && z >= 0.0) || (std::abs(y - z) < 1e-12 && y <= 0.0));
+    const double off = 1e-12; // a placed point's rounding; hinge points never move
+    inPages = inPages && ((std::abs(z) < off && y >= 0.0) || (std::abs(y) < off && z >= 0.0) || (std::abs(y - z) < off && y <= 0.0));
   }
   int hingeEdges = 0;
   bool joinedOnHinge = true;
