@@ -451,23 +451,30 @@ bool CollapseMesh::LinkCondition(
   const auto losesTooMany = [&](std::int32_t w) {
     return this->Valence(w, scratch) - 1 < (this->OnBoundary(w) ? 2 : 3);
   };
-  // Valence may reuse the scratch's vertex list and marks, not FarCorners; the hinge's checks
-  // come last, as they take new marks too.
+  // A manifold far corner in a tetrahedron (m, next, x, y) has three neighbours, which the
+  // valence check refuses; a non-manifold or hinge one needs the check of the far corners.
+  const auto manifold = [this](std::int32_t w) {
+    return this->Classes[w] != VertexClass::NonManifold && this->Classes[w] != VertexClass::Hinge;
+  };
+  const bool manifoldFarCorners = sides <= 2 && std::all_of(opposite, opposite + sides, manifold);
+  // Valence may reuse the scratch's vertex list and marks, not FarCorners; the far corners'
+  // check comes last, as it takes new marks too.
   return std::none_of(opposite, opposite + std::min(sides, 2), losesTooMany) &&
-    (sides <= 2 ||
-      (std::none_of(scratch.FarCorners.begin(), scratch.FarCorners.end(), losesTooMany) &&
-        this->HingeLinkCondition(merged, count, next, link, scratch)));
+    (manifoldFarCorners ||
+      (std::none_of(scratch.FarCorners.begin(), scratch.FarCorners.begin() + std::max(0, sides - 2), losesTooMany) &&
+        this->FarCornersKeepApart(merged, count, next, link, scratch)));
 }
 
-MESHSIMP_RARE_PATH bool CollapseMesh::HingeLinkCondition(
+MESHSIMP_RARE_PATH bool CollapseMesh::FarCornersKeepApart(
   const std::int32_t* merged, int count, std::int32_t next, const LinkState& link, CheckScratch& scratch) const
 {
-  // The link condition's edge part, which neighbour counts do not cover on a hinge: the far
-  // corners are distinct, and no two of them x, y span both a triangle (m, x, y) and a triangle
-  // (next, x, y) (the two would become one triangle twice).
+  // The link condition's edge part, which neighbour counts cover only for manifold far corners:
+  // the far corners are distinct; no two of them x, y span both a triangle (m, x, y) and a
+  // triangle (next, x, y) (the two would become one triangle twice); and no far corner w has
+  // edges of three or more triangles to both m and next (the merged edge would gain triangles).
   std::vector<std::int32_t>& far = scratch.FarCorners;
-  far.push_back(link.Opposite[0]);
-  far.push_back(link.Opposite[1]);
+  far.resize(static_cast<std::size_t>(std::max(0, link.OppositeCount - 2)));
+  far.insert(far.end(), link.Opposite, link.Opposite + std::min(link.OppositeCount, 2));
   std::sort(far.begin(), far.end());
   if (std::adjacent_find(far.begin(), far.end()) != far.end())
   {
@@ -504,6 +511,18 @@ MESHSIMP_RARE_PATH bool CollapseMesh::HingeLinkCondition(
         closes = pairs[j] == x && pairs[j + 1] == y;
       }
     });
+  }
+  // Each far corner's triangles with next, and with one merged vertex (m's edge to it); the
+  // valence check has overwritten the merged vertices' marks.
+  for (std::size_t j = 0; j < far.size() && !closes; ++j)
+  {
+    int withNext = 0, withMerged = 0;
+    this->ForEachTriangle(far[j], [&](std::int32_t t) {
+      const std::int32_t* tri = this->Triangle(t);
+      withNext += Contains(tri, next) ? 1 : 0;
+      withMerged += std::count_if(merged, merged + count, [tri](std::int32_t v) { return Contains(tri, v); }) == 1;
+    });
+    closes = withNext >= 3 && withMerged >= 3;
   }
   return !closes;
 }
@@ -789,9 +808,7 @@ MESHSIMP_RARE_PATH bool CollapseMesh::StaysOnHinges(const CollapsePlan& plan) co
     {
       continue;
     }
-    int triangles = 0;
-    this->ForEachTriangleOnEdge(kept, plan.Vertices[i], [&triangles](std::int32_t) { ++triangles; });
-    if (triangles < 3)
+    if (this->TrianglesOnEdge(kept, plan.Vertices[i]) < 3)
     {
       return false;
     }
@@ -1036,7 +1053,9 @@ int CollapseMesh::Merge(
   for (int i = 1; i < plan.Count; ++i)
   {
     const VertexClass c = this->Classes[plan.Vertices[i]];
-    if (c == VertexClass::Corner || (c == VertexClass::Boundary && this->Classes[kept] == VertexClass::Interior))
+    // (A hinge vertex keeps its class: the pinch check never joins the boundary to it.)
+    if ((c == VertexClass::Corner && this->Classes[kept] != VertexClass::Hinge) ||
+      (c == VertexClass::Boundary && this->Classes[kept] == VertexClass::Interior))
     {
       this->Classes[kept] = c;
     }

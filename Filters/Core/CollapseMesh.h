@@ -267,6 +267,14 @@ public:
   /// Spans longer than this keep an index of their triangles' places (see the top of the file).
   static constexpr std::int32_t IndexedSpan = 256;
 
+  /// The number of alive triangles with the edge (u, w).
+  int TrianglesOnEdge(std::int32_t u, std::int32_t w) const
+  {
+    int count = 0;
+    this->ForEachTriangleOnEdge(u, w, [&count](std::int32_t) { ++count; });
+    return count;
+  }
+
   /// The number of alive triangles around v.
   std::int32_t NumberOfTrianglesAround(std::int32_t v) const { return this->Count[v]; }
 
@@ -417,9 +425,9 @@ private:
   /// with the unchanged triangle across its edge pq (see ChangedTrianglesCheck).
   bool FoldsAcross(const CollapsePlan& plan, std::int32_t t, std::int32_t p, std::int32_t q,
     const Eigen::Vector3d& before, const Eigen::Vector3d& after) const;
-  /// The edge part of the link condition on an edge of more than two triangles (LinkCondition
-  /// checked the rest).
-  bool HingeLinkCondition(const std::int32_t* merged, int count, std::int32_t next, const LinkState& link,
+  /// The link condition's part that neighbour counts cover only for manifold far corners (on a
+  /// hinge edge, or where a far corner is a hinge or non-manifold vertex).
+  bool FarCornersKeepApart(const std::int32_t* merged, int count, std::int32_t next, const LinkState& link,
     CheckScratch& scratch) const;
   /// The hinge rule of the locks check (see the top of this file).
   bool StaysOnHinges(const CollapsePlan& plan) const;

@@ -254,6 +254,8 @@ private:
   /// The type, the importance of eq. (5.1)–(5.4) and the special neighbours of v, with v's star
   /// left in the workspace (collected unless starCollected says it is there already).
   VertexState Analyze(std::int32_t v, Workspace& work, bool starCollected = false) const;
+  /// Analyze for a hinge vertex.
+  VertexState AnalyzeHinge(std::int32_t v, Workspace& work, bool starCollected) const;
   /// Analyze with the importance of the chosen measure.
   VertexState Evaluate(std::int32_t v, Workspace& work, bool starCollected = false) const;
   /// The engine's PrefetchStars, and the quadric the evaluation of a listed vertex reads first.
@@ -276,6 +278,9 @@ private:
   /// Half the change of area when v collapses into u (its star in the workspace), or -1 when a
   /// remaining triangle would turn by more than the deviation limit or degenerate (§5.3).
   double AreaChange(std::int32_t u, const Workspace& work) const;
+  /// How many triangles removing v takes: one on a boundary, two inside, k along a hinge of k
+  /// pages.
+  int TrianglesRemovedWith(std::int32_t v) const;
   /// The legal half-edge v collapses along, and with a bound the survivor's distance after it.
   bool Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double& distance) const;
   /// Fills chosen with the round's set; true when the window covered every candidate.
@@ -459,21 +464,7 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work, bool starCollect
   }
   if (c == VertexClass::Hinge)
   {
-    // Where sheets meet (CollapseMesh: a hinge vertex never moves), v goes along the hinge onto
-    // one of its two ends, as a vertex on a sharp edge goes along the edge.
-    if (!starCollected)
-    {
-      this->CollectStar(v, work);
-    }
-    if (this->Mesh.HingeEnds(v, state.Along) != 2)
-    {
-      state.Along[0] = state.Along[1] = -1;
-      return state;
-    }
-    state.Type = DecimationVertexType::InteriorEdge;
-    state.Importance = DistanceToLine(
-      this->Mesh.Point(v), this->Mesh.Point(state.Along[0]), this->Mesh.Point(state.Along[1]));
-    return state;
+    return this->AnalyzeHinge(v, work, starCollected);
   }
   if (!starCollected)
   {
@@ -555,6 +546,27 @@ VertexState Decimator::Analyze(std::int32_t v, Workspace& work, bool starCollect
   return state;
 }
 
+VertexState Decimator::AnalyzeHinge(std::int32_t v, Workspace& work, bool starCollected) const
+{
+  // Where sheets meet (CollapseMesh: a hinge vertex never moves), v goes along the hinge onto
+  // one of its two ends, as a vertex on a sharp edge goes along the edge.
+  VertexState state;
+  state.Type = DecimationVertexType::Corner;
+  if (!starCollected)
+  {
+    this->CollectStar(v, work);
+  }
+  if (this->Mesh.HingeEnds(v, state.Along) != 2)
+  {
+    state.Along[0] = state.Along[1] = -1;
+    return state;
+  }
+  state.Type = DecimationVertexType::InteriorEdge;
+  state.Importance =
+    DistanceToLine(this->Mesh.Point(v), this->Mesh.Point(state.Along[0]), this->Mesh.Point(state.Along[1]));
+  return state;
+}
+
 double Decimator::AreaChange(std::int32_t u, const Workspace& work) const
 {
   const Vec3& target = this->Mesh.Point(u);
@@ -575,6 +587,16 @@ double Decimator::AreaChange(std::int32_t u, const Workspace& work) const
     after += newLength;
   }
   return 0.5 * std::abs(after - before);
+}
+
+int Decimator::TrianglesRemovedWith(std::int32_t v) const
+{
+  if (this->Mesh.OnHinge(v))
+  {
+    std::int32_t ends[2];
+    return this->Mesh.HingeEnds(v, ends) > 0 ? this->Mesh.TrianglesOnEdge(v, ends[0]) : 2;
+  }
+  return this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
 }
 
 bool Decimator::Plan(std::int32_t v, Workspace& work, CollapsePlan& plan, double& distance) const
@@ -781,7 +803,7 @@ void Decimator::TakeFree(std::int64_t first, std::int64_t count, std::int64_t ne
         this->SharedHubs.push_back(~*w);
       }
     }
-    expected += this->Types[v] == DecimationVertexType::Boundary ? 1 : 2;
+    expected += this->TrianglesRemovedWith(v);
   }
 }
 

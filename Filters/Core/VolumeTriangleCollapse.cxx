@@ -533,9 +533,7 @@ MESHSIMP_RARE_PATH int VolumeCollapser::OntoHinge(const std::int32_t* v, const Q
     return -1;
   }
   const int a = pinned[0], b = pinned[1];
-  int triangles = 0;
-  this->Mesh.ForEachTriangleOnEdge(v[a], v[b], [&triangles](std::int32_t) { ++triangles; });
-  if (triangles < 3)
+  if (this->Mesh.TrianglesOnEdge(v[a], v[b]) < 3)
   {
     return -1; // two pinned corners across a sheet
   }
@@ -1388,7 +1386,7 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
       continue;
     }
     CollapsePlan& plan = candidate.Plan;
-    // A collapse removes at most four triangles, but for one along a hinge (two more per page).
+    // A collapse removes at most four triangles, but for one along a hinge of k pages (k + 2).
     const std::int64_t alive = this->Mesh.NumberOfAliveTriangles();
     const bool mayPassTarget = alive - 4 < target - tolerance || this->Mesh.HasHinges();
     if (mayPassTarget && alive - this->CountRemoved(plan) < target - tolerance)

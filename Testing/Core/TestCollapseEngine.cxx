@@ -462,9 +462,10 @@ void HingeVerticesSlideAlongTheHinge()
   CHECK(e.Mesh.Class(e.Id[2]) == VertexClass::Hinge && !e.Mesh.IsLocked(e.Id[2]));
   CHECK(e.Mesh.Class(e.Id[0]) == VertexClass::NonManifold && e.Mesh.IsLocked(e.Id[0]));
   std::int32_t ends[2];
-  CHECK(e.Mesh.HingeEnds(e.Id[2], ends) == 2 && ends[0] == std::min(e.Id[1], e.Id[3]) &&
-    ends[1] == std::max(e.Id[1], e.Id[3]));
-  // Off the hinge, into a page, a page's border pinched onto the hinge: refused.
+  const auto [first, last] = std::minmax(e.Id[1], e.Id[3]);
+  CHECK(e.Mesh.HingeEnds(e.Id[2], ends) == 2 && ends[0] == first && ends[1] == last);
+  // Moved (even along the hinge), merged into a page, a page's border pinched onto the hinge:
+  // refused.
   CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 2, 1 }, 0.5 * (e.Point(1) + e.Point(2)))) == CollapseCheck::Locks);
   CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 7, 2 }, e.Point(7))) == CollapseCheck::Locks);
   CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 2, 7 }, e.Point(2))) == CollapseCheck::LinkCondition);
@@ -481,14 +482,61 @@ void HingeVerticesSlideAlongTheHinge()
   e.Mesh.Surviving(used, triangles, kept);
   for (const auto& [edge, count] : TrianglesPerEdge(triangles))
   {
-    const bool hinge = used[edge.first] == e.Id[0] && used[edge.second] == e.Id[4];
+    const bool hinge = std::minmax(used[edge.first], used[edge.second]) == std::minmax(e.Id[0], e.Id[4]);
     CHECK((count == 3) == hinge && count <= 3);
   }
   // A turn of the hinge stays (non-manifold, locked), as a boundary's corner does.
   Mesh bent = Book(4, 1);
-  bent.Points[3 * 2 + 2] = 1.0; // hinge point 2 lifted: the hinge turns by 90 degrees there, 45 at 1
+  bent.Points[3 * 2 + 2] = 0.8; // hinge point 2 lifted: the hinge turns by 77 degrees there, 39 at 1
   Engine turned(bent);
   CHECK(turned.Mesh.Class(turned.Id[2]) == VertexClass::NonManifold && turned.Mesh.Class(turned.Id[1]) == VertexClass::Hinge);
+}
+
+void HingeLoopStaysAComplex()
+{
+  // Three caps on one circle: any sequence of legal collapses (half-edges and triangles onto a
+  // corner, in random orders) keeps a simplicial complex whose edges have at most three
+  // triangles, down to where nothing is legal. The loop shrinks to a triangle; there, merging
+  // a cap's apex into it made a triangle twice, and merging along it gave an edge four.
+  for (unsigned seed = 1; seed <= 20; ++seed)
+  {
+    Engine e(DoubleBubble(8, 1 + seed % 3));
+    std::mt19937 random(seed);
+    std::vector<CollapsePlan> plans;
+    bool complex = true;
+    do
+    {
+      plans.clear();
+      for (std::int32_t t = 0; t < e.Mesh.NumberOfTriangles(); ++t)
+      {
+        const std::int32_t* tri = e.Mesh.Triangle(t);
+        for (int k = 0; t < e.Mesh.NumberOfTriangles() && e.Mesh.IsAlive(t) && k < 3; ++k)
+        {
+          CollapsePlan edge;
+          edge.Count = 2;
+          edge.Vertices[0] = tri[k];
+          edge.Vertices[1] = tri[(k + 1) % 3];
+          edge.Position = e.Mesh.Point(tri[k]);
+          CollapsePlan triangle = edge;
+          triangle.Count = 3;
+          triangle.Vertices[2] = tri[(k + 2) % 3];
+          plans.push_back(edge);
+          plans.push_back(triangle);
+        }
+      }
+      std::shuffle(plans.begin(), plans.end(), random);
+      const auto legal = std::find_if(plans.begin(), plans.end(), [&e](const CollapsePlan& plan) { return e.Mesh.IsLegal(plan); });
+      if (legal == plans.end())
+      {
+        break;
+      }
+      e.Mesh.Apply(*legal);
+      std::vector<std::int32_t> used, triangles, kept;
+      e.Mesh.Surviving(used, triangles, kept);
+      complex = IsComplex(triangles, 3);
+    } while (complex);
+    CHECK(complex);
+  }
 }
 
 void SharedVerticesGetNoNewEdge()
@@ -1302,17 +1350,28 @@ void VolumeCollapseSimplifiesFan()
 void VolumeCollapseSimplifiesAlongHinges()
 {
   // A book of three pages of 72 triangles each: with its 11 inner hinge points locked the filter
-  // stopped at 34 triangles for 12; sliding them along the hinge, it reaches the target and the
-  // pages stay flat and joined at their hinge.
+  // stopped at 36 triangles for 12; sliding them along the hinge, it reaches the target and the
+  // pages stay flat and joined along the whole hinge.
   const meshsimp::VolumeCollapseResult result = Collapse(Book(12, 3), 12);
   CHECK(result.Triangles.size() / 3 <= 12);
-  CHECK(StaysInBook(result.Points, result.Triangles));
-  // A collapse along the hinge removes five triangles, not four: counts are still met exactly.
-  for (const std::int64_t target : { 150, 101, 60, 41 })
+  CHECK(StaysInBook(result.Points, result.Triangles, 12));
+  // A collapse along a hinge of k pages removes k + 2 triangles, not at most four: counts are
+  // still met within one, with three pages and with five.
+  for (const int pages : { 3, 5 })
   {
-    const meshsimp::VolumeCollapseResult partial = Collapse(Book(12, 3), target);
-    CHECK(std::abs(static_cast<std::int64_t>(partial.Triangles.size() / 3) - target) <= 1);
-    CHECK(StaysInBook(partial.Points, partial.Triangles));
+    for (const std::int64_t target : { 150, 101, 60, 41 })
+    {
+      const meshsimp::VolumeCollapseResult partial = Collapse(Book(12, 3, pages), target * pages / 3);
+      CHECK(std::abs(static_cast<std::int64_t>(partial.Triangles.size() / 3) - target * pages / 3) <= 1);
+      CHECK(StaysInBook(partial.Points, partial.Triangles, 12, pages));
+    }
+  }
+  // A closed hinge: the loop of three caps stays a complex (no edge of four triangles, no
+  // triangle twice) down to a small count.
+  for (const std::int64_t target : { 40, 12, 4 })
+  {
+    const meshsimp::VolumeCollapseResult loop = Collapse(DoubleBubble(16, 3), target);
+    CHECK(IsComplex(loop.Triangles, 3));
   }
 }
 
@@ -1363,6 +1422,7 @@ int main()
     { "AngleGuardFollowsCollapses", AngleGuardFollowsCollapses },
     { "LockedVerticesStay", LockedVerticesStay },
     { "HingeVerticesSlideAlongTheHinge", HingeVerticesSlideAlongTheHinge },
+    { "HingeLoopStaysAComplex", HingeLoopStaysAComplex },
     { "SharedVerticesGetNoNewEdge", SharedVerticesGetNoNewEdge },
     { "CollapseUndoRedo", CollapseUndoRedo },
     { "IndependentCollapsesShareHubs", IndependentCollapsesShareHubs },

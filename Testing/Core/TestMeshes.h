@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -145,33 +146,32 @@ Mesh Fan(int n, bool closed = false)
   return mesh;
 }
 
-/// Three strips of `rows` rows meeting along a straight hinge, like the pages of a book at its
-/// spine: the hinge is the x axis from 0 to `segments` (points 0 .. segments), the pages go one
-/// unit out along +y, +z and the diagonal between -y and -z, `segments` quads per row. Each
-/// hinge edge has three triangles; the hinge's ends have open borders, so they are
+/// `pages` strips of `rows` rows meeting along a straight hinge, like the pages of a book at
+/// its spine: the hinge is the x axis from 0 to `segments` (points 0 .. segments), page p goes one
+/// unit out in the direction at angle 2 pi p / pages around the x axis, `segments` quads per row.
+/// Each hinge edge has `pages` triangles; the hinge's ends have open borders, so they are
 /// non-manifold, the points between them hinge vertices.
-Mesh Book(int segments, int rows)
+Mesh Book(int segments, int rows, int pages = 3)
 {
   Mesh mesh;
-  const double out[3][3] = { { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 }, { 0.0, -0.7071067811865476, -0.7071067811865476 } };
   const int columns = segments + 1;
   for (int i = 0; i < columns; ++i)
   {
     mesh.Points.insert(mesh.Points.end(), { static_cast<double>(i), 0.0, 0.0 });
   }
-  for (const auto& direction : out)
+  for (int page = 0; page < pages; ++page)
   {
+    const double angle = 2.0 * 3.14159265358979323846 * page / pages;
     for (int r = 1; r <= rows; ++r)
     {
       const double reach = static_cast<double>(r) / rows;
       for (int i = 0; i < columns; ++i)
       {
-        mesh.Points.insert(mesh.Points.end(),
-          { static_cast<double>(i) + reach * direction[0], reach * direction[1], reach * direction[2] });
+        mesh.Points.insert(mesh.Points.end(), { static_cast<double>(i), reach * std::cos(angle), reach * std::sin(angle) });
       }
     }
   }
-  for (int page = 0; page < 3; ++page)
+  for (int page = 0; page < pages; ++page)
   {
     for (int r = 1; r <= rows; ++r)
     {
@@ -182,6 +182,48 @@ Mesh Book(int segments, int rows)
         mesh.Triangles.insert(mesh.Triangles.end(),
           { inner + i, inner + i + 1, outer + i + 1, inner + i, outer + i + 1, outer + i });
       }
+    }
+  }
+  return mesh;
+}
+
+/// Three caps on one circle of n points (a closed hinge): a flat disc and two domes, each of
+/// `rows` rings, like a double soap bubble's wall and its two outer walls.
+Mesh DoubleBubble(int n, int rows)
+{
+  Mesh mesh;
+  for (int i = 0; i < n; ++i)
+  {
+    const double angle = 2.0 * 3.14159265358979323846 * i / n;
+    mesh.Points.insert(mesh.Points.end(), { std::cos(angle), std::sin(angle), 0.0 });
+  }
+  for (const double height : { 0.0, 1.0, -1.0 })
+  {
+    std::vector<int> previous(n);
+    std::iota(previous.begin(), previous.end(), 0);
+    for (int r = 1; r < rows; ++r)
+    {
+      const double radius = 1.0 - static_cast<double>(r) / rows;
+      std::vector<int> ring(n);
+      for (int i = 0; i < n; ++i)
+      {
+        const double angle = 2.0 * 3.14159265358979323846 * (i + 0.5 * r) / n;
+        ring[i] = static_cast<int>(mesh.Points.size() / 3);
+        mesh.Points.insert(mesh.Points.end(),
+          { radius * std::cos(angle), radius * std::sin(angle), height * std::sqrt(1.0 - radius * radius) });
+      }
+      for (int i = 0; i < n; ++i)
+      {
+        const int j = (i + 1) % n;
+        mesh.Triangles.insert(mesh.Triangles.end(), { previous[i], previous[j], ring[i], previous[j], ring[j], ring[i] });
+      }
+      previous = ring;
+    }
+    const int centre = static_cast<int>(mesh.Points.size() / 3);
+    mesh.Points.insert(mesh.Points.end(), { 0.0, 0.0, height });
+    for (int i = 0; i < n; ++i)
+    {
+      mesh.Triangles.insert(mesh.Triangles.end(), { previous[i], previous[(i + 1) % n], centre });
     }
   }
   return mesh;
@@ -202,27 +244,70 @@ std::map<std::pair<std::int32_t, std::int32_t>, int> TrianglesPerEdge(const std:
   return edges;
 }
 
-/// Whether a simplified Book still is one: every point on one of its pages (the hinge included),
-/// the pages joined along the hinge (edges of three triangles, their ends exactly on the x axis)
-/// and nowhere else (no edge of more triangles).
-bool StaysInBook(const std::vector<double>& points, const std::vector<std::int32_t>& triangles)
+/// Whether the triangles are a simplicial complex with edges of at most `most` triangles: no
+/// triangle repeats another's corners or has a corner twice.
+bool IsComplex(const std::vector<std::int32_t>& triangles, int most)
+{
+  std::vector<std::array<std::int32_t, 3>> sorted;
+  for (std::size_t t = 0; t < triangles.size(); t += 3)
+  {
+    std::array<std::int32_t, 3> corners{ triangles[t], triangles[t + 1], triangles[t + 2] };
+    std::sort(corners.begin(), corners.end());
+    if (corners[0] == corners[1] || corners[1] == corners[2])
+    {
+      return false;
+    }
+    sorted.push_back(corners);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const auto edges = TrianglesPerEdge(triangles);
+  return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() &&
+    std::all_of(edges.begin(), edges.end(), [most](const auto& edge) { return edge.second <= most; });
+}
+
+/// Whether a simplified Book(segments, rows, pages) still is one: every triangle on one page
+/// (its points on the page or the hinge), the pages joined along the whole hinge (its edges,
+/// exactly on the x axis, add up to `segments`) and nowhere else.
+bool StaysInBook(const std::vector<double>& points, const std::vector<std::int32_t>& triangles, int segments, int pages = 3)
 {
   const auto onHinge = [&points](std::int32_t v) { return points[3 * v + 1] == 0.0 && points[3 * v + 2] == 0.0; };
-  bool inPages = true;
-  for (std::size_t v = 0; v < points.size() / 3; ++v)
+  // The page of a point (-1: the hinge, -2: none), allowing a placed point's rounding.
+  const auto pageOf = [&](std::int32_t v) {
+    if (onHinge(v))
+    {
+      return -1;
+    }
+    for (int page = 0; page < pages; ++page)
+    {
+      const double angle = 2.0 * 3.14159265358979323846 * page / pages;
+      const double y = points[3 * v + 1], z = points[3 * v + 2];
+      if (std::abs(z * std::cos(angle) - y * std::sin(angle)) < 1e-12 && y * std::cos(angle) + z * std::sin(angle) > 0.0)
+      {
+        return page;
+      }
+    }
+    return -2;
+  };
+  bool onePage = true;
+  for (std::size_t t = 0; t < triangles.size(); t += 3)
   {
-    const double y = points[3 * v + 1], z = points[3 * v + 2];
-    const double off = 1e-12; // a placed point's rounding; hinge points never move
-    inPages = inPages && ((std::abs(z) < off && y >= 0.0) || (std::abs(y) < off && z >= 0.0) || (std::abs(y - z) < off && y <= 0.0));
+    int page = -1;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int own = pageOf(triangles[t + k]);
+      onePage = onePage && own != -2 && (own == -1 || page == -1 || own == page);
+      page = own >= 0 ? own : page;
+    }
   }
-  int hingeEdges = 0;
+  double hingeLength = 0.0;
   bool joinedOnHinge = true;
   for (const auto& [edge, count] : TrianglesPerEdge(triangles))
   {
-    hingeEdges += count == 3 ? 1 : 0;
-    joinedOnHinge = joinedOnHinge && count <= 3 && (count < 3 || (onHinge(edge.first) && onHinge(edge.second)));
+    const bool hinge = count == pages && onHinge(edge.first) && onHinge(edge.second);
+    hingeLength += hinge ? std::abs(points[3 * edge.first] - points[3 * edge.second]) : 0.0;
+    joinedOnHinge = joinedOnHinge && (hinge || count <= 2);
   }
-  return inPages && joinedOnHinge && hingeEdges > 0;
+  return onePage && joinedOnHinge && IsComplex(triangles, pages) && std::abs(hingeLength - segments) < 1e-9;
 }
 
 /// The mesh with every coordinate shifted, then multiplied by factor (a power of two keeps them

@@ -576,15 +576,28 @@ void SimplifiesAlongHinges()
   // A book of three pages of 72 triangles each: with its 11 inner hinge points locked the filter
   // stopped at 39 triangles for 12; removing them along the hinge, it reaches the target (and
   // the ones before) and the pages stay flat and joined at their hinge.
-  for (const std::int64_t target : { 150, 101, 60, 41, 12 })
-  {
-    // A removal along the hinge takes three triangles, not two: counts are still met.
+  // A removal along a hinge of k pages takes k triangles, not two: counts are met within one
+  // such removal (k - 1 triangles), with three pages and with eight.
+  const auto decimate = [](const Mesh& mesh, std::int64_t target) {
     ParallelDecimationOptions options;
     options.Goal.SetTriangleCount(target);
     ParallelDecimationResult result;
-    CHECK(meshsimp::ParallelDecimation(Book(12, 3).View(), options, result));
-    CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - target) <= 1);
-    CHECK(StaysInBook(result.Points, result.Triangles));
+    CHECK(meshsimp::ParallelDecimation(mesh.View(), options, result));
+    return result;
+  };
+  for (const int pages : { 3, 8 })
+  {
+    for (const std::int64_t target : { 150, 101, 60, 41, 12 })
+    {
+      const ParallelDecimationResult result = decimate(Book(12, 3, pages), target * pages / 3);
+      CHECK(std::abs(static_cast<std::int64_t>(result.Triangles.size() / 3) - target * pages / 3) <= pages - 1);
+      CHECK(StaysInBook(result.Points, result.Triangles, 12, pages));
+    }
+  }
+  // A closed hinge: the loop of three caps stays a complex down to a small count.
+  for (const std::int64_t target : { 40, 16, 8 })
+  {
+    CHECK(IsComplex(decimate(DoubleBubble(16, 3), target).Triangles, 3));
   }
 }
 
