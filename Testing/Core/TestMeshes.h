@@ -694,15 +694,7 @@ inline std::array<std::int64_t, 2> NewTears(const std::vector<std::int32_t>& inp
 {
   using Edge = std::pair<std::int32_t, std::int32_t>;
   const auto count = [](const std::vector<std::int32_t>& triangles, const std::vector<std::int32_t>* map) {
-    std::map<Edge, int> edges;
-    for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        std::int32_t a = triangles[t + k], b = triangles[t + (k + 1) % 3];
-        ++edges[{ std::min(a, b), std::max(a, b) }];
-      }
-    }
+    const std::map<Edge, int> edges = TrianglesPerEdge(triangles);
     std::map<Edge, int> mapped; // an input edge's kind at its image, 1 (open) or 3 (more than two)
     for (const auto& edge : edges)
     {
