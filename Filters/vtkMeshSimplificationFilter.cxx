@@ -304,6 +304,10 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
     piece.LockArray = std::string("'") + (array->GetName() ? array->GetName() : "") + "'";
   }
   options.LockedPoints = piece.Locks.empty() ? nullptr : piece.Locks.data();
+  vtkPointData* pointData = piece.Input->GetPointData();
+  options.SamePointData = [pointData](std::int64_t a, std::int64_t b) {
+    return vtkSimplification::SamePointData(pointData, a, b);
+  };
   std::vector<std::int32_t> regions;
   if (this->PreserveAttributeBorders)
   {

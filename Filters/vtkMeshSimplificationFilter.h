@@ -23,7 +23,13 @@
  *   as Extract Surface does; one with 3-D cells is refused with a message that says to extract
  *   its surface first), or composite data of them: polygonal leaves are simplified, other leaves
  *   are passed through unchanged. Polygons are triangulated and strips decomposed; vertex and
- *   line cells are dropped with a warning. The input is never modified.
+ *   line cells are dropped with a warning. Before simplifying, the usable triangles are
+ *   mended: repeated triangles dropped, turned-over ones turned back, and zero-width cracks
+ *   closed: two points at exactly the same position whose open borders run along each other
+ *   (split-off copies of a point, patches stored with their own copies of a shared border)
+ *   become one point where every point array has the same values at both (a texture or colour
+ *   seam stays open) and their locks agree. Points that only touch stay apart. The input is
+ *   never modified.
  * - Output: point data by one rule in every filter (vtkSimplificationAttributes.h: floating
  *   arrays interpolated, unsigned-char colours averaged and rounded, other arrays from one
  *   input point), cell data copied from the surviving triangles, the algorithm's own arrays

@@ -239,6 +239,32 @@ void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkP
   }
 }
 
+bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b)
+{
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* array = pd->GetAbstractArray(i);
+    const int components = array->GetNumberOfComponents();
+    auto* numbers = vtkDataArray::SafeDownCast(array);
+    for (int c = 0; c < components; ++c)
+    {
+      if (numbers)
+      {
+        const double x = numbers->GetComponent(a, c), y = numbers->GetComponent(b, c);
+        if (x != y && !(std::isnan(x) && std::isnan(y)))
+        {
+          return false;
+        }
+      }
+      else if (array->GetVariantValue(a * components + c) != array->GetVariantValue(b * components + c))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 namespace
 {
 /// What every output gets after its points, triangles and input arrays: normals recomputed, the

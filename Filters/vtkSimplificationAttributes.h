@@ -61,6 +61,12 @@ void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPoly
 /// Every point array of inPD mapped to the mesh's output points by the rule above.
 void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkPointData* outPD);
 
+/// Whether input points a and b have the same value in every point array of pd (component by
+/// component; NaN equals NaN): the core's SimplificationOptions::SamePointData, so that two
+/// points at one position join only where no array tells them apart (a colour or texture seam
+/// stays open).
+bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b);
+
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);
 

@@ -2200,6 +2200,7 @@ void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& su
   options.LockedPoints = locked.data();
   options.Regions = regions.data();
   options.StopTriangles = target;
+  options.CloseCracks = false; // clusters at one position stay apart, as their triangles have them
   ProgressiveMesh sequence;
   BuildProgressiveMesh(clustered, options, sequence);
   Outcome outcome;

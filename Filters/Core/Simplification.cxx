@@ -105,6 +105,7 @@ Outcome PreparedMesh::Report() const
   outcome.Diagonal = this->Diagonal;
   outcome.TargetTriangles = this->TargetTriangles;
   outcome.NonFinitePoints = this->Mesh.NonFinitePoints;
+  outcome.JoinedPoints = this->Mesh.JoinedPoints;
   outcome.LockedPoints = this->LockedCount;
   if (outcome.LockedPoints > 0 && outcome.LockedPoints == static_cast<std::int64_t>(this->Locks.size()) &&
     outcome.TargetTriangles < outcome.UsableTriangles)
@@ -118,7 +119,12 @@ PreparedMesh PrepareMesh(const TriangleMeshView& input, const SimplificationOpti
   Normalization normalization, const ExecutionContext& context)
 {
   PreparedMesh prepared;
-  prepared.Mesh = MakeCompactMesh(input, context);
+  const PointMergeTest mayMerge = [&options](std::int64_t a, std::int64_t b) {
+    return (!options.LockedPoints || options.LockedPoints[a] == options.LockedPoints[b]) &&
+      (!options.Regions || options.Regions[a] == options.Regions[b]) &&
+      (!options.SamePointData || options.SamePointData(a, b));
+  };
+  prepared.Mesh = MakeCompactMesh(input, context, options.CloseCracks ? mayMerge : PointMergeTest());
   Normalize(prepared, normalization, context);
   GatherLocks(prepared, options, context);
   const Target& goal = options.Goal;

@@ -5,8 +5,8 @@
  * constraints), the preparation they share, and the one result they all fill.
  *
  * An algorithm is a pipeline of stages on this front end:
- *  1. PrepareMesh: the usable triangles as a compact, spatially ordered mesh (MakeCompactMesh),
- *     normalised, with the target resolved to a count or a bound in the mesh's units, and each
+ *  1. PrepareMesh: the usable triangles as a compact, spatially ordered mesh (MakeCompactMesh,
+ *     with zero-width cracks closed), normalised, with the target resolved to a count or a bound in the mesh's units, and each
  *     vertex's locks (the user's, piece borders, open borders) and attribute region;
  *  2. the algorithm's own stages on the prepared mesh;
  *  3. its output as a SimplifiedMesh: points, triangles, what each comes from (point data is
@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,13 @@ struct SimplificationOptions
   /// Optional, one id per input point: no collapse or cluster joins points of different ids, so
   /// borders between regions of a label or colour array stay sharp.
   const std::int32_t* Regions = nullptr;
+  /// Close zero-width cracks (see MakeCompactMesh): two points at exactly the same position on
+  /// the two sides of a crack become one vertex when their locks and regions agree and
+  /// SamePointData says yes. Off for meshes an algorithm makes itself (whose coincident points
+  /// it tells apart).
+  bool CloseCracks = true;
+  /// Optional: whether two input points (by id) carry the same point data (without it: always).
+  std::function<bool(std::int64_t, std::int64_t)> SamePointData;
 };
 
 /// Why an algorithm ended where it did.
@@ -63,6 +71,7 @@ struct Outcome
   double Diagonal = 0.0;            // the usable points' bounding-box diagonal (input units)
   std::int64_t TargetTriangles = 0; // the target's count among them (0 under a bound)
   std::int64_t NonFinitePoints = 0; // input points with a NaN or infinite coordinate
+  std::int64_t JoinedPoints = 0;    // input points joined to a coincident one to close a crack
   std::int64_t LockedPoints = 0;    // usable points locked (array, piece borders, open borders)
   StopReason Stop = StopReason::TargetMet;
   /// The algorithm's words for Stop when it is not TargetMet (why no nearer count was possible).

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <tuple>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
@@ -99,10 +100,10 @@ std::vector<std::int32_t> MortonCodes(const View& input, const std::vector<std::
 
 /// The used vertices in the Morton order of a coarse grid over their bounding cube (input order
 /// within a cell): mesh's InputVertex, Points and box; vertexOf maps input points to them (-1:
-/// unused).
+/// unused). Returns where each cell's vertices end (cell c holds [end of c − 1, end of c)).
 template <typename View>
-void OrderVertices(const View& input, const std::vector<std::uint8_t>& usable, CompactMesh& mesh,
-  std::vector<std::int32_t>& vertexOf, const ExecutionContext& context)
+std::vector<std::int32_t> OrderVertices(const View& input, const std::vector<std::uint8_t>& usable,
+  CompactMesh& mesh, std::vector<std::int32_t>& vertexOf, const ExecutionContext& context)
 {
   const std::int64_t n = input.NumberOfPoints, m = input.NumberOfTriangles;
   vertexOf.assign(n, -1); // used vertices are marked 0 first
@@ -163,6 +164,8 @@ void OrderVertices(const View& input, const std::vector<std::uint8_t>& usable, C
       mesh.Points[v] = input.Point(mesh.InputVertex[v]);
     }
   });
+  start.pop_back(); // the counting moved each cell's start to its end
+  return start;
 }
 
 /// Triangles by their lowest vertex (counting sort, input order among equals), corners kept,
@@ -418,35 +421,218 @@ void OrientConsistently(CompactMesh& mesh, const ExecutionContext& context)
   }
 }
 
+/// Each vertex's first vertex (in mesh order) at exactly its position, itself when it is alone
+/// there; empty when every vertex is alone. Coincident vertices share a Morton cell
+/// (OrderVertices), so each cell's vertices are looked up in a hash table of their own.
+std::vector<std::int32_t> CoincidentVertices(
+  const CompactMesh& mesh, const std::vector<std::int32_t>& cellEnds, const ExecutionContext& context)
+{
+  struct Scratch
+  {
+    std::vector<std::int32_t> Table; // open addressing, -1: empty
+    bool Any = false;
+  };
+  const auto hash = [](const Eigen::Vector3d& p) {
+    std::uint64_t h = 0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double c = p[axis] + 0.0; // -0 as +0
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      h = (h ^ bits ^ (bits >> 32)) * 0x9E3779B97F4A7C15ull;
+    }
+    return (h ^ (h >> 32)) * 0xBF58476D1CE4E5B9ull >> 32; // every bit of the input stirs the high bits
+  };
+  std::vector<std::int32_t> first(mesh.Points.size());
+  std::iota(first.begin(), first.end(), 0);
+  std::vector<Scratch> scratches;
+  const auto cells = static_cast<std::int64_t>(cellEnds.size());
+  context.ForEachWithScratch(scratches, cells, 20, [&](std::int64_t c, Scratch& scratch) {
+    const std::int32_t begin = c > 0 ? cellEnds[c - 1] : 0, end = cellEnds[c];
+    if (end - begin < 2)
+    {
+      return;
+    }
+    std::size_t size = 4;
+    while (size < 2 * static_cast<std::size_t>(end - begin))
+    {
+      size *= 2;
+    }
+    scratch.Table.assign(size, -1);
+    for (std::int32_t v = begin; v < end; ++v)
+    {
+      std::size_t slot = hash(mesh.Points[v]) & (size - 1);
+      while (scratch.Table[slot] >= 0 && mesh.Points[scratch.Table[slot]] != mesh.Points[v])
+      {
+        slot = (slot + 1) & (size - 1);
+      }
+      if (scratch.Table[slot] >= 0)
+      {
+        first[v] = scratch.Table[slot];
+        scratch.Any = true;
+      }
+      else
+      {
+        scratch.Table[slot] = v;
+      }
+    }
+  });
+  const bool any = std::any_of(scratches.begin(), scratches.end(), [](const Scratch& s) { return s.Any; });
+  return any ? first : std::vector<std::int32_t>();
+}
+
+/// Where the open borders of coincident vertices lead: the vertices that share their position
+/// with another (grouped by position, in mesh order within one) and, per vertex, the positions
+/// (first vertices) its border edges lead to, sorted, as CSR rows.
+void BorderPositions(const CompactMesh& mesh, const std::vector<std::int32_t>& first,
+  std::vector<std::int32_t>& grouped, std::vector<std::int32_t>& offsets, std::vector<std::int32_t>& positions)
+{
+  const std::int32_t n = static_cast<std::int32_t>(first.size());
+  std::vector<std::uint8_t> shared(static_cast<std::size_t>(n), 0);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    shared[v] |= first[v] != v ? 1 : 0;
+    shared[first[v]] |= first[v] != v ? 1 : 0;
+  }
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    if (shared[v])
+    {
+      grouped.push_back(v);
+    }
+  }
+  std::stable_sort(grouped.begin(), grouped.end(), [&](std::int32_t a, std::int32_t b) { return first[a] < first[b]; });
+  std::vector<std::uint8_t> flags;
+  offsets.assign(1, 0);
+  for (const std::int32_t v : grouped)
+  {
+    const Corner* corner = mesh.Adjacency.Begin(v);
+    flags.resize(static_cast<std::size_t>(mesh.Adjacency.End(v) - corner));
+    MarkBoundaryCorners(mesh.Adjacency, v, flags.data());
+    const std::size_t row = positions.size();
+    for (std::size_t i = 0; i < flags.size(); ++i)
+    {
+      if (flags[i] & OutgoingBoundaryEdge)
+      {
+        positions.push_back(first[corner[i].Next]);
+      }
+      if (flags[i] & IncomingBoundaryEdge)
+      {
+        positions.push_back(first[corner[i].Previous]);
+      }
+    }
+    std::sort(positions.begin() + static_cast<std::ptrdiff_t>(row), positions.end());
+    offsets.push_back(static_cast<std::int32_t>(positions.size()));
+  }
+}
+
+/**
+ * Closes zero-width cracks: two vertices at one position whose open borders lead to one
+ * position too (a border edge of each ends at the same point, or at two coincident points) are
+ * the two sides of a crack, and become one vertex (the first in mesh order) where mayMerge
+ * allows it. Vertices that only touch (two parts meeting at a corner) stay apart. Returns each
+ * input point's replacement (-1: kept), empty when no vertex joins another.
+ */
+std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t inputPoints,
+  const std::vector<std::int32_t>& first, const PointMergeTest& mayMerge)
+{
+  std::vector<std::int32_t> grouped, offsets, positions;
+  BorderPositions(mesh, first, grouped, offsets, positions);
+  const auto leadsWith = [&](std::size_t i, std::size_t j) {
+    const auto row = [&](std::size_t k) { return positions.begin() + offsets[k]; };
+    for (auto a = row(i), b = row(j); a != row(i + 1) && b != row(j + 1);)
+    {
+      if (*a == *b && *a != first[grouped[i]])
+      {
+        return true;
+      }
+      *a < *b ? ++a : ++b;
+    }
+    return false;
+  };
+  // Union of the crack's sides within each position, rooted at the first vertex.
+  std::vector<std::int32_t> root(mesh.Points.size());
+  std::iota(root.begin(), root.end(), 0);
+  const auto find = [&root](std::int32_t v) {
+    while (root[v] != v)
+    {
+      v = root[v] = root[root[v]];
+    }
+    return v;
+  };
+  std::vector<std::int32_t> replacement;
+  for (std::size_t i = 0; i < grouped.size(); ++i)
+  {
+    for (std::size_t j = i; j-- > 0 && first[grouped[j]] == first[grouped[i]];)
+    {
+      const std::int32_t p = grouped[j], q = grouped[i];
+      if (find(p) != find(q) && leadsWith(i, j) &&
+        mayMerge(mesh.InputVertex[p], mesh.InputVertex[q]))
+      {
+        root[std::max(find(p), find(q))] = std::min(find(p), find(q));
+      }
+    }
+  }
+  for (const std::int32_t v : grouped)
+  {
+    if (find(v) != v)
+    {
+      replacement.resize(static_cast<std::size_t>(inputPoints), -1);
+      replacement[mesh.InputVertex[v]] = mesh.InputVertex[find(v)];
+    }
+  }
+  return replacement;
+}
+
 template <typename PointType, typename IdType>
-CompactMesh BuildCompactMesh(const TypedView<PointType, IdType>& input, const ExecutionContext& context)
+CompactMesh BuildCompactMesh(
+  const TypedView<PointType, IdType>& input, const PointMergeTest& mayMerge, const ExecutionContext& context)
 {
   CompactMesh mesh;
   std::vector<std::uint8_t> usable = MarkUsable(input, mesh, context);
   std::vector<std::int32_t> vertexOf;
-  OrderVertices(input, usable, mesh, vertexOf, context);
+  const std::vector<std::int32_t> cellEnds = OrderVertices(input, usable, mesh, vertexOf, context);
   OrderTriangles(input, usable, vertexOf, mesh, context);
   if (DropDuplicateTriangles(mesh, usable))
   {
     OrderTriangles(input, usable, vertexOf, mesh, context);
+  }
+  const std::vector<std::int32_t> first = mayMerge ? CoincidentVertices(mesh, cellEnds, context) : std::vector<std::int32_t>();
+  const std::vector<std::int32_t> replacement =
+    first.empty() ? first : CrackJoins(mesh, input.NumberOfPoints, first, mayMerge);
+  if (!replacement.empty())
+  {
+    // Made anew from the input with the joined points replaced in its triangles (those that
+    // spanned a crack become degenerate and are dropped).
+    const std::int64_t n = input.NumberOfPoints;
+    std::vector<IdType> ids(3 * static_cast<std::size_t>(input.NumberOfTriangles));
+    for (std::size_t k = 0; k < ids.size(); ++k)
+    {
+      const std::int64_t id = input.Id(static_cast<std::int64_t>(k));
+      ids[k] = id >= 0 && id < n && replacement[id] >= 0 ? static_cast<IdType>(replacement[id]) : input.Ids[k];
+    }
+    CompactMesh joined = BuildCompactMesh(
+      TypedView<PointType, IdType>{ input.Points, ids.data(), n, input.NumberOfTriangles }, {}, context);
+    joined.JoinedPoints = std::count_if(replacement.begin(), replacement.end(), [](std::int32_t r) { return r >= 0; });
+    return joined;
   }
   OrientConsistently(mesh, context);
   return mesh;
 }
 } // namespace
 
-CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context)
+CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context, const PointMergeTest& mayMerge)
 {
   const std::int64_t n = input.NumberOfPoints, m = input.NumberOfTriangles;
   if (input.Points)
   {
     return input.Triangles
-      ? BuildCompactMesh(TypedView<double, std::int32_t>{ input.Points, input.Triangles, n, m }, context)
-      : BuildCompactMesh(TypedView<double, long long>{ input.Points, input.Triangles64, n, m }, context);
+      ? BuildCompactMesh(TypedView<double, std::int32_t>{ input.Points, input.Triangles, n, m }, mayMerge, context)
+      : BuildCompactMesh(TypedView<double, long long>{ input.Points, input.Triangles64, n, m }, mayMerge, context);
   }
   return input.Triangles
-    ? BuildCompactMesh(TypedView<float, std::int32_t>{ input.FloatPoints, input.Triangles, n, m }, context)
-    : BuildCompactMesh(TypedView<float, long long>{ input.FloatPoints, input.Triangles64, n, m }, context);
+    ? BuildCompactMesh(TypedView<float, std::int32_t>{ input.FloatPoints, input.Triangles, n, m }, mayMerge, context)
+    : BuildCompactMesh(TypedView<float, long long>{ input.FloatPoints, input.Triangles64, n, m }, mayMerge, context);
 }
 
 } // namespace meshsimp

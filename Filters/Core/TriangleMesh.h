@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -188,6 +189,7 @@ struct CompactMesh
   std::vector<std::int32_t> InputVertex;   // vertex → input point
   std::vector<std::int32_t> InputTriangle; // triangle → input triangle
   std::int64_t NonFinitePoints = 0;        // input points with a NaN or infinite coordinate
+  std::int64_t JoinedPoints = 0;           // input points joined to another to close a crack
   VertexTriangleAdjacency Adjacency;
 
   /// The box's diagonal, also where its square would over- or underflow (coordinates beyond
@@ -208,7 +210,16 @@ struct CompactMesh
   Eigen::Vector3d Centre() const { return 0.5 * this->Lower + 0.5 * this->Upper; }
 };
 
-CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context = {});
+/// Whether two input points (by id) may become one vertex.
+using PointMergeTest = std::function<bool(std::int64_t, std::int64_t)>;
+
+/// The compact mesh of an input. With mayMerge, zero-width cracks are closed first: two points
+/// at exactly the same position whose open borders lead to one position too (split-off copies
+/// of a point, patches stored with their own copies of a shared border) become one vertex
+/// where mayMerge allows it, as if the input had shared them; points that only touch stay
+/// apart. Finding coincident points costs a sort within each Morton cell.
+CompactMesh MakeCompactMesh(
+  const TriangleMeshView& input, const ExecutionContext& context = {}, const PointMergeTest& mayMerge = {});
 
 /// The cosine of a triangle's smallest angle (the largest of its three cosines; 1 when
 /// degenerate): a shape measure without trigonometry.

@@ -906,6 +906,20 @@ void VolumeCollapseMendsOrientationAndDuplicates()
   CHECK(ClosedOriented(result.Triangles));
 }
 
+void VolumeCollapseClosesCracks()
+{
+  // Points split off a closed sphere (each one's copy stands for it in every other triangle
+  // around it: zero-width cracks) rejoin before the collapse: the output is the unsplit
+  // sphere's, closed and oriented.
+  const Mesh sphere = Sphere(16);
+  std::int64_t copies = 0;
+  const Mesh split = SplitOffEvery(sphere, 13, copies);
+  const meshsimp::VolumeCollapseResult result = Collapse(split, 307);
+  const meshsimp::VolumeCollapseResult whole = Collapse(sphere, 307);
+  CHECK(ClosedOriented(result.Triangles) && result.Report.JoinedPoints == copies);
+  CHECK(result.Points == whole.Points && result.Triangles == whole.Triangles);
+}
+
 void VolumeCollapseBatchesDoNotDependOnThreads()
 {
   // Batches of collapses (BatchSize, at most one per 1000 triangles) are evaluated, checked and
@@ -1432,6 +1446,7 @@ int main()
     { "PlaneBoundMeasuresMergedPlanes", PlaneBoundMeasuresMergedPlanes },
     { "VolumeCollapseKeepsSphereClosed", VolumeCollapseKeepsSphereClosed },
     { "VolumeCollapseMendsOrientationAndDuplicates", VolumeCollapseMendsOrientationAndDuplicates },
+    { "VolumeCollapseClosesCracks", VolumeCollapseClosesCracks },
     { "VolumeCollapseBatchesDoNotDependOnThreads", VolumeCollapseBatchesDoNotDependOnThreads },
     { "VolumeCollapseKeepsPlaneAndCorners", VolumeCollapseKeepsPlaneAndCorners },
     { "VolumeCollapseKeepsTubeOnItsCylinder", VolumeCollapseKeepsTubeOnItsCylinder },

@@ -373,6 +373,34 @@ Mesh Misoriented(Mesh mesh)
   return mesh;
 }
 
+/// mesh with point v split off, as damaged scans have it: a copy of v at the same position
+/// stands for v in every other triangle around it, so each of v's edges is a zero-width crack.
+Mesh SplitOff(Mesh mesh, std::int32_t v)
+{
+  const auto copy = static_cast<std::int32_t>(mesh.Points.size() / 3);
+  mesh.Points.insert(mesh.Points.end(), { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
+  bool other = false;
+  for (std::int32_t& id : mesh.Triangles)
+  {
+    if (id == v && (other = !other))
+    {
+      id = copy;
+    }
+  }
+  return mesh;
+}
+
+/// mesh with every step-th point split off (SplitOff); copies counts them.
+Mesh SplitOffEvery(Mesh mesh, std::int32_t step, std::int64_t& copies)
+{
+  copies = 0;
+  for (std::int32_t v = 0, n = static_cast<std::int32_t>(mesh.Points.size() / 3); v < n; v += step, ++copies)
+  {
+    mesh = SplitOff(mesh, v);
+  }
+  return mesh;
+}
+
 /// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
 double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c)

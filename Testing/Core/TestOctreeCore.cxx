@@ -790,6 +790,85 @@ void CompactMeshIsSpatialAndMapsBack()
   CHECK(narrow.VertexToPoint == wide.VertexToPoint && narrow.TriangleSource == wide.TriangleSource);
 }
 
+void CompactMeshClosesCracks()
+{
+  // Zero-width cracks close where the merge test allows: split-off points rejoin (a closed
+  // sphere again), the two halves of a grid stored with their own copies of the middle column
+  // become one grid; points that only touch, and those the test tells apart, stay apart.
+  const auto always = [](std::int64_t, std::int64_t) { return true; };
+  const auto countBorderEdges = [](const meshsimp::CompactMesh& compact) {
+    std::vector<std::uint8_t> flags;
+    int edges = 0;
+    for (std::int64_t v = 0; v < static_cast<std::int64_t>(compact.Points.size()); ++v)
+    {
+      flags.resize(static_cast<std::size_t>(compact.Adjacency.End(v) - compact.Adjacency.Begin(v)));
+      meshsimp::MarkBoundaryCorners(compact.Adjacency, v, flags.data());
+      edges += static_cast<int>(std::count_if(flags.begin(), flags.end(),
+        [](std::uint8_t f) { return (f & meshsimp::OutgoingBoundaryEdge) != 0; }));
+    }
+    return edges;
+  };
+  const Mesh sphere = Sphere(6);
+  const std::int64_t points = static_cast<std::int64_t>(sphere.Points.size() / 3);
+  // The first triangle's first two corners (a crack between two split points) and one more.
+  const std::int32_t a = sphere.Triangles[0], b = sphere.Triangles[1], c = 40;
+  const Mesh split = SplitOff(SplitOff(SplitOff(sphere, a), b), c);
+  const meshsimp::CompactMesh open = meshsimp::MakeCompactMesh(split.View());
+  CHECK(static_cast<std::int64_t>(open.Points.size()) == points + 3 && open.JoinedPoints == 0);
+  CHECK(countBorderEdges(open) > 0);
+  for (const int threads : { 1, 2, 3 })
+  {
+    const auto context = meshsimp_test::Threaded<meshsimp::ExecutionContext>(threads);
+    const meshsimp::CompactMesh closed = meshsimp::MakeCompactMesh(split.View(), context, always);
+    CHECK(static_cast<std::int64_t>(closed.Points.size()) == points && closed.JoinedPoints == 3);
+    CHECK(countBorderEdges(closed) == 0 && closed.InputTriangle.size() == sphere.Triangles.size() / 3);
+    CHECK(closed.Triangles == meshsimp::MakeCompactMesh(sphere.View()).Triangles);
+  }
+  // The merge test decides point by point: c's copy stays apart.
+  const auto copyOfC = static_cast<std::int64_t>(points + 2);
+  const meshsimp::CompactMesh some = meshsimp::MakeCompactMesh(split.View(), {},
+    [&](std::int64_t p, std::int64_t q) { return p != copyOfC && q != copyOfC; });
+  CHECK(static_cast<std::int64_t>(some.Points.size()) == points + 1 && some.JoinedPoints == 2);
+
+  // Two halves of a grid, the right one with its own copies of the middle column (x = 0.5).
+  Mesh halves = Grid(8);
+  std::vector<std::int32_t> copyOf(halves.Points.size() / 3, -1);
+  for (std::size_t t = 0; t < halves.Triangles.size(); t += 3)
+  {
+    const bool right = std::all_of(halves.Triangles.begin() + t, halves.Triangles.begin() + t + 3,
+      [&](std::int32_t v) { return halves.Points[3 * v] >= 0.5; });
+    for (std::size_t k = t; k < t + 3 && right; ++k)
+    {
+      std::int32_t& v = halves.Triangles[k];
+      if (halves.Points[3 * v] == 0.5)
+      {
+        if (copyOf[v] < 0)
+        {
+          copyOf[v] = static_cast<std::int32_t>(halves.Points.size() / 3);
+          halves.Points.insert(halves.Points.end(), { 0.5, halves.Points[3 * v + 1], 0.0 });
+        }
+        v = copyOf[v];
+      }
+    }
+  }
+  CHECK(halves.Points.size() == 3 * (81 + 9));
+  CHECK(countBorderEdges(meshsimp::MakeCompactMesh(halves.View())) == 32 + 16);
+  const meshsimp::CompactMesh stitched = meshsimp::MakeCompactMesh(halves.View(), {}, always);
+  CHECK(stitched.Points.size() == 81 && stitched.JoinedPoints == 9 && countBorderEdges(stitched) == 32);
+
+  // Two grids that touch at one corner only stay two grids with a point each there.
+  Mesh touching = Grid(2);
+  const Mesh other = Scaled(Grid(2), -1.0); // over [-1, 0]², its corner (0, 0) on the first's
+  const auto offset = static_cast<std::int32_t>(touching.Points.size() / 3);
+  touching.Points.insert(touching.Points.end(), other.Points.begin(), other.Points.end());
+  for (const std::int32_t v : other.Triangles)
+  {
+    touching.Triangles.push_back(v + offset);
+  }
+  const meshsimp::CompactMesh apart = meshsimp::MakeCompactMesh(touching.View(), {}, always);
+  CHECK(apart.Points.size() == 18 && apart.JoinedPoints == 0);
+}
+
 void BoundaryCornersMarkEachBorderEdgeOnce()
 {
   // An n × n grid has 4n border edges, each flagged at its start (outgoing) and at its end
@@ -936,6 +1015,7 @@ int main()
     { "AbortStopsEarly", AbortStopsEarly },
     { "CompactMeshIsSpatialAndMapsBack", CompactMeshIsSpatialAndMapsBack },
     { "CompactMeshAndSortSameForAnyThreadCount", CompactMeshAndSortSameForAnyThreadCount },
+    { "CompactMeshClosesCracks", CompactMeshClosesCracks },
     { "BoundaryCornersMarkEachBorderEdgeOnce", BoundaryCornersMarkEachBorderEdgeOnce },
     { "SurvivesDamagedMeshes", SurvivesDamagedMeshes },
   });

@@ -298,6 +298,22 @@ void MendsOrientationAndDuplicates()
   CHECK(Closed(result));
 }
 
+void ClosesCracks()
+{
+  // Points split off a closed sphere (zero-width cracks) rejoin before the rounds: the output is
+  // the unsplit sphere's, closed.
+  const Mesh sphere = Sphere(16);
+  std::int64_t copies = 0;
+  const Mesh split = SplitOffEvery(sphere, 13, copies);
+  ParallelDecimationOptions options;
+  options.Goal.SetTriangleCount(307);
+  ParallelDecimationResult result, whole;
+  CHECK(meshsimp::ParallelDecimation(split.View(), options, result));
+  CHECK(meshsimp::ParallelDecimation(sphere.View(), options, whole));
+  CHECK(Closed(result) && result.Report.JoinedPoints == copies);
+  CHECK(result.Points == whole.Points && result.Triangles == whole.Triangles);
+}
+
 void ErrorBoundKeepsBump()
 {
   // A 20 × 20 grid (spacing 0.05) with its centre raised by 0.01 (a slope of 11°, no sharp
@@ -675,6 +691,7 @@ int main()
     { "BucketOrderKeepsOrderWithinBucketWidth", BucketOrderKeepsOrderWithinBucketWidth },
     { "RoundsAreSuperIndependent", RoundsAreSuperIndependent },
     { "MendsOrientationAndDuplicates", MendsOrientationAndDuplicates },
+    { "ClosesCracks", ClosesCracks },
     { "SameResultForAnyThreadCount", SameResultForAnyThreadCount },
     { "HugeAndTinyCoordinates", HugeAndTinyCoordinates },
     { "TargetsAndInputPoints", TargetsAndInputPoints },

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The front end every filter shares (vtkMeshSimplificationFilter), checked on all three: sharp
 // attribute borders, a count shared out over composite blocks, blocks that are not polygonal
-// passed through, surfaces of other datasets, 3-D cells refused, the Deviation array, and the
-// error reported in the bound's units.
+// passed through, surfaces of other datasets, 3-D cells refused, the Deviation array, the
+// error reported in the bound's units, and zero-width cracks closed unless point data differ.
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
+#include "vtkProgressiveMesh.h"
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkAppendFilter.h"
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+#include "vtkIntArray.h"
+#include "vtkPoints.h"
 #include "vtkCellLocator.h"
 #include "vtkFieldData.h"
 #include "vtkGenericCell.h"
@@ -19,6 +24,7 @@
 #include "TestBadInput.h"
 
 #include <functional>
+#include <vector>
 
 namespace
 {
@@ -86,6 +92,79 @@ void CheckAttributeBorders(const Factory& make, double tolerance, bool blends)
   filter->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None");
   filter->Update();
   CHECK(log->Warnings.size() == 1 && meshsimp_test::Mentions(log->Warnings[0], "PreserveAttributeBorders"));
+}
+
+/// The sphere as a damaged export has it: a slit along the meridian y = 0, x > 0, its two sides
+/// with their own copies of the points there (the same coordinates and point data), and an
+/// array "Side" that is 1 on the copies only.
+vtkSmartPointer<vtkPolyData> SlitSphere()
+{
+  vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+  vtkPoints* points = sphere->GetPoints();
+  vtkPointData* pointData = sphere->GetPointData();
+  const vtkIdType n = sphere->GetNumberOfPoints();
+  std::vector<vtkIdType> copyOf(static_cast<std::size_t>(n), -1);
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType t = 0; t < sphere->GetNumberOfPolys(); ++t)
+  {
+    sphere->GetCellPoints(t, ids);
+    double y = 0.0;
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      y += points->GetPoint(ids->GetId(k))[1];
+    }
+    for (vtkIdType k = 0; k < 3 && y > 0.0; ++k)
+    {
+      const vtkIdType p = ids->GetId(k);
+      if (points->GetPoint(p)[1] == 0.0 && points->GetPoint(p)[0] > 0.0)
+      {
+        if (copyOf[p] < 0)
+        {
+          copyOf[p] = points->InsertNextPoint(points->GetPoint(p));
+          for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+          {
+            vtkAbstractArray* array = pointData->GetAbstractArray(a);
+            array->InsertTuple(copyOf[p], p, array);
+          }
+        }
+        ids->SetId(k, copyOf[p]);
+      }
+    }
+    triangles->InsertNextCell(ids);
+  }
+  sphere->SetPolys(triangles);
+  vtkNew<vtkIntArray> side;
+  side->SetName("Side");
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    side->InsertNextValue(i < n ? 0 : 1);
+  }
+  pointData->AddArray(side);
+  return sphere;
+}
+
+/// The slit of SlitSphere closes where no point array tells its sides apart (the output is a
+/// closed sphere), and stays open where one does: here "Side" until it is removed. The input is
+/// not changed.
+void CheckCracks(const Factory& make)
+{
+  vtkSmartPointer<vtkPolyData> slit = SlitSphere();
+  CHECK(meshsimp_test::OpenEdges(slit) > 20);
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(slit);
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+  filter->SetInputData(slit);
+  filter->SetTargetReduction(0.5);
+  filter->Update();
+  CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) > 0);
+  meshsimp_test::CheckInputUntouched(slit, copy);
+  auto sameData = vtkSmartPointer<vtkPolyData>::New();
+  sameData->ShallowCopy(slit);
+  sameData->GetPointData()->RemoveArray("Side");
+  filter->SetInputData(sameData);
+  filter->Update();
+  CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) == 0 && filter->GetOutput()->GetNumberOfPolys() > 0);
 }
 
 /// A multiblock of the sphere, the sphere made twice as fine, and an image: a triangle count
@@ -230,6 +309,7 @@ void CheckErrorUnits(const Factory& make)
 void CheckFilter(const Factory& make, double tolerance, bool blends)
 {
   CheckAttributeBorders(make, tolerance, blends);
+  CheckCracks(make);
   CheckCompositeCount(make, tolerance);
   CheckOtherDatasets(make);
   CheckDeviation(make);
@@ -242,5 +322,6 @@ int TestFrontEnd(int, char*[])
   CheckFilter([] { return vtkSmartPointer<vtkOctreeVertexClustering>::New(); }, 0.03, true);
   CheckFilter([] { return vtkSmartPointer<vtkVolumeTriangleCollapse>::New(); }, 0.01, true);
   CheckFilter([] { return vtkSmartPointer<vtkParallelDecimation>::New(); }, 0.02, false);
+  CheckCracks([] { return vtkSmartPointer<vtkProgressiveMesh>::New(); });
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
