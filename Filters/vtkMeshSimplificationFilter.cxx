@@ -304,6 +304,7 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
     piece.LockArray = std::string("'") + (array->GetName() ? array->GetName() : "") + "'";
   }
   options.LockedPoints = piece.Locks.empty() ? nullptr : piece.Locks.data();
+  options.CloseCracks = this->CloseCracks;
   vtkPointData* pointData = piece.Input->GetPointData();
   options.SamePointData = [pointData](std::int64_t a, std::int64_t b) {
     return vtkSimplification::SamePointData(pointData, a, b);
@@ -350,6 +351,10 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
     const double error = goal.InBoundUnits(mesh.Report.MaximumError, mesh.Report.Diagonal);
     this->AchievedMaximumError = std::max(this->AchievedMaximumError, error);
     vtkSimplification::AddFieldValue(piece.Output, "MaximumError", error);
+  }
+  if (mesh.Report.JoinedPoints > 0)
+  {
+    vtkSimplification::AddFieldValue(piece.Output, "JoinedPoints", static_cast<double>(mesh.Report.JoinedPoints));
   }
   if (this->ComputeDeviation)
   {
@@ -412,6 +417,7 @@ void vtkMeshSimplificationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelativeError: " << this->RelativeError << "\n";
   os << indent << "PreserveBoundary: " << this->PreserveBoundary << "\n";
   os << indent << "PreserveAttributeBorders: " << this->PreserveAttributeBorders << "\n";
+  os << indent << "CloseCracks: " << this->CloseCracks << "\n";
   os << indent << "ComputeDeviation: " << this->ComputeDeviation << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";

@@ -25,11 +25,11 @@
  *   are passed through unchanged. Polygons are triangulated and strips decomposed; vertex and
  *   line cells are dropped with a warning. Before simplifying, the usable triangles are
  *   mended: repeated triangles dropped, turned-over ones turned back, and zero-width cracks
- *   closed: two points at exactly the same position whose open borders run along each other
- *   (split-off copies of a point, patches stored with their own copies of a shared border)
- *   become one point where every point array has the same values at both (a texture or colour
- *   seam stays open) and their locks agree. Points that only touch stay apart. The input is
- *   never modified.
+ *   closed (CloseCracks): two points at exactly the same position whose open borders run along
+ *   each other in opposite directions (split-off copies of a point, patches stored with their
+ *   own copies of a shared border) become one point where every point array has the same
+ *   values at both (a texture or colour seam stays open) and their locks agree; the field value
+ *   JoinedPoints counts them. Points that only touch stay apart. The input is never modified.
  * - Output: point data by one rule in every filter (vtkSimplificationAttributes.h: floating
  *   arrays interpolated, unsigned-char colours averaged and rounded, other arrays from one
  *   input point), cell data copied from the surviving triangles, the algorithm's own arrays
@@ -143,6 +143,18 @@ public:
 
   ///@{
   /**
+   * Close zero-width cracks before simplifying (default on): two points at exactly the same
+   * position on the two sides of a crack become one point where every point array agrees and
+   * their locks agree (see Input above). Turn it off when points are split on purpose and
+   * the split must stay (it then stays open, as a border).
+   */
+  vtkSetMacro(CloseCracks, bool);
+  vtkGetMacro(CloseCracks, bool);
+  vtkBooleanMacro(CloseCracks, bool);
+  ///@}
+
+  ///@{
+  /**
    * Add the point array "Deviation": each output point's distance to the input surface, in
    * input units, with its maximum and RMS in the field data (default off; on in ParaView).
    */
@@ -239,6 +251,7 @@ protected:
   bool RelativeError = true;
   bool PreserveBoundary = false;
   bool PreserveAttributeBorders = false;
+  bool CloseCracks = true;
   bool ComputeDeviation = false;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;

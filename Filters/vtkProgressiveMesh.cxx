@@ -277,7 +277,7 @@ int vtkProgressiveMesh::RequestData(
   key.precision(17);
   key << InputStamp(input) << ' ' << this->LengthWeight << ' ' << this->CurvatureWeight << ' '
       << this->QuadricWeight << ' ' << this->AttributeWeight << ' ' << this->PreserveBoundary << ' '
-      << this->PreserveAttributeBorders << ' ' << this->OutputPointsPrecision;
+      << this->PreserveAttributeBorders << ' ' << this->CloseCracks << ' ' << this->OutputPointsPrecision;
   for (int index = 0; index < 3; ++index)
   {
     vtkInformation* selection = this->GetInputArrayInformation(index);

@@ -244,6 +244,10 @@ bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b)
   for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* array = pd->GetAbstractArray(i);
+    if (array == pd->GetGlobalIds() || array == pd->GetPedigreeIds())
+    {
+      continue; // one per point by definition: they name the copies, not what they carry
+    }
     const int components = array->GetNumberOfComponents();
     auto* numbers = vtkDataArray::SafeDownCast(array);
     for (int c = 0; c < components; ++c)

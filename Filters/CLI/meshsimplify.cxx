@@ -71,6 +71,7 @@ Setters CommonSetters(vtkMeshSimplificationFilter* f)
 {
   return {
     { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
+    { "CloseCracks", [f](double v) { f->SetCloseCracks(v != 0.0); } },
     { "ComputeDeviation", [f](double v) { f->SetComputeDeviation(v != 0.0); } },
     { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
@@ -399,7 +400,8 @@ void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
 {
   const std::pair<const char*, const char*> figures[] = { { "max_error", "MaximumError" },
     { "square_volume_error", "SquareVolumeError" }, { "rounds", "Rounds" },
-    { "deviation_max", "DeviationMaximum" }, { "deviation_rms", "DeviationRMS" } };
+    { "deviation_max", "DeviationMaximum" }, { "deviation_rms", "DeviationRMS" },
+    { "joined_points", "JoinedPoints" } };
   vtkPolyData* result = filter->GetOutput();
   std::string extra;
   for (const auto& [key, name] : figures)

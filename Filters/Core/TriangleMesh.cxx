@@ -481,11 +481,24 @@ std::vector<std::int32_t> CoincidentVertices(
   return any ? first : std::vector<std::int32_t>();
 }
 
-/// Where the open borders of coincident vertices lead: the vertices that share their position
-/// with another (grouped by position, in mesh order within one) and, per vertex, the positions
-/// (first vertices) its border edges lead to, sorted, as CSR rows.
-void BorderPositions(const CompactMesh& mesh, const std::vector<std::int32_t>& first,
-  std::vector<std::int32_t>& grouped, std::vector<std::int32_t>& offsets, std::vector<std::int32_t>& positions)
+/// An open border edge with an end at a shared position, keyed by the positions (first
+/// vertices) of its two ends.
+struct CrackEdge
+{
+  std::int32_t Low, High; // the positions of its ends, Low < High
+  std::int32_t From, To;  // its vertices, in its triangle's direction
+  std::int32_t Opposite;  // its triangle's third vertex
+  bool operator<(const CrackEdge& other) const
+  {
+    return std::tie(this->Low, this->High, this->From, this->To) <
+      std::tie(other.Low, other.High, other.From, other.To);
+  }
+  bool SamePositions(const CrackEdge& other) const { return this->Low == other.Low && this->High == other.High; }
+};
+
+/// The open border edges that touch a vertex sharing its position with another, each once,
+/// sorted by the positions of their ends: the two sides of a crack are then neighbours.
+std::vector<CrackEdge> CrackEdges(const CompactMesh& mesh, const std::vector<std::int32_t>& first)
 {
   const std::int32_t n = static_cast<std::int32_t>(first.size());
   std::vector<std::uint8_t> shared(static_cast<std::size_t>(n), 0);
@@ -494,63 +507,72 @@ void BorderPositions(const CompactMesh& mesh, const std::vector<std::int32_t>& f
     shared[v] |= first[v] != v ? 1 : 0;
     shared[first[v]] |= first[v] != v ? 1 : 0;
   }
+  std::vector<CrackEdge> edges;
+  const auto add = [&](std::int32_t from, std::int32_t to, std::int32_t opposite) {
+    if (first[from] != first[to])
+    {
+      edges.push_back({ std::min(first[from], first[to]), std::max(first[from], first[to]), from, to, opposite });
+    }
+  };
+  std::vector<std::uint8_t> flags;
   for (std::int32_t v = 0; v < n; ++v)
   {
-    if (shared[v])
+    if (!shared[v])
     {
-      grouped.push_back(v);
+      continue;
     }
-  }
-  std::stable_sort(grouped.begin(), grouped.end(), [&](std::int32_t a, std::int32_t b) { return first[a] < first[b]; });
-  std::vector<std::uint8_t> flags;
-  offsets.assign(1, 0);
-  for (const std::int32_t v : grouped)
-  {
     const Corner* corner = mesh.Adjacency.Begin(v);
     flags.resize(static_cast<std::size_t>(mesh.Adjacency.End(v) - corner));
     MarkBoundaryCorners(mesh.Adjacency, v, flags.data());
-    const std::size_t row = positions.size();
     for (std::size_t i = 0; i < flags.size(); ++i)
     {
       if (flags[i] & OutgoingBoundaryEdge)
       {
-        positions.push_back(first[corner[i].Next]);
+        add(v, corner[i].Next, corner[i].Previous);
       }
-      if (flags[i] & IncomingBoundaryEdge)
+      if ((flags[i] & IncomingBoundaryEdge) && !shared[corner[i].Previous]) // else listed there
       {
-        positions.push_back(first[corner[i].Previous]);
+        add(corner[i].Previous, v, corner[i].Next);
       }
     }
-    std::sort(positions.begin() + static_cast<std::ptrdiff_t>(row), positions.end());
-    offsets.push_back(static_cast<std::int32_t>(positions.size()));
   }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+/// Whether two sides of a crack lie folded onto each other: their third vertices on the same
+/// side of the edge, in one plane up to the rounding of single-precision coordinates (two sheets
+/// stored back to back, which stay apart; joining their rims would give two triangles on the
+/// same three points). A sharp crease, however sharp, is not folded.
+bool FoldedOnto(const CompactMesh& mesh, const CrackEdge& a, const CrackEdge& b)
+{
+  constexpr double rounding = 1e-5; // the sine of the angle between the sides, float coordinates
+  const Eigen::Vector3d start = mesh.Points[a.From];
+  const Eigen::Vector3d along = (mesh.Points[a.To] - start).normalized();
+  const auto across = [&](std::int32_t opposite) {
+    const Eigen::Vector3d d = mesh.Points[opposite] - start;
+    return Eigen::Vector3d(d - d.dot(along) * along);
+  };
+  const Eigen::Vector3d sideA = across(a.Opposite), sideB = across(b.Opposite);
+  return sideA.dot(sideB) > 0.0 && sideA.cross(sideB).norm() <= rounding * sideA.norm() * sideB.norm();
 }
 
 /**
- * Closes zero-width cracks: two vertices at one position whose open borders lead to one
- * position too (a border edge of each ends at the same point, or at two coincident points) are
- * the two sides of a crack, and become one vertex (the first in mesh order) where mayMerge
- * allows it. Vertices that only touch (two parts meeting at a corner) stay apart. Returns each
- * input point's replacement (-1: kept), empty when no vertex joins another.
+ * Closes zero-width cracks. Two open border edges between the same two positions, and no third,
+ * are the two sides of a crack when they run in opposite directions (as the sides of a cut
+ * through a consistently oriented surface do; two copies of one sheet run alike and stay
+ * apart) and their triangles are not folded onto each other (two sheets back to back stay
+ * apart). The crack closes along them when each end's two vertices are one already or mayMerge
+ * allows them to become one; then both pairs join (transitively: the lowest vertex of a set
+ * stands for it). A pair joins only along a side that closes, so a joined vertex's fan stays
+ * one fan (no bow-tie where the crack's neighbours stay apart), and points that only touch
+ * stay apart. Returns each input point's replacement (-1: kept), empty when none joins.
+ * Time: n log n in the border edges at shared positions.
  */
 std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t inputPoints,
   const std::vector<std::int32_t>& first, const PointMergeTest& mayMerge)
 {
-  std::vector<std::int32_t> grouped, offsets, positions;
-  BorderPositions(mesh, first, grouped, offsets, positions);
-  const auto leadsWith = [&](std::size_t i, std::size_t j) {
-    const auto row = [&](std::size_t k) { return positions.begin() + offsets[k]; };
-    for (auto a = row(i), b = row(j); a != row(i + 1) && b != row(j + 1);)
-    {
-      if (*a == *b && *a != first[grouped[i]])
-      {
-        return true;
-      }
-      *a < *b ? ++a : ++b;
-    }
-    return false;
-  };
-  // Union of the crack's sides within each position, rooted at the first vertex.
+  const std::vector<CrackEdge> edges = CrackEdges(mesh, first);
   std::vector<std::int32_t> root(mesh.Points.size());
   std::iota(root.begin(), root.end(), 0);
   const auto find = [&root](std::int32_t v) {
@@ -560,20 +582,35 @@ std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t input
     }
     return v;
   };
-  std::vector<std::int32_t> replacement;
-  for (std::size_t i = 0; i < grouped.size(); ++i)
+  const auto mergeable = [&](std::int32_t p, std::int32_t q) {
+    return find(p) == find(q) || mayMerge(mesh.InputVertex[p], mesh.InputVertex[q]);
+  };
+  const auto unite = [&](std::int32_t p, std::int32_t q) {
+    const std::int32_t a = find(p), b = find(q);
+    root[std::max(a, b)] = std::min(a, b);
+  };
+  bool any = false;
+  for (std::size_t i = 0, j = 0; i < edges.size(); i = j)
   {
-    for (std::size_t j = i; j-- > 0 && first[grouped[j]] == first[grouped[i]];)
+    while (j < edges.size() && edges[j].SamePositions(edges[i]))
     {
-      const std::int32_t p = grouped[j], q = grouped[i];
-      if (find(p) != find(q) && leadsWith(i, j) &&
-        mayMerge(mesh.InputVertex[p], mesh.InputVertex[q]))
-      {
-        root[std::max(find(p), find(q))] = std::min(find(p), find(q));
-      }
+      ++j;
+    }
+    if (j - i != 2)
+    {
+      continue;
+    }
+    const CrackEdge& a = edges[i];
+    const CrackEdge& b = edges[i + 1];
+    if (first[a.From] == first[b.To] && !FoldedOnto(mesh, a, b) && mergeable(a.From, b.To) && mergeable(a.To, b.From))
+    {
+      unite(a.From, b.To);
+      unite(a.To, b.From);
+      any = true;
     }
   }
-  for (const std::int32_t v : grouped)
+  std::vector<std::int32_t> replacement;
+  for (std::int32_t v = 0; any && v < static_cast<std::int32_t>(root.size()); ++v)
   {
     if (find(v) != v)
     {

@@ -213,11 +213,13 @@ struct CompactMesh
 /// Whether two input points (by id) may become one vertex.
 using PointMergeTest = std::function<bool(std::int64_t, std::int64_t)>;
 
-/// The compact mesh of an input. With mayMerge, zero-width cracks are closed first: two points
-/// at exactly the same position whose open borders lead to one position too (split-off copies
-/// of a point, patches stored with their own copies of a shared border) become one vertex
-/// where mayMerge allows it, as if the input had shared them; points that only touch stay
-/// apart. Finding coincident points costs a sort within each Morton cell.
+/// The compact mesh of an input. With mayMerge, zero-width cracks are closed first: where two
+/// open border edges, and no third, join the same two positions and run in opposite directions
+/// (split-off copies of points, patches stored with their own copies of a shared border), their
+/// coincident ends become one vertex, as if the input had shared them, when mayMerge allows
+/// both pairs. Points that only touch, and two copies of one sheet, stay apart. Coincident
+/// points are found with a hash table per Morton cell; the crack's sides by sorting border
+/// edges: n log n in all.
 CompactMesh MakeCompactMesh(
   const TriangleMeshView& input, const ExecutionContext& context = {}, const PointMergeTest& mayMerge = {});
 

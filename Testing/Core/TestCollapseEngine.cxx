@@ -918,6 +918,25 @@ void VolumeCollapseClosesCracks()
   const meshsimp::VolumeCollapseResult whole = Collapse(sphere, 307);
   CHECK(ClosedOriented(result.Triangles) && result.Report.JoinedPoints == copies);
   CHECK(result.Points == whole.Points && result.Triangles == whole.Triangles);
+
+  // A crack whose sides differ in their locks or regions stays open, and so does every crack
+  // with CloseCracks off.
+  const std::size_t points = split.Points.size() / 3, original = sphere.Points.size() / 3;
+  std::vector<std::uint8_t> locks(points, 0);
+  std::vector<std::int32_t> regions(points, 0);
+  std::fill(locks.begin() + static_cast<std::ptrdiff_t>(original), locks.end(), 1);
+  std::fill(regions.begin() + static_cast<std::ptrdiff_t>(original), regions.end(), 1);
+  for (int variant = 0; variant < 3; ++variant)
+  {
+    meshsimp::VolumeCollapseOptions options;
+    options.Goal.SetTriangleCount(307);
+    options.LockedPoints = variant == 0 ? locks.data() : nullptr;
+    options.Regions = variant == 1 ? regions.data() : nullptr;
+    options.CloseCracks = variant != 2;
+    meshsimp::VolumeCollapseResult apart;
+    CHECK(meshsimp::VolumeTriangleCollapse(split.View(), options, apart));
+    CHECK(apart.Report.JoinedPoints == 0 && !ClosedOriented(apart.Triangles));
+  }
 }
 
 void VolumeCollapseBatchesDoNotDependOnThreads()

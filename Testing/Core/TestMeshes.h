@@ -401,6 +401,55 @@ Mesh SplitOffEvery(Mesh mesh, std::int32_t step, std::int64_t& copies)
   return mesh;
 }
 
+/// Both meshes as one, each with its own points.
+Mesh Both(Mesh first, const Mesh& second)
+{
+  const auto offset = static_cast<std::int32_t>(first.Points.size() / 3);
+  first.Points.insert(first.Points.end(), second.Points.begin(), second.Points.end());
+  for (const std::int32_t v : second.Triangles)
+  {
+    first.Triangles.push_back(v + offset);
+  }
+  return first;
+}
+
+/// The mesh with every triangle turned over.
+Mesh TurnedOver(Mesh mesh)
+{
+  for (std::size_t t = 0; t < mesh.Triangles.size(); t += 3)
+  {
+    std::swap(mesh.Triangles[t + 1], mesh.Triangles[t + 2]);
+  }
+  return mesh;
+}
+
+/// Grid(n) stored as two halves, the right one (x >= 1/2) with its own copies of the middle
+/// column's points: a zero-width crack along x = 1/2 (n even).
+Mesh Halves(int n)
+{
+  Mesh halves = Grid(n);
+  std::vector<std::int32_t> copyOf(halves.Points.size() / 3, -1);
+  for (std::size_t t = 0; t < halves.Triangles.size(); t += 3)
+  {
+    const bool right = std::all_of(halves.Triangles.begin() + t, halves.Triangles.begin() + t + 3,
+      [&](std::int32_t v) { return halves.Points[3 * v] >= 0.5; });
+    for (std::size_t k = t; k < t + 3 && right; ++k)
+    {
+      std::int32_t& v = halves.Triangles[k];
+      if (halves.Points[3 * v] == 0.5)
+      {
+        if (copyOf[v] < 0)
+        {
+          copyOf[v] = static_cast<std::int32_t>(halves.Points.size() / 3);
+          halves.Points.insert(halves.Points.end(), { 0.5, halves.Points[3 * v + 1], 0.0 });
+        }
+        v = copyOf[v];
+      }
+    }
+  }
+  return halves;
+}
+
 /// Distance from p to the triangle (a, b, c), by its closest point (Ericson's regions).
 double DistanceToTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c)

@@ -790,6 +790,22 @@ void CompactMeshIsSpatialAndMapsBack()
   CHECK(narrow.VertexToPoint == wide.VertexToPoint && narrow.TriangleSource == wide.TriangleSource);
 }
 
+/// Whether no vertex of the mesh is a bow-tie: each has at most one open border edge leaving it.
+bool OneFanPerVertex(const meshsimp::CompactMesh& compact)
+{
+  std::vector<std::uint8_t> flags;
+  for (std::int64_t v = 0; v < static_cast<std::int64_t>(compact.Points.size()); ++v)
+  {
+    flags.resize(static_cast<std::size_t>(compact.Adjacency.End(v) - compact.Adjacency.Begin(v)));
+    meshsimp::MarkBoundaryCorners(compact.Adjacency, v, flags.data());
+    if (std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return (f & meshsimp::OutgoingBoundaryEdge) != 0; }) > 1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 void CompactMeshClosesCracks()
 {
   // Zero-width cracks close where the merge test allows: split-off points rejoin (a closed
@@ -831,42 +847,62 @@ void CompactMeshClosesCracks()
   CHECK(static_cast<std::int64_t>(some.Points.size()) == points + 1 && some.JoinedPoints == 2);
 
   // Two halves of a grid, the right one with its own copies of the middle column (x = 0.5).
-  Mesh halves = Grid(8);
-  std::vector<std::int32_t> copyOf(halves.Points.size() / 3, -1);
-  for (std::size_t t = 0; t < halves.Triangles.size(); t += 3)
-  {
-    const bool right = std::all_of(halves.Triangles.begin() + t, halves.Triangles.begin() + t + 3,
-      [&](std::int32_t v) { return halves.Points[3 * v] >= 0.5; });
-    for (std::size_t k = t; k < t + 3 && right; ++k)
-    {
-      std::int32_t& v = halves.Triangles[k];
-      if (halves.Points[3 * v] == 0.5)
-      {
-        if (copyOf[v] < 0)
-        {
-          copyOf[v] = static_cast<std::int32_t>(halves.Points.size() / 3);
-          halves.Points.insert(halves.Points.end(), { 0.5, halves.Points[3 * v + 1], 0.0 });
-        }
-        v = copyOf[v];
-      }
-    }
-  }
+  const Mesh halves = Halves(8);
   CHECK(halves.Points.size() == 3 * (81 + 9));
   CHECK(countBorderEdges(meshsimp::MakeCompactMesh(halves.View())) == 32 + 16);
   const meshsimp::CompactMesh stitched = meshsimp::MakeCompactMesh(halves.View(), {}, always);
   CHECK(stitched.Points.size() == 81 && stitched.JoinedPoints == 9 && countBorderEdges(stitched) == 32);
+  CHECK(OneFanPerVertex(stitched));
+
+  // A crack closes only along sides whose both ends may join: with the copies of rows 3 and 5
+  // refused, rows 0-2 and 6-8 join; row 4 may, but joining it alone would pinch it (two fans at
+  // one vertex), so it stays open with its neighbours.
+  const auto refuseRows35 = [&](std::int64_t p, std::int64_t q) {
+    const auto row = [&](std::int64_t v) { return std::lround(8 * halves.Points[3 * v + 1]); };
+    return row(p) != 3 && row(p) != 5 && row(q) != 3 && row(q) != 5;
+  };
+  const meshsimp::CompactMesh partly = meshsimp::MakeCompactMesh(halves.View(), {}, refuseRows35);
+  CHECK(partly.JoinedPoints == 6 && partly.Points.size() == 81 + 3);
+  CHECK(countBorderEdges(partly) == 32 + 8 && OneFanPerVertex(partly));
 
   // Two grids that touch at one corner only stay two grids with a point each there.
-  Mesh touching = Grid(2);
   const Mesh other = Scaled(Grid(2), -1.0); // over [-1, 0]², its corner (0, 0) on the first's
-  const auto offset = static_cast<std::int32_t>(touching.Points.size() / 3);
-  touching.Points.insert(touching.Points.end(), other.Points.begin(), other.Points.end());
-  for (const std::int32_t v : other.Triangles)
-  {
-    touching.Triangles.push_back(v + offset);
-  }
-  const meshsimp::CompactMesh apart = meshsimp::MakeCompactMesh(touching.View(), {}, always);
+  const meshsimp::CompactMesh apart = meshsimp::MakeCompactMesh(Both(Grid(2), other).View(), {}, always);
   CHECK(apart.Points.size() == 18 && apart.JoinedPoints == 0);
+
+  // A sheet stored twice stays two sheets: their borders run alike, not as a crack's sides do;
+  // stored back to back (one turned over), their triangles lie folded onto each other. A soup
+  // (every triangle with its own points) of a closed double cone with sharp rims becomes one
+  // closed surface.
+  const meshsimp::CompactMesh twice = meshsimp::MakeCompactMesh(Both(Grid(3), Grid(3)).View(), {}, always);
+  CHECK(twice.JoinedPoints == 0 && countBorderEdges(twice) == 2 * 12);
+  const meshsimp::CompactMesh backToBack =
+    meshsimp::MakeCompactMesh(Both(Grid(3), TurnedOver(Grid(3))).View(), {}, always);
+  CHECK(backToBack.JoinedPoints == 0 && countBorderEdges(backToBack) == 2 * 12);
+  const Mesh cone = Fan(64, true);
+  Mesh soup;
+  for (const std::int32_t v : cone.Triangles)
+  {
+    soup.Points.insert(soup.Points.end(), { cone.Points[3 * v], cone.Points[3 * v + 1], cone.Points[3 * v + 2] });
+    soup.Triangles.push_back(static_cast<std::int32_t>(soup.Triangles.size()));
+  }
+  const meshsimp::CompactMesh welded = meshsimp::MakeCompactMesh(soup.View(), {}, always);
+  CHECK(welded.Points.size() == 64 + 2 && countBorderEdges(welded) == 0);
+
+  // Many copies of one triangle (every position shared by 20 000 points, each border edge by
+  // 20 000 sides) join nothing, and take a sort, not a comparison of every pair.
+  const Mesh square = Grid(1);
+  Mesh copies;
+  for (std::int32_t k = 0; k < 20000; ++k)
+  {
+    copies.Points.insert(copies.Points.end(), square.Points.begin(), square.Points.end());
+    for (const std::int32_t v : square.Triangles)
+    {
+      copies.Triangles.push_back(4 * k + v);
+    }
+  }
+  const meshsimp::CompactMesh many = meshsimp::MakeCompactMesh(copies.View(), {}, always);
+  CHECK(many.JoinedPoints == 0 && many.Points.size() == 4 * 20000);
 }
 
 void BoundaryCornersMarkEachBorderEdgeOnce()

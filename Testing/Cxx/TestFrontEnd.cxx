@@ -11,8 +11,11 @@
 #include "vtkAppendFilter.h"
 #include "vtkCellArray.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 #include "vtkCellLocator.h"
 #include "vtkFieldData.h"
 #include "vtkGenericCell.h"
@@ -145,8 +148,8 @@ vtkSmartPointer<vtkPolyData> SlitSphere()
 }
 
 /// The slit of SlitSphere closes where no point array tells its sides apart (the output is a
-/// closed sphere), and stays open where one does: here "Side" until it is removed. The input is
-/// not changed.
+/// closed sphere, the points joined counted in the field data), and stays open where one does
+/// (here "Side" until it is removed) or CloseCracks is off. The input is not changed.
 void CheckCracks(const Factory& make)
 {
   vtkSmartPointer<vtkPolyData> slit = SlitSphere();
@@ -162,9 +165,28 @@ void CheckCracks(const Factory& make)
   auto sameData = vtkSmartPointer<vtkPolyData>::New();
   sameData->ShallowCopy(slit);
   sameData->GetPointData()->RemoveArray("Side");
+  // Global ids name every point apart and do not count; a string array with one value does.
+  const vtkIdType n = slit->GetNumberOfPoints();
+  vtkNew<vtkIdTypeArray> globalIds;
+  vtkNew<vtkStringArray> label;
+  label->SetName("Label");
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    globalIds->InsertNextValue(i);
+    label->InsertNextValue("skin");
+  }
+  sameData->GetPointData()->SetGlobalIds(globalIds);
+  sameData->GetPointData()->AddArray(label);
   filter->SetInputData(sameData);
   filter->Update();
-  CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) == 0 && filter->GetOutput()->GetNumberOfPolys() > 0);
+  vtkPolyData* closed = filter->GetOutput();
+  CHECK(meshsimp_test::OpenEdges(closed) == 0 && closed->GetNumberOfPolys() > 0);
+  vtkDataArray* joined = closed->GetFieldData()->GetArray("JoinedPoints");
+  CHECK(joined && joined->GetTuple1(0) == static_cast<double>(n - meshsimp_test::Sphere()->GetNumberOfPoints()));
+  // With CloseCracks off the slit stays open, as a border.
+  filter->CloseCracksOff();
+  filter->Update();
+  CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) > 0 && !filter->GetOutput()->GetFieldData()->GetArray("JoinedPoints"));
 }
 
 /// A multiblock of the sphere, the sphere made twice as fine, and an image: a triangle count

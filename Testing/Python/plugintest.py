@@ -77,6 +77,7 @@ def check_front_end(simplifier_class, source, tolerance):
           "the Deviation array by default")
     check(simplified.PreserveAttributeBorders == 0 and list(simplified.AttributeBorders) == ["POINTS", "None"],
           "attribute borders off, no array by default")
+    check(simplified.CloseCracks == 1, "cracks closed by default")
     clamped = simplifier_class(Input=source, TargetReduction=5)
     clamped.UpdatePipeline()
     check(clamped.GetDataInformation().GetNumberOfCells() == 0, "TargetReduction 5 gives an empty output")
