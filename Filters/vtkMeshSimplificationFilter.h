@@ -28,8 +28,8 @@
  *   closed (CloseCracks): two points at exactly the same position whose open borders run along
  *   each other in opposite directions (split-off copies of a point, patches stored with their
  *   own copies of a shared border) become one point where every point array has the same
- *   values at both (a texture or colour seam stays open) and their locks agree; the field value
- *   JoinedPoints counts them. Points that only touch stay apart. The input is never modified.
+ *   values at both (global and pedigree ids aside; a texture or colour seam stays open) and
+ *   their locks and attribute regions agree; the field value JoinedPoints counts them. Points that only touch stay apart. The input is never modified.
  * - Output: point data by one rule in every filter (vtkSimplificationAttributes.h: floating
  *   arrays interpolated, unsigned-char colours averaged and rounded, other arrays from one
  *   input point), cell data copied from the surviving triangles, the algorithm's own arrays

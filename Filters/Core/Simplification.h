@@ -6,8 +6,9 @@
  *
  * An algorithm is a pipeline of stages on this front end:
  *  1. PrepareMesh: the usable triangles as a compact, spatially ordered mesh (MakeCompactMesh,
- *     with zero-width cracks closed), normalised, with the target resolved to a count or a bound in the mesh's units, and each
- *     vertex's locks (the user's, piece borders, open borders) and attribute region;
+ *     zero-width cracks closed), normalised, with the target resolved to a count or a bound in
+ *     the mesh's units, and each vertex's locks (the user's, piece borders, open borders) and
+ *     attribute region;
  *  2. the algorithm's own stages on the prepared mesh;
  *  3. its output as a SimplifiedMesh: points, triangles, what each comes from (point data is
  *     mapped from SourcePoints and SourceWeights), the algorithm's per-point figures, and an

@@ -421,8 +421,8 @@ void OrientConsistently(CompactMesh& mesh, const ExecutionContext& context)
   }
 }
 
-/// Each vertex's first vertex (in mesh order) at exactly its position, itself when it is alone
-/// there; empty when every vertex is alone. Coincident vertices share a Morton cell
+/// Each vertex's position: the first vertex (in mesh order) at exactly its place, itself when it
+/// is alone there; empty when every vertex is alone. Coincident vertices share a Morton cell
 /// (OrderVertices), so each cell's vertices are looked up in a hash table of their own.
 std::vector<std::int32_t> CoincidentVertices(
   const CompactMesh& mesh, const std::vector<std::int32_t>& cellEnds, const ExecutionContext& context)
@@ -443,8 +443,8 @@ std::vector<std::int32_t> CoincidentVertices(
     }
     return (h ^ (h >> 32)) * 0xBF58476D1CE4E5B9ull >> 32; // every bit of the input stirs the high bits
   };
-  std::vector<std::int32_t> first(mesh.Points.size());
-  std::iota(first.begin(), first.end(), 0);
+  std::vector<std::int32_t> positionOf(mesh.Points.size());
+  std::iota(positionOf.begin(), positionOf.end(), 0);
   std::vector<Scratch> scratches;
   const auto cells = static_cast<std::int64_t>(cellEnds.size());
   context.ForEachWithScratch(scratches, cells, 20, [&](std::int64_t c, Scratch& scratch) {
@@ -468,7 +468,7 @@ std::vector<std::int32_t> CoincidentVertices(
       }
       if (scratch.Table[slot] >= 0)
       {
-        first[v] = scratch.Table[slot];
+        positionOf[v] = scratch.Table[slot];
         scratch.Any = true;
       }
       else
@@ -478,16 +478,14 @@ std::vector<std::int32_t> CoincidentVertices(
     }
   });
   const bool any = std::any_of(scratches.begin(), scratches.end(), [](const Scratch& s) { return s.Any; });
-  return any ? first : std::vector<std::int32_t>();
+  return any ? positionOf : std::vector<std::int32_t>();
 }
 
-/// An open border edge with an end at a shared position, keyed by the positions (first
-/// vertices) of its two ends.
+/// An open border edge with an end at a shared position, keyed by the positions of its ends.
 struct CrackEdge
 {
-  std::int32_t Low, High; // the positions of its ends, Low < High
+  std::int32_t Low, High; // the positions (see CoincidentVertices) of its ends, Low < High
   std::int32_t From, To;  // its vertices, in its triangle's direction
-  std::int32_t Opposite;  // its triangle's third vertex
   bool operator<(const CrackEdge& other) const
   {
     return std::tie(this->Low, this->High, this->From, this->To) <
@@ -497,21 +495,23 @@ struct CrackEdge
 };
 
 /// The open border edges that touch a vertex sharing its position with another, each once,
-/// sorted by the positions of their ends: the two sides of a crack are then neighbours.
-std::vector<CrackEdge> CrackEdges(const CompactMesh& mesh, const std::vector<std::int32_t>& first)
+/// sorted by the positions of their ends: the two sides of a crack are then neighbours. Edges
+/// of a triangle with two corners at one position (a needle) are no crack's side.
+std::vector<CrackEdge> CrackEdges(const CompactMesh& mesh, const std::vector<std::int32_t>& positionOf)
 {
-  const std::int32_t n = static_cast<std::int32_t>(first.size());
+  const std::int32_t n = static_cast<std::int32_t>(positionOf.size());
   std::vector<std::uint8_t> shared(static_cast<std::size_t>(n), 0);
   for (std::int32_t v = 0; v < n; ++v)
   {
-    shared[v] |= first[v] != v ? 1 : 0;
-    shared[first[v]] |= first[v] != v ? 1 : 0;
+    shared[v] |= positionOf[v] != v ? 1 : 0;
+    shared[positionOf[v]] |= positionOf[v] != v ? 1 : 0;
   }
   std::vector<CrackEdge> edges;
   const auto add = [&](std::int32_t from, std::int32_t to, std::int32_t opposite) {
-    if (first[from] != first[to])
+    const std::int32_t a = positionOf[from], b = positionOf[to], c = positionOf[opposite];
+    if (a != b && c != a && c != b)
     {
-      edges.push_back({ std::min(first[from], first[to]), std::max(first[from], first[to]), from, to, opposite });
+      edges.push_back({ std::min(a, b), std::max(a, b), from, to });
     }
   };
   std::vector<std::uint8_t> flags;
@@ -540,54 +540,39 @@ std::vector<CrackEdge> CrackEdges(const CompactMesh& mesh, const std::vector<std
   return edges;
 }
 
-/// Whether two sides of a crack lie folded onto each other: their third vertices on the same
-/// side of the edge, in one plane up to the rounding of single-precision coordinates (two sheets
-/// stored back to back, which stay apart; joining their rims would give two triangles on the
-/// same three points). A sharp crease, however sharp, is not folded.
-bool FoldedOnto(const CompactMesh& mesh, const CrackEdge& a, const CrackEdge& b)
+/// Vertex sets joined by a union-find forest (each set stands for its lowest vertex).
+struct JoinedSets
 {
-  constexpr double rounding = 1e-5; // the sine of the angle between the sides, float coordinates
-  const Eigen::Vector3d start = mesh.Points[a.From];
-  const Eigen::Vector3d along = (mesh.Points[a.To] - start).normalized();
-  const auto across = [&](std::int32_t opposite) {
-    const Eigen::Vector3d d = mesh.Points[opposite] - start;
-    return Eigen::Vector3d(d - d.dot(along) * along);
-  };
-  const Eigen::Vector3d sideA = across(a.Opposite), sideB = across(b.Opposite);
-  return sideA.dot(sideB) > 0.0 && sideA.cross(sideB).norm() <= rounding * sideA.norm() * sideB.norm();
-}
-
-/**
- * Closes zero-width cracks. Two open border edges between the same two positions, and no third,
- * are the two sides of a crack when they run in opposite directions (as the sides of a cut
- * through a consistently oriented surface do; two copies of one sheet run alike and stay
- * apart) and their triangles are not folded onto each other (two sheets back to back stay
- * apart). The crack closes along them when each end's two vertices are one already or mayMerge
- * allows them to become one; then both pairs join (transitively: the lowest vertex of a set
- * stands for it). A pair joins only along a side that closes, so a joined vertex's fan stays
- * one fan (no bow-tie where the crack's neighbours stay apart), and points that only touch
- * stay apart. Returns each input point's replacement (-1: kept), empty when none joins.
- * Time: n log n in the border edges at shared positions.
- */
-std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t inputPoints,
-  const std::vector<std::int32_t>& first, const PointMergeTest& mayMerge)
-{
-  const std::vector<CrackEdge> edges = CrackEdges(mesh, first);
-  std::vector<std::int32_t> root(mesh.Points.size());
-  std::iota(root.begin(), root.end(), 0);
-  const auto find = [&root](std::int32_t v) {
-    while (root[v] != v)
+  std::vector<std::int32_t> Root;
+  explicit JoinedSets(std::size_t n) : Root(n) { std::iota(this->Root.begin(), this->Root.end(), 0); }
+  std::int32_t Find(std::int32_t v)
+  {
+    while (this->Root[v] != v)
     {
-      v = root[v] = root[root[v]];
+      v = this->Root[v] = this->Root[this->Root[v]];
     }
     return v;
-  };
+  }
+  void Unite(std::int32_t p, std::int32_t q)
+  {
+    const std::int32_t a = this->Find(p), b = this->Find(q);
+    this->Root[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+/**
+ * Joins the two sides of each crack that may close: two border edges between the same two
+ * positions, and no third, running in opposite directions (as the sides of a cut through a
+ * consistently oriented surface do; two copies of one sheet run alike), whose ends' two vertices
+ * are one already or may become one (mayMerge, and neither refused). A pair joins only along a
+ * side that closes, so a joined vertex's fan stays one fan (no bow-tie where the crack's
+ * neighbours stay apart). False when nothing joins.
+ */
+bool JoinCrackSides(const CompactMesh& mesh, const std::vector<CrackEdge>& edges, const PointMergeTest& mayMerge,
+  const std::vector<std::uint8_t>& refused, JoinedSets& sets)
+{
   const auto mergeable = [&](std::int32_t p, std::int32_t q) {
-    return find(p) == find(q) || mayMerge(mesh.InputVertex[p], mesh.InputVertex[q]);
-  };
-  const auto unite = [&](std::int32_t p, std::int32_t q) {
-    const std::int32_t a = find(p), b = find(q);
-    root[std::max(a, b)] = std::min(a, b);
+    return p == q || (!refused[p] && !refused[q] && mayMerge(mesh.InputVertex[p], mesh.InputVertex[q]));
   };
   bool any = false;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j)
@@ -602,23 +587,115 @@ std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t input
     }
     const CrackEdge& a = edges[i];
     const CrackEdge& b = edges[i + 1];
-    if (first[a.From] == first[b.To] && !FoldedOnto(mesh, a, b) && mergeable(a.From, b.To) && mergeable(a.To, b.From))
+    const bool opposite = mesh.Points[a.From] == mesh.Points[b.To]; // a runs from where b ends
+    if (opposite && mergeable(a.From, b.To) && mergeable(a.To, b.From))
     {
-      unite(a.From, b.To);
-      unite(a.To, b.From);
+      sets.Unite(a.From, b.To);
+      sets.Unite(a.To, b.From);
       any = true;
     }
   }
-  std::vector<std::int32_t> replacement;
-  for (std::int32_t v = 0; any && v < static_cast<std::int32_t>(root.size()); ++v)
+  return any;
+}
+
+/// The vertices of edges that the joins would make of several, with more than two triangles (a
+/// hinge made of cracks that meet, two sheets' rim triangles folded onto each other): joining
+/// them would make the surface non-manifold where the input was not. Empty when none.
+std::vector<std::int32_t> OverfullJoinedEdges(const CompactMesh& mesh, JoinedSets& sets)
+{
+  struct JoinedEdge
   {
-    if (find(v) != v)
+    std::int32_t Low, High, From, To; // the roots of its ends, Low < High; its vertices
+  };
+  const std::int32_t n = static_cast<std::int32_t>(sets.Root.size());
+  std::vector<std::uint8_t> joined(static_cast<std::size_t>(n), 0);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    joined[v] |= sets.Find(v) != v ? 1 : 0;
+    joined[sets.Find(v)] |= sets.Find(v) != v ? 1 : 0;
+  }
+  std::vector<JoinedEdge> edges;
+  std::vector<std::uint8_t> seen(mesh.Triangles.size() / 3, 0);
+  for (std::int32_t v = 0; v < n; ++v)
+  {
+    for (const Corner* c = mesh.Adjacency.Begin(v); joined[v] && c != mesh.Adjacency.End(v); ++c)
     {
-      replacement.resize(static_cast<std::size_t>(inputPoints), -1);
-      replacement[mesh.InputVertex[v]] = mesh.InputVertex[find(v)];
+      if (seen[c->Triangle]++)
+      {
+        continue;
+      }
+      const std::int32_t* tri = mesh.Triangles.data() + 3 * c->Triangle;
+      const std::int32_t r[3] = { sets.Find(tri[0]), sets.Find(tri[1]), sets.Find(tri[2]) };
+      for (int k = 0; k < 3 && r[0] != r[1] && r[1] != r[2] && r[2] != r[0]; ++k)
+      {
+        const std::int32_t a = r[k], b = r[(k + 1) % 3];
+        edges.push_back({ std::min(a, b), std::max(a, b), tri[k], tri[(k + 1) % 3] });
+      }
     }
   }
-  return replacement;
+  std::sort(edges.begin(), edges.end(), [](const JoinedEdge& x, const JoinedEdge& y) {
+    return std::tie(x.Low, x.High, x.From, x.To) < std::tie(y.Low, y.High, y.From, y.To);
+  });
+  std::vector<std::int32_t> overfull;
+  for (std::size_t i = 0, j = 0; i < edges.size(); i = j)
+  {
+    while (j < edges.size() && edges[j].Low == edges[i].Low && edges[j].High == edges[i].High)
+    {
+      ++j;
+    }
+    // Only where the joins made one edge of several (an input's own hinge is kept, as without
+    // joins; two triangles in one direction are turned to agree by OrientConsistently).
+    const auto original = [&](std::size_t k) {
+      return std::make_pair(std::min(edges[k].From, edges[k].To), std::max(edges[k].From, edges[k].To));
+    };
+    const bool made = std::any_of(edges.begin() + static_cast<std::ptrdiff_t>(i) + 1,
+      edges.begin() + static_cast<std::ptrdiff_t>(j),
+      [&](const JoinedEdge& e) { return original(static_cast<std::size_t>(&e - edges.data())) != original(i); });
+    if (made && j - i > 2)
+    {
+      for (std::size_t k = i; k < j; ++k)
+      {
+        overfull.insert(overfull.end(), { edges[k].From, edges[k].To });
+      }
+    }
+  }
+  return overfull;
+}
+
+/**
+ * Closes zero-width cracks (JoinCrackSides), refusing the vertices of any edge the joins would
+ * make non-manifold and joining again without them, until the joins keep every edge manifold.
+ * mayMerge is taken as transitive: a set of coincident vertices joins as one when each join
+ * along the cracks is allowed. Returns each input point's replacement (-1: kept), empty when
+ * none joins. Time: n log n in the border edges at shared positions, per round of refusals.
+ */
+std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t inputPoints,
+  const std::vector<std::int32_t>& positionOf, const PointMergeTest& mayMerge)
+{
+  const std::vector<CrackEdge> edges = CrackEdges(mesh, positionOf);
+  std::vector<std::uint8_t> refused(mesh.Points.size(), 0);
+  for (;;)
+  {
+    JoinedSets sets(mesh.Points.size());
+    if (!JoinCrackSides(mesh, edges, mayMerge, refused, sets))
+    {
+      return {};
+    }
+    const std::vector<std::int32_t> overfull = OverfullJoinedEdges(mesh, sets);
+    if (overfull.empty())
+    {
+      std::vector<std::int32_t> replacement(static_cast<std::size_t>(inputPoints), -1);
+      for (std::int32_t v = 0; v < static_cast<std::int32_t>(sets.Root.size()); ++v)
+      {
+        replacement[mesh.InputVertex[v]] = sets.Find(v) != v ? mesh.InputVertex[sets.Find(v)] : -1;
+      }
+      return replacement;
+    }
+    for (const std::int32_t v : overfull)
+    {
+      refused[v] = 1;
+    }
+  }
 }
 
 template <typename PointType, typename IdType>
@@ -634,9 +711,10 @@ CompactMesh BuildCompactMesh(
   {
     OrderTriangles(input, usable, vertexOf, mesh, context);
   }
-  const std::vector<std::int32_t> first = mayMerge ? CoincidentVertices(mesh, cellEnds, context) : std::vector<std::int32_t>();
+  const std::vector<std::int32_t> positionOf =
+    mayMerge ? CoincidentVertices(mesh, cellEnds, context) : std::vector<std::int32_t>();
   const std::vector<std::int32_t> replacement =
-    first.empty() ? first : CrackJoins(mesh, input.NumberOfPoints, first, mayMerge);
+    positionOf.empty() ? std::vector<std::int32_t>() : CrackJoins(mesh, input.NumberOfPoints, positionOf, mayMerge);
   if (!replacement.empty())
   {
     // Made anew from the input with the joined points replaced in its triangles (those that
@@ -658,7 +736,8 @@ CompactMesh BuildCompactMesh(
 }
 } // namespace
 
-CompactMesh MakeCompactMesh(const TriangleMeshView& input, const ExecutionContext& context, const PointMergeTest& mayMerge)
+CompactMesh MakeCompactMesh(
+  const TriangleMeshView& input, const ExecutionContext& context, const PointMergeTest& mayMerge)
 {
   const std::int64_t n = input.NumberOfPoints, m = input.NumberOfTriangles;
   if (input.Points)

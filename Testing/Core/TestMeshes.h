@@ -413,6 +413,20 @@ Mesh Both(Mesh first, const Mesh& second)
   return first;
 }
 
+/// The mesh with each quad's other diagonal (Grid's triangles (a, b, d), (a, d, c) become
+/// (a, b, c), (b, d, c)).
+Mesh Mirrored(Mesh mesh)
+{
+  for (std::size_t t = 0; t + 5 < mesh.Triangles.size(); t += 6)
+  {
+    const std::int32_t a = mesh.Triangles[t], b = mesh.Triangles[t + 1], d = mesh.Triangles[t + 2],
+                       c = mesh.Triangles[t + 5];
+    const std::int32_t quad[6] = { a, b, c, b, d, c };
+    std::copy(quad, quad + 6, mesh.Triangles.begin() + static_cast<std::ptrdiff_t>(t));
+  }
+  return mesh;
+}
+
 /// The mesh with every triangle turned over.
 Mesh TurnedOver(Mesh mesh)
 {

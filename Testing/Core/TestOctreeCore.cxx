@@ -790,6 +790,23 @@ void CompactMeshIsSpatialAndMapsBack()
   CHECK(narrow.VertexToPoint == wide.VertexToPoint && narrow.TriangleSource == wide.TriangleSource);
 }
 
+/// Whether no edge of the mesh has more than two triangles, nor two in one direction (the
+/// compact mesh is consistently oriented where it can be).
+bool ManifoldEdges(const meshsimp::CompactMesh& compact)
+{
+  std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
+  for (std::size_t t = 0; t < compact.Triangles.size(); t += 3)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ compact.Triangles[t + k], compact.Triangles[t + (k + 1) % 3] }];
+    }
+  }
+  const auto edges = TrianglesPerEdge(compact.Triangles);
+  return std::all_of(directed.begin(), directed.end(), [](const auto& entry) { return entry.second == 1; }) &&
+    std::all_of(edges.begin(), edges.end(), [](const auto& entry) { return entry.second <= 2; });
+}
+
 /// Whether no vertex of the mesh is a bow-tie: each has at most one open border edge leaving it.
 bool OneFanPerVertex(const meshsimp::CompactMesh& compact)
 {
@@ -798,12 +815,19 @@ bool OneFanPerVertex(const meshsimp::CompactMesh& compact)
   {
     flags.resize(static_cast<std::size_t>(compact.Adjacency.End(v) - compact.Adjacency.Begin(v)));
     meshsimp::MarkBoundaryCorners(compact.Adjacency, v, flags.data());
-    if (std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return (f & meshsimp::OutgoingBoundaryEdge) != 0; }) > 1)
+    const auto leaving = [](std::uint8_t f) { return (f & meshsimp::OutgoingBoundaryEdge) != 0; };
+    if (std::count_if(flags.begin(), flags.end(), leaving) > 1)
     {
       return false;
     }
   }
   return true;
+}
+
+/// Manifold: every edge and every vertex.
+bool Manifold(const meshsimp::CompactMesh& compact)
+{
+  return ManifoldEdges(compact) && OneFanPerVertex(compact);
 }
 
 void CompactMeshClosesCracks()
@@ -870,15 +894,19 @@ void CompactMeshClosesCracks()
   const meshsimp::CompactMesh apart = meshsimp::MakeCompactMesh(Both(Grid(2), other).View(), {}, always);
   CHECK(apart.Points.size() == 18 && apart.JoinedPoints == 0);
 
-  // A sheet stored twice stays two sheets: their borders run alike, not as a crack's sides do;
-  // stored back to back (one turned over), their triangles lie folded onto each other. A soup
-  // (every triangle with its own points) of a closed double cone with sharp rims becomes one
-  // closed surface.
+  // A sheet stored twice stays two sheets: their borders run alike, not as a crack's sides do.
+  // Stored back to back (one turned over), their rims join into a closed flat shell where that
+  // keeps every edge between two triangles: wholly with other diagonals, in part with the same
+  // ones (whose rim triangles would lie on one another). A soup (every triangle with its own
+  // points) of a closed double cone with sharp rims becomes one closed surface.
   const meshsimp::CompactMesh twice = meshsimp::MakeCompactMesh(Both(Grid(3), Grid(3)).View(), {}, always);
   CHECK(twice.JoinedPoints == 0 && countBorderEdges(twice) == 2 * 12);
+  const meshsimp::CompactMesh shell =
+    meshsimp::MakeCompactMesh(Both(Grid(3), TurnedOver(Mirrored(Grid(3)))).View(), {}, always);
+  CHECK(shell.JoinedPoints == 12 && countBorderEdges(shell) == 0 && Manifold(shell));
   const meshsimp::CompactMesh backToBack =
     meshsimp::MakeCompactMesh(Both(Grid(3), TurnedOver(Grid(3))).View(), {}, always);
-  CHECK(backToBack.JoinedPoints == 0 && countBorderEdges(backToBack) == 2 * 12);
+  CHECK(backToBack.JoinedPoints > 0 && backToBack.JoinedPoints < 12 && Manifold(backToBack));
   const Mesh cone = Fan(64, true);
   Mesh soup;
   for (const std::int32_t v : cone.Triangles)
@@ -888,6 +916,20 @@ void CompactMeshClosesCracks()
   }
   const meshsimp::CompactMesh welded = meshsimp::MakeCompactMesh(soup.View(), {}, always);
   CHECK(welded.Points.size() == 64 + 2 && countBorderEdges(welded) == 0);
+
+  // Joins never make the surface non-manifold: a zero-area needle (two of its corners at one
+  // position) is no crack, so two fans touching at its tip stay two; a tent over a sheet's
+  // triangle, with its own copies of the triangle's corners, does not close onto the sheet, as
+  // its edge over the sheet's inner edge would have three triangles.
+  Mesh needle = Both(Grid(2), Scaled(Grid(2), -1.0)); // touching at (0, 0), points 0 and 9
+  needle.Points.insert(needle.Points.end(), { 1.0, -1.0, 0.3 });
+  needle.Triangles.insert(needle.Triangles.end(), { 0, 9, 18 });
+  const meshsimp::CompactMesh tip = meshsimp::MakeCompactMesh(needle.View(), {}, always);
+  CHECK(tip.JoinedPoints == 0);
+  const Mesh tent{ { 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0, 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, 0.4, 1 },
+    { 0, 1, 2, 1, 0, 3, 5, 4, 7, 4, 6, 7, 6, 5, 7 } };
+  const meshsimp::CompactMesh overTent = meshsimp::MakeCompactMesh(tent.View(), {}, always);
+  CHECK(Manifold(overTent));
 
   // Many copies of one triangle (every position shared by 20 000 points, each border edge by
   // 20 000 sides) join nothing, and take a sort, not a comparison of every pair.

@@ -186,7 +186,8 @@ void CheckCracks(const Factory& make)
   // With CloseCracks off the slit stays open, as a border.
   filter->CloseCracksOff();
   filter->Update();
-  CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) > 0 && !filter->GetOutput()->GetFieldData()->GetArray("JoinedPoints"));
+  vtkPolyData* open = filter->GetOutput();
+  CHECK(meshsimp_test::OpenEdges(open) > 0 && !open->GetFieldData()->GetArray("JoinedPoints"));
 }
 
 /// A multiblock of the sphere, the sphere made twice as fine, and an image: a triangle count
