@@ -249,7 +249,10 @@ bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b)
       continue; // one per point by definition: they name the copies, not what they carry
     }
     const int components = array->GetNumberOfComponents();
-    auto* numbers = vtkDataArray::SafeDownCast(array);
+    // Doubles hold every value of the other numeric types exactly but 64-bit integers': those,
+    // and strings, compare as variants.
+    vtkDataArray* numbers = vtkDataArray::SafeDownCast(array);
+    numbers = numbers && (numbers->GetDataTypeSize() < 8 || numbers->GetDataType() == VTK_DOUBLE) ? numbers : nullptr;
     for (int c = 0; c < components; ++c)
     {
       if (numbers)
