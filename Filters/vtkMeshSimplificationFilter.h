@@ -26,7 +26,7 @@
  *   line cells are dropped with a warning. Before simplifying, the usable triangles are
  *   mended: repeated triangles dropped, turned-over ones turned back, and zero-width cracks
  *   closed (CloseCracks): two points at exactly the same position whose open borders run along
- *   each other in opposite directions (split-off copies of a point, patches stored with their
+ *   each other (split-off copies of a point, patches stored with their
  *   own copies of a shared border) become one point where every point array has the same
  *   values at both (global and pedigree ids aside; a texture or colour seam stays open) and
  *   their locks and attribute regions agree; the field value JoinedPoints counts them. Points that only touch stay apart. The input is never modified.

@@ -486,6 +486,7 @@ struct CrackEdge
 {
   std::int32_t Low, High; // the positions (see CoincidentVertices) of its ends, Low < High
   std::int32_t From, To;  // its vertices, in its triangle's direction
+  std::int32_t Opposite;  // its triangle's third vertex
   bool operator<(const CrackEdge& other) const
   {
     return std::tie(this->Low, this->High, this->From, this->To) <
@@ -511,7 +512,7 @@ std::vector<CrackEdge> CrackEdges(const CompactMesh& mesh, const std::vector<std
     const std::int32_t a = positionOf[from], b = positionOf[to], c = positionOf[opposite];
     if (a != b && c != a && c != b)
     {
-      edges.push_back({ std::min(a, b), std::max(a, b), from, to });
+      edges.push_back({ std::min(a, b), std::max(a, b), from, to, opposite });
     }
   };
   std::vector<std::uint8_t> flags;
@@ -560,13 +561,32 @@ struct JoinedSets
   }
 };
 
+/// Whether the triangles of two border edges along one segment lie on opposite sides of it
+/// (their third vertices more than a right angle apart around it), as a crack's two sides do
+/// however each is turned; two copies of one triangle lie on the same side. Each vector is
+/// scaled by its largest component first, so no product over- or underflows.
+bool OnOppositeSides(const CompactMesh& mesh, const CrackEdge& a, const CrackEdge& b)
+{
+  const Eigen::Vector3d start = mesh.Points[a.From];
+  const Eigen::Vector3d along = (mesh.Points[a.To] - start).stableNormalized();
+  const auto across = [&](std::int32_t opposite) {
+    const Eigen::Vector3d d = mesh.Points[opposite] - start;
+    const Eigen::Vector3d side = d - d.dot(along) * along;
+    const double largest = side.cwiseAbs().maxCoeff();
+    return largest > 0.0 ? Eigen::Vector3d(side / largest) : Eigen::Vector3d::Zero();
+  };
+  return across(a.Opposite).dot(across(b.Opposite)) < 0.0;
+}
+
 /**
  * Joins the two sides of each crack that may close: two border edges between the same two
- * positions, and no third, running in opposite directions (as the sides of a cut through a
- * consistently oriented surface do; two copies of one sheet run alike), whose ends' two vertices
- * are one already or may become one (mayMerge, and neither refused). A pair joins only along a
- * side that closes, so a joined vertex's fan stays one fan (no bow-tie where the crack's
- * neighbours stay apart). False when nothing joins.
+ * positions, and no third, that run in opposite directions (as the sides of a cut through a
+ * consistently oriented surface do) or, where the triangles' orientations disagree, alike with
+ * the triangles on opposite sides of the edge (two copies of one sheet run alike on the same
+ * side, and stay apart); and whose ends' two vertices are one already or may become one
+ * (mayMerge, and neither refused). A pair joins only along a side that closes, so a joined
+ * vertex's fan stays one fan (no bow-tie where the crack's neighbours stay apart); turned
+ * triangles are turned to agree afterwards (OrientConsistently). False when nothing joins.
  */
 bool JoinCrackSides(const CompactMesh& mesh, const std::vector<CrackEdge>& edges, const PointMergeTest& mayMerge,
   const std::vector<std::uint8_t>& refused, JoinedSets& sets)
@@ -588,10 +608,11 @@ bool JoinCrackSides(const CompactMesh& mesh, const std::vector<CrackEdge>& edges
     const CrackEdge& a = edges[i];
     const CrackEdge& b = edges[i + 1];
     const bool opposite = mesh.Points[a.From] == mesh.Points[b.To]; // a runs from where b ends
-    if (opposite && mergeable(a.From, b.To) && mergeable(a.To, b.From))
+    const std::int32_t atFrom = opposite ? b.To : b.From, atTo = opposite ? b.From : b.To;
+    if ((opposite || OnOppositeSides(mesh, a, b)) && mergeable(a.From, atFrom) && mergeable(a.To, atTo))
     {
-      sets.Unite(a.From, b.To);
-      sets.Unite(a.To, b.From);
+      sets.Unite(a.From, atFrom);
+      sets.Unite(a.To, atTo);
       any = true;
     }
   }

@@ -427,6 +427,18 @@ Mesh Mirrored(Mesh mesh)
   return mesh;
 }
 
+/// The mesh as a soup: every triangle with its own copies of its points.
+Mesh Soup(const Mesh& mesh)
+{
+  Mesh soup;
+  for (const std::int32_t v : mesh.Triangles)
+  {
+    soup.Points.insert(soup.Points.end(), { mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
+    soup.Triangles.push_back(static_cast<std::int32_t>(soup.Triangles.size()));
+  }
+  return soup;
+}
+
 /// The mesh with every triangle turned over.
 Mesh TurnedOver(Mesh mesh)
 {

@@ -907,15 +907,30 @@ void CompactMeshClosesCracks()
   const meshsimp::CompactMesh backToBack =
     meshsimp::MakeCompactMesh(Both(Grid(3), TurnedOver(Grid(3))).View(), {}, always);
   CHECK(backToBack.JoinedPoints > 0 && backToBack.JoinedPoints < 12 && Manifold(backToBack));
-  const Mesh cone = Fan(64, true);
-  Mesh soup;
-  for (const std::int32_t v : cone.Triangles)
-  {
-    soup.Points.insert(soup.Points.end(), { cone.Points[3 * v], cone.Points[3 * v + 1], cone.Points[3 * v + 2] });
-    soup.Triangles.push_back(static_cast<std::int32_t>(soup.Triangles.size()));
-  }
-  const meshsimp::CompactMesh welded = meshsimp::MakeCompactMesh(soup.View(), {}, always);
+  const meshsimp::CompactMesh welded = meshsimp::MakeCompactMesh(Soup(Fan(64, true)).View(), {}, always);
   CHECK(welded.Points.size() == 64 + 2 && countBorderEdges(welded) == 0);
+
+  // Patches turned the other way close too, and are turned to agree: the grid's right half
+  // turned over, and a soup of a sphere with every fifth triangle turned over.
+  Mesh turned = halves;
+  for (std::size_t t = 0; t < turned.Triangles.size(); t += 3)
+  {
+    if (std::all_of(turned.Triangles.begin() + t, turned.Triangles.begin() + t + 3,
+          [&](std::int32_t v) { return turned.Points[3 * v] >= 0.5; }))
+    {
+      std::swap(turned.Triangles[t + 1], turned.Triangles[t + 2]);
+    }
+  }
+  const meshsimp::CompactMesh mended = meshsimp::MakeCompactMesh(turned.View(), {}, always);
+  CHECK(mended.JoinedPoints == 9 && countBorderEdges(mended) == 32 && Manifold(mended));
+  Mesh flipped = Soup(Sphere(6));
+  for (std::size_t t = 0; t < flipped.Triangles.size(); t += 15)
+  {
+    std::swap(flipped.Triangles[t + 1], flipped.Triangles[t + 2]);
+  }
+  const meshsimp::CompactMesh sphere6 = meshsimp::MakeCompactMesh(flipped.View(), {}, always);
+  CHECK(sphere6.Points.size() == meshsimp::MakeCompactMesh(Sphere(6).View()).Points.size());
+  CHECK(countBorderEdges(sphere6) == 0 && Manifold(sphere6));
 
   // Joins never make the surface non-manifold: a zero-area needle (two of its corners at one
   // position) is no crack, so two fans touching at its tip stay two; a tent over a sheet's
