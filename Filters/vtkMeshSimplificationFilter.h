@@ -26,10 +26,12 @@
  *   line cells are dropped with a warning. Before simplifying, the usable triangles are
  *   mended: repeated triangles dropped, turned-over ones turned back, and zero-width cracks
  *   closed (CloseCracks): two points at exactly the same position whose open borders run along
- *   each other (split-off copies of a point, patches stored with their
- *   own copies of a shared border) become one point where every point array has the same
- *   values at both (global and pedigree ids aside; a texture or colour seam stays open) and
- *   their locks and attribute regions agree; the field value JoinedPoints counts them. Points that only touch stay apart. The input is never modified.
+ *   each other in opposite directions, or alike where one side is turned over and the result
+ *   can be oriented (split-off copies of a point, patches stored with their own copies of a
+ *   shared border, soups) become one point where every point array has the same values at
+ *   both (global and pedigree ids aside; a texture or colour seam stays open) and their locks
+ *   and attribute regions agree; the field value JoinedPoints counts them. Points that only
+ *   touch, and two copies of one sheet, stay apart. The input is never modified.
  * - Output: point data by one rule in every filter (vtkSimplificationAttributes.h: floating
  *   arrays interpolated, unsigned-char colours averaged and rounded, other arrays from one
  *   input point), cell data copied from the surviving triangles, the algorithm's own arrays

@@ -545,6 +545,7 @@ std::vector<CrackEdge> CrackEdges(const CompactMesh& mesh, const std::vector<std
 struct JoinedSets
 {
   std::vector<std::int32_t> Root;
+  bool Turned = false; // a join of sides that run alike (one turned over) was made
   explicit JoinedSets(std::size_t n) : Root(n) { std::iota(this->Root.begin(), this->Root.end(), 0); }
   std::int32_t Find(std::int32_t v)
   {
@@ -561,11 +562,12 @@ struct JoinedSets
   }
 };
 
-/// Whether the triangles of two border edges along one segment lie on opposite sides of it
-/// (their third vertices more than a right angle apart around it), as a crack's two sides do
-/// however each is turned; two copies of one triangle lie on the same side. Each vector is
-/// scaled by its largest component first, so no product over- or underflows.
-bool OnOppositeSides(const CompactMesh& mesh, const CrackEdge& a, const CrackEdge& b)
+/// Whether the triangles of two border edges along one segment lie apart around it: their third
+/// vertices more than 60 degrees apart seen along the edge, as a crack's two sides are however
+/// each is turned, well clear of rounding at any crease of 90 degrees or blunter; two copies of
+/// one sheet lie on top of each other (0 degrees). Each vector is scaled by its largest component
+/// first, so no product over- or underflows.
+bool LieApart(const CompactMesh& mesh, const CrackEdge& a, const CrackEdge& b)
 {
   const Eigen::Vector3d start = mesh.Points[a.From];
   const Eigen::Vector3d along = (mesh.Points[a.To] - start).stableNormalized();
@@ -575,21 +577,22 @@ bool OnOppositeSides(const CompactMesh& mesh, const CrackEdge& a, const CrackEdg
     const double largest = side.cwiseAbs().maxCoeff();
     return largest > 0.0 ? Eigen::Vector3d(side / largest) : Eigen::Vector3d::Zero();
   };
-  return across(a.Opposite).dot(across(b.Opposite)) < 0.0;
+  const Eigen::Vector3d sideA = across(a.Opposite), sideB = across(b.Opposite);
+  return sideA.dot(sideB) < 0.5 * sideA.norm() * sideB.norm();
 }
 
 /**
  * Joins the two sides of each crack that may close: two border edges between the same two
  * positions, and no third, that run in opposite directions (as the sides of a cut through a
- * consistently oriented surface do) or, where the triangles' orientations disagree, alike with
- * the triangles on opposite sides of the edge (two copies of one sheet run alike on the same
- * side, and stay apart); and whose ends' two vertices are one already or may become one
- * (mayMerge, and neither refused). A pair joins only along a side that closes, so a joined
+ * consistently oriented surface do) or, with allowTurned, where the triangles' orientations
+ * disagree, alike with the triangles apart around the edge (LieApart; two copies of one sheet
+ * run alike on top of each other, and stay apart); and whose ends' two vertices are one already
+ * or may become one (mayMerge, and neither refused). A pair joins only along a side that closes, so a joined
  * vertex's fan stays one fan (no bow-tie where the crack's neighbours stay apart); turned
  * triangles are turned to agree afterwards (OrientConsistently). False when nothing joins.
  */
 bool JoinCrackSides(const CompactMesh& mesh, const std::vector<CrackEdge>& edges, const PointMergeTest& mayMerge,
-  const std::vector<std::uint8_t>& refused, JoinedSets& sets)
+  const std::vector<std::uint8_t>& refused, bool allowTurned, JoinedSets& sets)
 {
   const auto mergeable = [&](std::int32_t p, std::int32_t q) {
     return p == q || (!refused[p] && !refused[q] && mayMerge(mesh.InputVertex[p], mesh.InputVertex[q]));
@@ -609,10 +612,11 @@ bool JoinCrackSides(const CompactMesh& mesh, const std::vector<CrackEdge>& edges
     const CrackEdge& b = edges[i + 1];
     const bool opposite = mesh.Points[a.From] == mesh.Points[b.To]; // a runs from where b ends
     const std::int32_t atFrom = opposite ? b.To : b.From, atTo = opposite ? b.From : b.To;
-    if ((opposite || OnOppositeSides(mesh, a, b)) && mergeable(a.From, atFrom) && mergeable(a.To, atTo))
+    if ((opposite || (allowTurned && LieApart(mesh, a, b))) && mergeable(a.From, atFrom) && mergeable(a.To, atTo))
     {
       sets.Unite(a.From, atFrom);
       sets.Unite(a.To, atTo);
+      sets.Turned = sets.Turned || !opposite;
       any = true;
     }
   }
@@ -691,20 +695,21 @@ std::vector<std::int32_t> OverfullJoinedEdges(const CompactMesh& mesh, JoinedSet
  * none joins. Time: n log n in the border edges at shared positions, per round of refusals.
  */
 std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t inputPoints,
-  const std::vector<std::int32_t>& positionOf, const PointMergeTest& mayMerge)
+  const std::vector<std::int32_t>& positionOf, const PointMergeTest& mayMerge, bool allowTurned, bool& turned)
 {
   const std::vector<CrackEdge> edges = CrackEdges(mesh, positionOf);
   std::vector<std::uint8_t> refused(mesh.Points.size(), 0);
   for (;;)
   {
     JoinedSets sets(mesh.Points.size());
-    if (!JoinCrackSides(mesh, edges, mayMerge, refused, sets))
+    if (!JoinCrackSides(mesh, edges, mayMerge, refused, allowTurned, sets))
     {
       return {};
     }
     const std::vector<std::int32_t> overfull = OverfullJoinedEdges(mesh, sets);
     if (overfull.empty())
     {
+      turned = sets.Turned;
       std::vector<std::int32_t> replacement(static_cast<std::size_t>(inputPoints), -1);
       for (std::int32_t v = 0; v < static_cast<std::int32_t>(sets.Root.size()); ++v)
       {
@@ -717,6 +722,29 @@ std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t input
       refused[v] = 1;
     }
   }
+}
+
+template <typename PointType, typename IdType>
+CompactMesh BuildCompactMesh(
+  const TypedView<PointType, IdType>& input, const PointMergeTest& mayMerge, const ExecutionContext& context);
+
+/// The compact mesh made anew from the input with the joined points replaced in its triangles
+/// (those that spanned a crack become degenerate and are dropped), oriented.
+template <typename PointType, typename IdType>
+CompactMesh RebuildJoined(
+  const TypedView<PointType, IdType>& input, const std::vector<std::int32_t>& replacement, const ExecutionContext& context)
+{
+  const std::int64_t n = input.NumberOfPoints;
+  std::vector<IdType> ids(3 * static_cast<std::size_t>(input.NumberOfTriangles));
+  for (std::size_t k = 0; k < ids.size(); ++k)
+  {
+    const std::int64_t id = input.Id(static_cast<std::int64_t>(k));
+    ids[k] = id >= 0 && id < n && replacement[id] >= 0 ? static_cast<IdType>(replacement[id]) : input.Ids[k];
+  }
+  CompactMesh joined = BuildCompactMesh(
+    TypedView<PointType, IdType>{ input.Points, ids.data(), n, input.NumberOfTriangles }, {}, context);
+  joined.JoinedPoints = std::count_if(replacement.begin(), replacement.end(), [](std::int32_t r) { return r >= 0; });
+  return joined;
 }
 
 template <typename PointType, typename IdType>
@@ -734,23 +762,23 @@ CompactMesh BuildCompactMesh(
   }
   const std::vector<std::int32_t> positionOf =
     mayMerge ? CoincidentVertices(mesh, cellEnds, context) : std::vector<std::int32_t>();
-  const std::vector<std::int32_t> replacement =
-    positionOf.empty() ? std::vector<std::int32_t>() : CrackJoins(mesh, input.NumberOfPoints, positionOf, mayMerge);
-  if (!replacement.empty())
+  // Joins of turned sides are kept only where the surface they make can be oriented (a Möbius
+  // strip's seam stays open); else the cracks are closed again without them.
+  for (const bool allowTurned : { true, false })
   {
-    // Made anew from the input with the joined points replaced in its triangles (those that
-    // spanned a crack become degenerate and are dropped).
-    const std::int64_t n = input.NumberOfPoints;
-    std::vector<IdType> ids(3 * static_cast<std::size_t>(input.NumberOfTriangles));
-    for (std::size_t k = 0; k < ids.size(); ++k)
+    bool turned = false;
+    const std::vector<std::int32_t> replacement = positionOf.empty()
+      ? std::vector<std::int32_t>()
+      : CrackJoins(mesh, input.NumberOfPoints, positionOf, mayMerge, allowTurned, turned);
+    if (replacement.empty())
     {
-      const std::int64_t id = input.Id(static_cast<std::int64_t>(k));
-      ids[k] = id >= 0 && id < n && replacement[id] >= 0 ? static_cast<IdType>(replacement[id]) : input.Ids[k];
+      break;
     }
-    CompactMesh joined = BuildCompactMesh(
-      TypedView<PointType, IdType>{ input.Points, ids.data(), n, input.NumberOfTriangles }, {}, context);
-    joined.JoinedPoints = std::count_if(replacement.begin(), replacement.end(), [](std::int32_t r) { return r >= 0; });
-    return joined;
+    CompactMesh joined = RebuildJoined(input, replacement, context);
+    if (!turned || !HasMisorientedEdge(joined.Adjacency, context))
+    {
+      return joined;
+    }
   }
   OrientConsistently(mesh, context);
   return mesh;

@@ -215,12 +215,14 @@ using PointMergeTest = std::function<bool(std::int64_t, std::int64_t)>;
 
 /// The compact mesh of an input. With mayMerge, zero-width cracks are closed first: where two
 /// open border edges, and no third, join the same two positions and run in opposite directions,
-/// or alike with their triangles on opposite sides (split-off copies of points, patches stored
-/// with their own copies of a shared border, soups, however their triangles are turned), their
-/// coincident ends become one vertex, as if the input had shared them, when mayMerge allows both
-/// pairs (it is taken as transitive). No join makes an edge of more than two triangles or a
-/// vertex of two fans. Points that only touch, two copies of one sheet and T-junctions stay
-/// apart. Coincident points
+/// or alike (one side turned over) with their triangles more than 60 degrees apart around the
+/// edge (split-off copies of points, patches stored with their own copies of a shared border,
+/// soups, also with turned triangles), their coincident ends become one vertex, as if the input
+/// had shared them, when mayMerge allows both pairs (it is taken as transitive). No join makes an
+/// edge of more than two triangles or a vertex of two fans, and joins of turned sides are made
+/// only where the result can be oriented (a Moebius strip's seam stays open). Points that only
+/// touch, two copies of one sheet, creases sharper than 60 degrees between turned sides and
+/// T-junctions stay apart. Coincident points
 /// are found with a hash table per Morton cell, the crack's sides by sorting border edges.
 CompactMesh MakeCompactMesh(
   const TriangleMeshView& input, const ExecutionContext& context = {}, const PointMergeTest& mayMerge = {});

@@ -894,7 +894,7 @@ void CompactMeshClosesCracks()
   const meshsimp::CompactMesh apart = meshsimp::MakeCompactMesh(Both(Grid(2), other).View(), {}, always);
   CHECK(apart.Points.size() == 18 && apart.JoinedPoints == 0);
 
-  // A sheet stored twice stays two sheets: their borders run alike, not as a crack's sides do.
+  // A sheet stored twice stays two sheets: their borders run alike, on top of each other.
   // Stored back to back (one turned over), their rims join into a closed flat shell where that
   // keeps every edge between two triangles: wholly with other diagonals, in part with the same
   // ones (whose rim triangles would lie on one another). A soup (every triangle with its own
@@ -931,6 +931,43 @@ void CompactMeshClosesCracks()
   const meshsimp::CompactMesh sphere6 = meshsimp::MakeCompactMesh(flipped.View(), {}, always);
   CHECK(sphere6.Points.size() == meshsimp::MakeCompactMesh(Sphere(6).View()).Points.size());
   CHECK(countBorderEdges(sphere6) == 0 && Manifold(sphere6));
+  // So does a soup of a cube with every fifth triangle turned, at its right-angled creases too,
+  // however it is rotated.
+  Mesh cube = Soup(Cube(2));
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) *
+    Eigen::AngleAxisd(2.1, Eigen::Vector3d::UnitX())).toRotationMatrix();
+  for (std::size_t i = 0; i < cube.Points.size(); i += 3)
+  {
+    Eigen::Map<Eigen::Vector3d>(&cube.Points[i]) = rotation * Eigen::Map<Eigen::Vector3d>(&cube.Points[i]);
+  }
+  for (std::size_t t = 0; t < cube.Triangles.size(); t += 15)
+  {
+    std::swap(cube.Triangles[t + 1], cube.Triangles[t + 2]);
+  }
+  const meshsimp::CompactMesh closedCube = meshsimp::MakeCompactMesh(cube.View(), {}, always);
+  CHECK(closedCube.Points.size() == 26 && countBorderEdges(closedCube) == 0 && Manifold(closedCube));
+  // A Moebius strip stored with its own copies of the seam's points: closing the seam would join
+  // turned sides into a surface that cannot be oriented, so it stays open.
+  Mesh moebius;
+  const int around = 24;
+  for (int i = 0; i < around; ++i)
+  {
+    const double u = 2.0 * 3.14159265358979323846 * i / around;
+    for (const double v : { -0.3, 0.3 })
+    {
+      const double r = 1.0 + v * std::cos(0.5 * u);
+      moebius.Points.insert(moebius.Points.end(), { r * std::cos(u), r * std::sin(u), v * std::sin(0.5 * u) });
+    }
+  }
+  moebius.Points.insert(moebius.Points.end(), { moebius.Points[3], moebius.Points[4], moebius.Points[5],
+    moebius.Points[0], moebius.Points[1], moebius.Points[2] }); // the seam, turned half around
+  for (std::int32_t i = 0; i < around; ++i)
+  {
+    const std::int32_t a = 2 * i, b = 2 * i + 1, c = 2 * i + 2, d = 2 * i + 3;
+    moebius.Triangles.insert(moebius.Triangles.end(), { a, c, d, a, d, b });
+  }
+  const meshsimp::CompactMesh strip = meshsimp::MakeCompactMesh(moebius.View(), {}, always);
+  CHECK(strip.JoinedPoints == 0 && Manifold(strip));
 
   // Joins never make the surface non-manifold: a zero-area needle (two of its corners at one
   // position) is no crack, so two fans touching at its tip stay two; a tent over a sheet's
