@@ -587,9 +587,10 @@ bool LieApart(const CompactMesh& mesh, const CrackEdge& a, const CrackEdge& b)
  * consistently oriented surface do) or, with allowTurned, where the triangles' orientations
  * disagree, alike with the triangles apart around the edge (LieApart; two copies of one sheet
  * run alike on top of each other, and stay apart); and whose ends' two vertices are one already
- * or may become one (mayMerge, and neither refused). A pair joins only along a side that closes, so a joined
- * vertex's fan stays one fan (no bow-tie where the crack's neighbours stay apart); turned
- * triangles are turned to agree afterwards (OrientConsistently). False when nothing joins.
+ * or may become one (mayMerge, and neither refused). A pair joins only along a side that
+ * closes, so a joined vertex's fan stays one fan (no bow-tie where the crack's neighbours stay
+ * apart); turned triangles are turned to agree afterwards (OrientConsistently). False when
+ * nothing joins.
  */
 bool JoinCrackSides(const CompactMesh& mesh, const std::vector<CrackEdge>& edges, const PointMergeTest& mayMerge,
   const std::vector<std::uint8_t>& refused, bool allowTurned, JoinedSets& sets)
@@ -670,12 +671,12 @@ std::vector<std::int32_t> OverfullJoinedEdges(const CompactMesh& mesh, JoinedSet
     }
     // Only where the joins made one edge of several (an input's own hinge is kept, as without
     // joins; two triangles in one direction are turned to agree by OrientConsistently).
-    const auto original = [&](std::size_t k) {
-      return std::make_pair(std::min(edges[k].From, edges[k].To), std::max(edges[k].From, edges[k].To));
-    };
-    const bool made = std::any_of(edges.begin() + static_cast<std::ptrdiff_t>(i) + 1,
-      edges.begin() + static_cast<std::ptrdiff_t>(j),
-      [&](const JoinedEdge& e) { return original(static_cast<std::size_t>(&e - edges.data())) != original(i); });
+    const auto original = [](const JoinedEdge& e) { return std::minmax(e.From, e.To); };
+    bool made = false;
+    for (std::size_t k = i + 1; k < j; ++k)
+    {
+      made = made || original(edges[k]) != original(edges[i]);
+    }
     if (made && j - i > 2)
     {
       for (std::size_t k = i; k < j; ++k)
@@ -695,9 +696,8 @@ std::vector<std::int32_t> OverfullJoinedEdges(const CompactMesh& mesh, JoinedSet
  * none joins. Time: n log n in the border edges at shared positions, per round of refusals.
  */
 std::vector<std::int32_t> CrackJoins(const CompactMesh& mesh, std::int64_t inputPoints,
-  const std::vector<std::int32_t>& positionOf, const PointMergeTest& mayMerge, bool allowTurned, bool& turned)
+  const std::vector<CrackEdge>& edges, const PointMergeTest& mayMerge, bool allowTurned, bool& turned)
 {
-  const std::vector<CrackEdge> edges = CrackEdges(mesh, positionOf);
   std::vector<std::uint8_t> refused(mesh.Points.size(), 0);
   for (;;)
   {
@@ -731,8 +731,8 @@ CompactMesh BuildCompactMesh(
 /// The compact mesh made anew from the input with the joined points replaced in its triangles
 /// (those that spanned a crack become degenerate and are dropped), oriented.
 template <typename PointType, typename IdType>
-CompactMesh RebuildJoined(
-  const TypedView<PointType, IdType>& input, const std::vector<std::int32_t>& replacement, const ExecutionContext& context)
+CompactMesh RebuildJoined(const TypedView<PointType, IdType>& input, const std::vector<std::int32_t>& replacement,
+  const ExecutionContext& context)
 {
   const std::int64_t n = input.NumberOfPoints;
   std::vector<IdType> ids(3 * static_cast<std::size_t>(input.NumberOfTriangles));
@@ -762,14 +762,15 @@ CompactMesh BuildCompactMesh(
   }
   const std::vector<std::int32_t> positionOf =
     mayMerge ? CoincidentVertices(mesh, cellEnds, context) : std::vector<std::int32_t>();
+  const std::vector<CrackEdge> edges = positionOf.empty() ? std::vector<CrackEdge>() : CrackEdges(mesh, positionOf);
   // Joins of turned sides are kept only where the surface they make can be oriented (a Möbius
   // strip's seam stays open); else the cracks are closed again without them.
   for (const bool allowTurned : { true, false })
   {
     bool turned = false;
-    const std::vector<std::int32_t> replacement = positionOf.empty()
+    const std::vector<std::int32_t> replacement = edges.empty()
       ? std::vector<std::int32_t>()
-      : CrackJoins(mesh, input.NumberOfPoints, positionOf, mayMerge, allowTurned, turned);
+      : CrackJoins(mesh, input.NumberOfPoints, edges, mayMerge, allowTurned, turned);
     if (replacement.empty())
     {
       break;
