@@ -31,6 +31,16 @@ constexpr int MaximumDepth = 40;
 /// Leaves split together, and clustered concurrently, while a target is far (see Refine). The
 /// result depends on it, never on the thread count.
 constexpr std::size_t MaximumBatch = 32;
+/// Two vertices whose unit mean normals are more than 140 degrees apart (the cosine) face away
+/// from each other, as the two faces of a thin wall or plate do (180 degrees): an edge between
+/// them never joins them in one cluster, whose point would sit between the faces and move both.
+/// The creases of CAD parts (90 degrees), all but the sharpest ridges of a steep terrain and
+/// the rims' own vertices (their normals half way) still join either side. On the corpus's
+/// building (walls 0.2-0.3 thick that meet in non-manifold edges, where the tear rules do not
+/// part the faces) the RMS distance at 98 % falls from 1.03 % to 0.34 % of the diagonal; at
+/// 120 degrees it falls as far, but 9 more corpus cases change, the Klein bottle's and the
+/// gyroid's for the worse.
+constexpr float FacingAwayCosine = -0.766f;
 
 struct Plane
 {
@@ -597,6 +607,7 @@ private:
   std::vector<Quadric> VertexQuadrics;
   std::vector<double> VertexWeights; // a third of the incident area
   std::vector<Vec3> VertexAreaNormals; // a third of the incident area-weighted normals
+  std::vector<Eigen::Vector3f> Facing; // per vertex: the unit mean of its normals (zero where they cancel)
   std::vector<std::uint8_t> BoundaryCorners; // per adjacency slot (BoundaryCorner flags)
   std::vector<std::uint8_t> BoundaryVertices; // per vertex: one of its slots has a flag
   std::vector<std::uint8_t> Irregular; // per vertex: the input is no surface there (SurfaceVertex)
@@ -763,6 +774,7 @@ void Clusterer::PrepareQuadrics()
   this->VertexQuadrics.resize(n);
   this->VertexWeights.resize(n);
   this->VertexAreaNormals.resize(n);
+  this->Facing.resize(n);
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t v = b; v < e; ++v)
     {
@@ -800,6 +812,8 @@ void Clusterer::PrepareQuadrics()
       this->VertexQuadrics[v] = q;
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
+      const double length = areaNormal.norm();
+      this->Facing[v] = length > 0.0 ? Eigen::Vector3f((areaNormal / length).cast<float>()) : Eigen::Vector3f::Zero();
     }
   }, 16 * static_cast<std::int64_t>(this->Adjacency.Corners.size()));
   // Not needed any more: its memory serves the refinement's arrays.
@@ -1004,8 +1018,9 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   // Clusters are the connected components of the leaf's vertices (edges inside the leaf only),
   // found by a flood fill from each unlabelled vertex in leaf order, so a cluster's number
   // follows its first vertex. A locked vertex is a component of its own; with regions, only
-  // vertices of one region join.
-  // The pushes are branch-free: whether a neighbour is inside and new is unpredictable.
+  // vertices of one region join; vertices that face away from each other (the faces of a thin
+  // wall) never join. The pushes are branch-free but for the facing test, which only candidates
+  // reach: whether a neighbour is inside and new is unpredictable.
   const std::uint32_t size = static_cast<std::uint32_t>(end - begin);
   std::vector<std::int32_t>& stack = scratch.Stack;
   std::vector<std::int32_t>& root = scratch.Root; // cluster of each position, in the leaf
@@ -1024,6 +1039,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
     for (std::uint32_t top = this->Locked[this->Order[begin + first]] ? 0 : 1; top > 0;)
     {
       const std::int32_t v = this->Order[begin + stack[--top]];
+      const Eigen::Vector3f& facing = this->Facing[v];
       for (const Corner* c = this->Adjacency.Begin(v); c != this->Adjacency.End(v); ++c)
       {
         for (const std::int32_t w : { c->Next, c->Previous })
@@ -1031,7 +1047,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
           const std::uint32_t at = static_cast<std::uint32_t>(this->Position[w] - begin);
           const std::uint32_t k = at < size ? at : 0;
           const bool fresh = (at < size) & (root[k] < 0) & (this->Locked[w] == 0) &
-            (!regions || regions[w] == regions[v]);
+            (!regions || regions[w] == regions[v]) && this->Facing[w].dot(facing) >= FacingAwayCosine;
           root[k] = fresh ? count : root[k];
           stack[top] = static_cast<std::int32_t>(k);
           top += fresh;

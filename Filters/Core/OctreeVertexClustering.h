@@ -14,7 +14,11 @@
  *    decreasing order of error until the count is met, a flipping leaf as if its error were
  *    10 % larger;
  *  - vertices of a leaf that are not connected by edges inside it form separate clusters, so
- *    distinct parts of the surface are never merged (the distortion of Figure 1);
+ *    distinct parts of the surface are never merged (the distortion of Figure 1); beyond the
+ *    paper, an edge between vertices that face away from each other (unit mean normals more
+ *    than 140 degrees apart: the two sides of a thin wall, joined across its rim) joins
+ *    nothing either, so a wall thinner than a cell keeps both its faces where the tear rules
+ *    below do not reach (where walls meet in non-manifold edges);
  *  - the representative minimises the quadric of its related triangles' planes (eq. 2–3, 5–7)
  *    plus boundary planes perpendicular to boundary edges; when that system is near singular,
  *    or its solution lies outside the cluster's cell (within the input's bounding box), it

@@ -55,6 +55,44 @@ Mesh Grid(int n)
   return mesh;
 }
 
+/// A closed slab [0, 1]² × [0, thickness]: its top and bottom n × n grids joined by a rim one
+/// quad high (a thin wall or plate: each rim edge across the thickness joins the two sides
+/// directly), outward normals.
+Mesh Slab(int n, double thickness)
+{
+  Mesh mesh = Grid(n);
+  const std::int32_t top = static_cast<std::int32_t>(mesh.Points.size() / 3);
+  for (std::size_t t = 0; t < mesh.Triangles.size(); t += 3)
+  {
+    std::swap(mesh.Triangles[t + 1], mesh.Triangles[t + 2]); // the bottom faces down
+  }
+  const Mesh upper = Grid(n);
+  for (std::size_t i = 0; i < upper.Points.size(); i += 3)
+  {
+    mesh.Points.insert(mesh.Points.end(), { upper.Points[i], upper.Points[i + 1], thickness });
+  }
+  for (const std::int32_t v : upper.Triangles)
+  {
+    mesh.Triangles.push_back(v + top);
+  }
+  // The border counter-clockwise seen from above; each step p -> q gets an outward quad.
+  std::vector<std::int32_t> border;
+  for (int i = 0; i < n; ++i)
+    border.push_back(i);
+  for (int j = 0; j < n; ++j)
+    border.push_back(j * (n + 1) + n);
+  for (int i = n; i > 0; --i)
+    border.push_back(n * (n + 1) + i);
+  for (int j = n; j > 0; --j)
+    border.push_back(j * (n + 1));
+  for (std::size_t k = 0; k < border.size(); ++k)
+  {
+    const std::int32_t p = border[k], q = border[(k + 1) % border.size()];
+    mesh.Triangles.insert(mesh.Triangles.end(), { p, q, q + top, p, q + top, p + top });
+  }
+  return mesh;
+}
+
 /// The unit cube [0, 1]³ with each face an n × n grid, outward normals, shared points welded.
 Mesh Cube(int n)
 {

@@ -207,6 +207,44 @@ void DisconnectedPartsInOneCellStayApart()
   }
 }
 
+void TwoSidesOfAThinWallStayApart()
+{
+  // A closed slab 0.005 thick (its rim quads an eighth of its faces' quads, so the faces set the
+  // normals of the rim's vertices), far thinner than the cells at this target, with a fin
+  // standing on its top face (the fin's root edges have three triangles, so the rules against
+  // tears do not apply there). The slab's rim edges join its two faces inside a cell, yet
+  // vertices that face away from each other never share a cluster: no output point stands for
+  // both faces (merged, they would meet half way).
+  const int n = 24;
+  Mesh slab = Slab(n, 0.005);
+  CHECK(ClosedOriented(slab.Triangles));
+  const std::int32_t top = (n + 1) * (n + 1), first = static_cast<std::int32_t>(slab.Points.size() / 3);
+  for (int i = 0; i <= n; ++i)
+  {
+    slab.Points.insert(slab.Points.end(), { double(i) / n, 0.5, 0.3 });
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    const std::int32_t a = top + (n / 2) * (n + 1) + i, b = a + 1, c = first + i, d = c + 1;
+    slab.Triangles.insert(slab.Triangles.end(), { a, b, d, a, d, c });
+  }
+  const OctreeClusteringResult result = Simplify(slab, Target(static_cast<std::int64_t>(slab.Triangles.size() / 30)));
+  CHECK(result.NumberOfTriangles() > 0);
+  for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
+  {
+    std::set<bool> sides; // of the slab's points (the fin's, above it, are left out)
+    for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
+    {
+      const double z = slab.Points[3 * static_cast<std::size_t>(result.SourcePoints[k]) + 2];
+      if (z < 0.01)
+      {
+        sides.insert(z > 0.0025);
+      }
+    }
+    CHECK(sides.size() <= 1);
+  }
+}
+
 /// A terrain: a height field of n × n quads over [0, 1]², two triangles each, with steep relief
 /// (twelve sinusoids of random directions and phases, wavelengths from a third of the field to
 /// a few quads, each 1.2 / its angular frequency high, so slopes reach a few units).
@@ -1130,6 +1168,7 @@ int main()
     { "PreservedBorderKeepsItsShape", PreservedBorderKeepsItsShape },
     { "DiskBorderIsKeptWithBoundaryPlanes", DiskBorderIsKeptWithBoundaryPlanes },
     { "DisconnectedPartsInOneCellStayApart", DisconnectedPartsInOneCellStayApart },
+    { "TwoSidesOfAThinWallStayApart", TwoSidesOfAThinWallStayApart },
     { "TargetCountIsMet", TargetCountIsMet },
     { "TerrainKeepsItsSurface", TerrainKeepsItsSurface },
     { "SteepTerrainKeepsItsSurfaceAndCount", SteepTerrainKeepsItsSurfaceAndCount },
