@@ -33,13 +33,14 @@ constexpr int MaximumDepth = 40;
 constexpr std::size_t MaximumBatch = 32;
 /// Two vertices whose unit mean normals are more than 140 degrees apart (the cosine) face away
 /// from each other, as the two faces of a thin wall or plate do (180 degrees): an edge between
-/// them never joins them in one cluster, whose point would sit between the faces and move both.
-/// The creases of CAD parts (90 degrees), all but the sharpest ridges of a steep terrain and
-/// the rims' own vertices (their normals half way) still join either side. On the corpus's
-/// building (walls 0.2-0.3 thick that meet in non-manifold edges, where the tear rules do not
-/// part the faces) the RMS distance at 98 % falls from 1.03 % to 0.34 % of the diagonal; at
-/// 120 degrees it falls as far, but 9 more corpus cases change, the Klein bottle's and the
-/// gyroid's for the worse.
+/// them joins nothing, lest their cluster's point sit between the faces and move both. Only
+/// edges are tested: a vertex whose normal lies between the faces (on a rounded rim) joins
+/// both. The creases of CAD parts (90 degrees) and all but the sharpest ridges of a steep
+/// terrain are not cut; a vertex whose normals nearly cancel (a folded fan, as Folded measures
+/// it) faces no way. On the corpus's building (walls 0.2-0.3 thick that meet in non-manifold
+/// edges, where the tear rules do not part the faces) the RMS distance at 98 % falls from
+/// 1.03 % to 0.32 % of the diagonal; at 120 degrees as far, but 9 more corpus cases change,
+/// the Klein bottle's and the gyroid's for the worse.
 constexpr float FacingAwayCosine = -0.766f;
 
 struct Plane
@@ -812,8 +813,9 @@ void Clusterer::PrepareQuadrics()
       this->VertexQuadrics[v] = q;
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
-      const double length = areaNormal.norm();
-      this->Facing[v] = length > 0.0 ? Eigen::Vector3f((areaNormal / length).cast<float>()) : Eigen::Vector3f::Zero();
+      const double length = areaNormal.norm(); // a folded fan (as Folded measures it) faces no way
+      this->Facing[v] = length >= 0.5 * weight && length > 0.0 ? Eigen::Vector3f((areaNormal / length).cast<float>())
+                                                               : Eigen::Vector3f::Zero();
     }
   }, 16 * static_cast<std::int64_t>(this->Adjacency.Corners.size()));
   // Not needed any more: its memory serves the refinement's arrays.
@@ -1018,9 +1020,9 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
   // Clusters are the connected components of the leaf's vertices (edges inside the leaf only),
   // found by a flood fill from each unlabelled vertex in leaf order, so a cluster's number
   // follows its first vertex. A locked vertex is a component of its own; with regions, only
-  // vertices of one region join; vertices that face away from each other (the faces of a thin
-  // wall) never join. The pushes are branch-free but for the facing test, which only candidates
-  // reach: whether a neighbour is inside and new is unpredictable.
+  // vertices of one region join; an edge between vertices that face away from each other (the
+  // faces of a thin wall) joins nothing. The pushes are branch-free but for the facing test, which
+  // only candidates reach: whether a neighbour is inside and new is unpredictable.
   const std::uint32_t size = static_cast<std::uint32_t>(end - begin);
   std::vector<std::int32_t>& stack = scratch.Stack;
   std::vector<std::int32_t>& root = scratch.Root; // cluster of each position, in the leaf
