@@ -240,9 +240,12 @@ double DistanceToLine(const Vec3& p, const Vec3& a, const Vec3& b)
 class Decimator
 {
 public:
-  Decimator(const ParallelDecimationOptions& options, const ExecutionContext& context)
+  /// mayRelax: whether FeatureAngle and MaximumNormalDeviation may be raised when no vertex is
+  /// removable before the target (Unstick).
+  Decimator(const ParallelDecimationOptions& options, const ExecutionContext& context, bool mayRelax)
     : Options(options)
     , Context(context)
+    , MayRelax(mayRelax)
   {
     this->SetAngles(options.FeatureAngle, options.MaximumNormalDeviation);
   }
@@ -370,6 +373,7 @@ private:
   std::vector<CollapsePlan> Plans, Applied;
   std::vector<std::uint8_t> Planned;
   bool StoppedEarly = false; // no removable vertex was left before the target
+  const bool MayRelax;
   std::string StopSummary;   // then RefusalSummary, as the rounds stopped
 };
 
@@ -1093,7 +1097,7 @@ bool Decimator::Unstick(bool all, double& fraction, ParallelDecimationResult& re
   {
     return true;
   }
-  if ((this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0) || this->BoundLimit >= 0.0)
+  if ((this->FeatureAngle >= 180.0 && this->DeviationAngle >= 180.0) || this->BoundLimit >= 0.0 || !this->MayRelax)
   {
     return false;
   }
@@ -1366,7 +1370,23 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
 bool ParallelDecimation(const TriangleMeshView& input, const ParallelDecimationOptions& options,
   ParallelDecimationResult& result, const ExecutionContext& context)
 {
-  return Decimator(options, context).Run(input, result);
+  // The angles are raised only to reach the target. Where even 180 degrees does not reach it,
+  // raising them removed features and reached nothing (the corpus's building lost the faces of
+  // its ground plate), so the decimation is made again without raising them: its rounds are
+  // those of the first run up to its first raise.
+  if (!Decimator(options, context, true).Run(input, result))
+  {
+    return false;
+  }
+  if (result.Relaxations == 0 || result.Report.Stop != StopReason::NothingRemovable)
+  {
+    return true;
+  }
+  const std::int64_t relaxed = result.NumberOfTriangles();
+  const bool finished = Decimator(options, context, false).Run(input, result);
+  result.Report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were not raised: raised up to 180 degrees "
+    "they removed features and still stopped short, at " + std::to_string(relaxed) + " triangles");
+  return finished;
 }
 
 } // namespace meshsimp

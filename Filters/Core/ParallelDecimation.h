@@ -38,7 +38,9 @@
  *   order stays close to a global one; the result does not depend on the number of threads.
  * - When no vertex is removable before the target (every one is a corner, or none of its
  *   half-edges keeps the normals within the deviation), FeatureAngle and MaximumNormalDeviation
- *   are raised by 15° and the vertices re-evaluated; the filter stops early only at 180°.
+ *   are raised by 15° and the vertices re-evaluated; the filter stops early only at 180°, and
+ *   then the decimation is made again without raising them (raising them removed features and
+ *   still did not reach the target): its result, with a note that says so.
  * - Survivors keep their point data. Under the Quadric measure they then move, by default
  *   (MoveSurvivors), to the point of least error of their accumulated quadric (the planes of
  *   every input triangle merged into them), at most half their shortest edge away, and only

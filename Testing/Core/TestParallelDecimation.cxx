@@ -533,6 +533,30 @@ void CubeKeepsCornersAndEdges()
   }
 }
 
+void AnglesStayWhereRaisingThemFails()
+{
+  // A cube whose points are all locked but its corners: under the default angles nothing is
+  // removable; raised to 180 degrees the corners would go, still far above the target, so the
+  // angles are not raised and the cube keeps its corners and its area.
+  const Mesh cube = Cube(4);
+  std::vector<std::uint8_t> locks(cube.Points.size() / 3, 1);
+  for (std::size_t v = 0; v < locks.size(); ++v)
+  {
+    const double* x = &cube.Points[3 * v];
+    const bool corner = (x[0] == 0 || x[0] == 1) && (x[1] == 0 || x[1] == 1) && (x[2] == 0 || x[2] == 1);
+    locks[v] = corner ? 0 : 1;
+  }
+  ParallelDecimationOptions options = Reduction(0.9);
+  options.LockedPoints = locks.data();
+  ParallelDecimationResult result;
+  CHECK(meshsimp::ParallelDecimation(cube.View(), options, result));
+  CHECK(result.Report.Stop == meshsimp::StopReason::NothingRemovable);
+  CHECK(result.Relaxations == 0);
+  CHECK(result.NumberOfTriangles() == static_cast<std::int64_t>(cube.Triangles.size() / 3));
+  CHECK(std::abs(Area(result) - 6.0) < 1e-9);
+  CHECK(result.Report.Notes.size() == 1 && result.Report.Notes[0].find("were not raised") != std::string::npos);
+}
+
 void BoundariesAndLocks()
 {
   const Mesh grid = Grid(20);
@@ -702,6 +726,7 @@ int main()
     { "HighValenceVertex", HighValenceVertex },
     { "CubeKeepsCornersAndEdges", CubeKeepsCornersAndEdges },
     { "BoundariesAndLocks", BoundariesAndLocks },
+    { "AnglesStayWhereRaisingThemFails", AnglesStayWhereRaisingThemFails },
     { "SimplifiesAlongHinges", SimplifiesAlongHinges },
     { "ProgressAndAbort", ProgressAndAbort },
     { "DegenerateInputs", DegenerateInputs },
