@@ -18,7 +18,8 @@
  *   separate parts of a model (two fingers, two sheets) stay apart; nor are vertices joined
  *   only by edges across which the surface turns away (normals more than 140 degrees apart: the
  *   two faces of a wall thinner than a cell, joined at a sharp rim), so both faces keep their
- *   place where no vertex between them (on a rounded rim) joins both;
+ *   place where no vertex between them (on a rounded rim, or one whose normals cancel) joins
+ *   both;
  * - the representative minimises the quadric of the planes of its related triangles and of
  *   planes through boundary edges (BoundaryPlanes), refined by ErrorIterations rounds of the
  *   paper's e2 iteration; when the quadric is near singular, or its minimum lies outside the

@@ -37,12 +37,10 @@
  *
  * The triangle count is met within 2 % (TargetReduction or TargetTriangleCount). When no vertex
  * is removable before that (all corners, or no edge within the deviation), FeatureAngle and
- * MaximumNormalDeviation are raised by 15° at a time, with a warning; the filter stops early,
- * with a warning, only when nothing is removable at 180°, and then gives the decimation without
- * raising them (made again), whose features are intact: raising them removed features and
- * still did not reach the target (the corpus's building lost its ground plate's faces: RMS
- * distance 0.54 % of the diagonal at 5 806 triangles, 0.14 % at 9 220 without raising them,
- * for 3 589 asked). In MaximumError mode it removes, in
+ * MaximumNormalDeviation are raised by 15° at a time, with a warning. Where even 180° misses
+ * the target, raising them removed features and reached nothing, so the decimation is made
+ * again with the angles as set: the filter then stops where nothing is removable under them,
+ * with a warning that says so. In MaximumError mode it removes, in
  * the same order and without raising the angles, as far as it can while every survivor (moved
  * or not) stays within the bound of the planes of the input triangles it stands for (their
  * supporting planes and, along open borders, the planes through the border edges perpendicular

@@ -36,11 +36,12 @@ constexpr std::size_t MaximumBatch = 32;
 /// them joins nothing, lest their cluster's point sit between the faces and move both. Only
 /// edges are tested: a vertex whose normal lies between the faces (on a rounded rim) joins
 /// both. The creases of CAD parts (90 degrees) and all but the sharpest ridges of a steep
-/// terrain are not cut; a vertex whose normals nearly cancel (a folded fan, as Folded measures
-/// it) faces no way. On the corpus's building (walls 0.2-0.3 thick that meet in non-manifold
-/// edges, where the tear rules do not part the faces) the RMS distance at 98 % falls from
-/// 1.03 % to 0.32 % of the diagonal; at 120 degrees as far, but 9 more corpus cases change,
-/// the Klein bottle's and the gyroid's for the worse.
+/// terrain are not cut; a vertex whose normals nearly cancel (a folded fan, by the measure
+/// Folded uses) faces no way: none of its edges is cut, so it too may join both faces. On the
+/// corpus's building (walls 0.2-0.3 thick that meet in non-manifold edges, where the tear
+/// rules do not part the faces) the RMS distance at 98 % falls from 1.03 % to 0.32 % of the
+/// diagonal; at 120 degrees as far, but 9 more corpus cases change, the Klein bottle's and the
+/// gyroid's for the worse.
 constexpr float FacingAwayCosine = -0.766f;
 
 struct Plane
@@ -813,7 +814,7 @@ void Clusterer::PrepareQuadrics()
       this->VertexQuadrics[v] = q;
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
-      const double length = areaNormal.norm(); // a folded fan (as Folded measures it) faces no way
+      const double length = areaNormal.norm(); // a folded fan (by Folded's measure) faces no way
       this->Facing[v] = length >= 0.5 * weight && length > 0.0 ? Eigen::Vector3f((areaNormal / length).cast<float>())
                                                                : Eigen::Vector3f::Zero();
     }

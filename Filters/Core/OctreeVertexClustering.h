@@ -19,8 +19,8 @@
  *    than 140 degrees apart: the two sides of a thin wall, joined across its rim) joins
  *    nothing either, so a wall thinner than a cell keeps both its faces where the tear rules
  *    below do not reach (where walls meet in non-manifold edges), unless a vertex whose normal
- *    lies between them (a rounded rim's) joins both; a vertex whose normals nearly cancel (a
- *    folded fan) faces no way;
+ *    lies between them (a rounded rim's) joins both; so does a vertex whose normals nearly
+ *    cancel (a folded fan): it faces no way, and none of its edges is cut;
  *  - the representative minimises the quadric of its related triangles' planes (eq. 2–3, 5–7)
  *    plus boundary planes perpendicular to boundary edges; when that system is near singular,
  *    or its solution lies outside the cluster's cell (within the input's bounding box), it

@@ -1370,23 +1370,28 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
 bool ParallelDecimation(const TriangleMeshView& input, const ParallelDecimationOptions& options,
   ParallelDecimationResult& result, const ExecutionContext& context)
 {
-  // The angles are raised only to reach the target. Where even 180 degrees does not reach it,
-  // raising them removed features and reached nothing (the corpus's building lost the faces of
-  // its ground plate), so the decimation is made again without raising them: its rounds are
-  // those of the first run up to its first raise.
+  // The angles are raised only to reach the target. Where even 180 degrees misses it, raising
+  // them removed features and reached nothing (the corpus's building lost the faces of its
+  // ground plate), so the decimation is made again without raising them: its rounds are those
+  // of the first run up to its first raise. Its progress stays at the end (abort still works).
   if (!Decimator(options, context, true).Run(input, result))
   {
     return false;
   }
-  if (result.Relaxations == 0 || result.Report.Stop != StopReason::NothingRemovable)
+  const std::int64_t target = result.Report.TargetTriangles, relaxed = result.NumberOfTriangles();
+  if (result.Relaxations == 0 || relaxed - target <= options.Goal.Slack(target))
   {
     return true;
   }
-  const std::int64_t relaxed = result.NumberOfTriangles();
-  const bool finished = Decimator(options, context, false).Run(input, result);
-  result.Report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were not raised: raised up to 180 degrees "
-    "they removed features and still stopped short, at " + std::to_string(relaxed) + " triangles");
-  return finished;
+  ExecutionContext atEnd = context;
+  atEnd.Progress = [&context](double) { return context.Report(1.0); };
+  if (!Decimator(options, atEnd, false).Run(input, result))
+  {
+    return false;
+  }
+  result.Report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were left at their values: raised up to "
+    "180 degrees they removed features and still stopped at " + std::to_string(relaxed) + " triangles");
+  return true;
 }
 
 } // namespace meshsimp

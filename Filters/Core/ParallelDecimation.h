@@ -38,9 +38,10 @@
  *   order stays close to a global one; the result does not depend on the number of threads.
  * - When no vertex is removable before the target (every one is a corner, or none of its
  *   half-edges keeps the normals within the deviation), FeatureAngle and MaximumNormalDeviation
- *   are raised by 15° and the vertices re-evaluated; the filter stops early only at 180°, and
- *   then the decimation is made again without raising them (raising them removed features and
- *   still did not reach the target): its result, with a note that says so.
+ *   are raised by 15° and the vertices re-evaluated. Where even 180° misses the target (beyond
+ *   its tolerance), raising them removed features and reached nothing, so the decimation is
+ *   made again without raising them (RoundObserver sees both runs); its result comes with a
+ *   note that says so, and Relaxations 0.
  * - Survivors keep their point data. Under the Quadric measure they then move, by default
  *   (MoveSurvivors), to the point of least error of their accumulated quadric (the planes of
  *   every input triangle merged into them), at most half their shortest edge away, and only
@@ -82,7 +83,8 @@ struct ParallelDecimationOptions : SimplificationOptions, ParallelDecimationPara
 {
   ParallelDecimationOptions() { this->Goal.Tolerance = 0.02; }
   /// Called with the mesh and the vertices taken for each round before they are removed (for
-  /// tests and diagnostics); may be empty.
+  /// tests and diagnostics; the rounds of both runs where the decimation is made again without
+  /// raising the angles); may be empty.
   std::function<void(const CollapseMesh&, const std::vector<std::int32_t>&)> RoundObserver;
 };
 
@@ -97,7 +99,8 @@ struct ParallelDecimationResult : SimplifiedMesh
 {
   std::int64_t Rounds = 0;
   /// Times FeatureAngle and MaximumNormalDeviation were raised by 15° because no vertex was
-  /// removable under them before the target.
+  /// removable under them before the target (0 where raising them missed it and the decimation
+  /// was made again without).
   std::int64_t Relaxations = 0;
   std::int64_t MovedPoints = 0; // survivors MoveSurvivors moved
 };
