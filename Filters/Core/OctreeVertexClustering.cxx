@@ -815,7 +815,7 @@ void Clusterer::PrepareQuadrics()
       this->VertexWeights[v] = weight;
       this->VertexAreaNormals[v] = areaNormal;
       const double length = areaNormal.norm(); // a folded fan (by Folded's measure) faces no way
-      this->Facing[v] = length >= 0.5 * weight && length > 0.0 ? Eigen::Vector3f((areaNormal / length).cast<float>())
+      this->Facing[v] = length > 0.0 && length >= 0.5 * weight ? Eigen::Vector3f((areaNormal / length).cast<float>())
                                                                : Eigen::Vector3f::Zero();
     }
   }, 16 * static_cast<std::int64_t>(this->Adjacency.Corners.size()));

@@ -222,8 +222,8 @@ using PointMergeTest = std::function<bool(std::int64_t, std::int64_t)>;
 /// edge of more than two triangles or a vertex of two fans, and joins of turned sides are made
 /// only where the result can be oriented (a Moebius strip's seam stays open). Points that only
 /// touch, two copies of one sheet, creases sharper than 60 degrees between turned sides and
-/// T-junctions stay apart. Coincident points
-/// are found with a hash table per Morton cell, the crack's sides by sorting border edges.
+/// T-junctions stay apart. Coincident points are found with a hash table per Morton cell, the
+/// crack's sides by sorting border edges.
 CompactMesh MakeCompactMesh(
   const TriangleMeshView& input, const ExecutionContext& context = {}, const PointMergeTest& mayMerge = {});
 

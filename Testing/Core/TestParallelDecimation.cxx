@@ -42,6 +42,12 @@ double Area(const ParallelDecimationResult& r)
   return area;
 }
 
+/// Whether x is a corner of the unit cube.
+bool IsCubeCorner(const double* x)
+{
+  return (x[0] == 0 || x[0] == 1) && (x[1] == 0 || x[1] == 1) && (x[2] == 0 || x[2] == 1);
+}
+
 bool WithinTwoPercent(const ParallelDecimationResult& result)
 {
   const double count = static_cast<double>(result.Triangles.size() / 3);
@@ -521,8 +527,7 @@ void CubeKeepsCornersAndEdges()
     for (std::int64_t p = 0; p < result.NumberOfPoints(); ++p)
     {
       const double* x = &result.Points[3 * p];
-      const bool corner = (x[0] == 0 || x[0] == 1) && (x[1] == 0 || x[1] == 1) && (x[2] == 0 || x[2] == 1);
-      if (corner)
+      if (IsCubeCorner(x))
       {
         ++corners;
         CHECK((*result.PointArray("VertexType"))[p] == static_cast<double>(DecimationVertexType::Corner));
@@ -542,9 +547,7 @@ void AnglesStayWhereRaisingThemFails()
   std::vector<std::uint8_t> locks(cube.Points.size() / 3, 1);
   for (std::size_t v = 0; v < locks.size(); ++v)
   {
-    const double* x = &cube.Points[3 * v];
-    const bool corner = (x[0] == 0 || x[0] == 1) && (x[1] == 0 || x[1] == 1) && (x[2] == 0 || x[2] == 1);
-    locks[v] = corner ? 0 : 1;
+    locks[v] = IsCubeCorner(&cube.Points[3 * v]) ? 0 : 1;
   }
   ParallelDecimationOptions options = Reduction(0.9);
   options.LockedPoints = locks.data();
