@@ -115,7 +115,9 @@ public:
   ///@{
   /**
    * Split leaves whose representative would turn a neighbouring triangle against its
-   * original normal (§2.4, default on).
+   * original normal (§2.4, default on), and keep the representatives' iteration from turning
+   * one. Under MaximumError no output triangle is turned over; with a count target such
+   * leaves are only split first, so fewer are.
    */
   vtkSetMacro(PreventFlips, bool);
   vtkGetMacro(PreventFlips, bool);

@@ -25,7 +25,10 @@ struct OctreeClusteringParameters
   /// Add planes perpendicular to boundary edges (paper §3) so open borders are kept.
   bool BoundaryPlanes = true;
   double BoundaryWeight = 10.0;
-  /// Split leaves whose clustering would flip a related triangle (§2.4).
+  /// Split leaves whose clustering would flip a related triangle (§2.4), and keep the
+  /// representatives' iteration (ErrorIterations) from flipping one. Under an error bound no
+  /// output triangle faces against its input triangle; with a count target such leaves only
+  /// go first, so fewer do.
   bool PreventFlips = true;
 };
 

@@ -479,6 +479,12 @@ private:
     this->Nodes.push_back(node);
     return static_cast<std::int32_t>(this->Nodes.size() - 1);
   }
+  /// Whether a leaf of count clusters can be split into smaller ones.
+  static bool CanSplit(const OctreeNode& cell, std::int32_t count)
+  {
+    return cell.End - cell.Begin >= 2 && count < cell.End - cell.Begin &&
+      cell.Half > MinimumCellHalfSize && cell.Depth < MaximumDepth;
+  }
   bool IsLeaf(const HeapEntry& entry) const
   {
     return entry.Node < static_cast<std::int32_t>(this->Nodes.size()) &&
@@ -560,6 +566,9 @@ private:
   Fit FitOvershoot(const std::vector<HeapEntry>& batch, std::int64_t ceiling,
     std::vector<HeapEntry>& children, int& rejections);
   bool Refine(std::int64_t target, double bound);
+  /// Under an error bound, queues the splittable leaves at the corners of triangles turned
+  /// over now (see the body); false when there are none.
+  bool QueueFlippedLeaves();
   /// The root and the top levels of the tree (see PlantTree's body), clustered and queued.
   void PlantTree(std::int64_t target);
   /// Refines to the target and returns the surviving triangles and the mended clustering (see
@@ -584,6 +593,12 @@ private:
   OutputPoints NumberPoints(const std::vector<std::int32_t>& owner) const;
   void PlaceRepresentatives(OutputPoints& points) const;
   void IterateSecondError(const std::vector<Survivor>& survivors, OutputPoints& points) const;
+  /// Whether the survivor, its corners at these points, faces against its input triangle (§2.4).
+  bool TurnedOver(const Survivor& survivor, const std::vector<std::int32_t>& pointOf,
+    const std::vector<Vec3>& position) const;
+  /// Puts back the points of an iteration's step that turn a triangle over (see the body).
+  void UndoTurningMoves(const std::vector<Survivor>& survivors, const OutputPoints& points,
+    std::vector<Vec3>& next) const;
   void WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
     OctreeClusteringResult& result) const;
   void Finalize(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& owner,
@@ -1095,8 +1110,7 @@ std::int32_t Clusterer::EvaluateLeaf(std::int32_t node, std::int32_t firstCluste
       this->Represent(firstCluster + c, this->ClusterQuadric(members, size), region, members, size, x));
   }
 
-  canSplit = end - begin >= 2 && count < end - begin && cell.Half > MinimumCellHalfSize &&
-    cell.Depth < MaximumDepth;
+  canSplit = CanSplit(cell, count);
   const bool tooLarge = this->Options.MaximumCellSize > 0.0 &&
     this->Options.MaximumCellSize < 1.0 && 2.0 * cell.Half > this->Options.MaximumCellSize;
   const bool tooFull = this->Options.MaximumVerticesPerCell > 0 &&
@@ -1616,6 +1630,41 @@ bool Clusterer::Refine(std::int64_t target, double bound)
   return true;
 }
 
+bool Clusterer::QueueFlippedLeaves()
+{
+  // §2.4 under an error bound: a leaf that turns a triangle over is split (SetKey), but a
+  // leaf's flag is set when the leaf is made and tests only triangles with one corner in it. A
+  // neighbour split later, or one that cannot be split (a lone vertex, kept where it is), can
+  // still leave a triangle turned over: its corners' leaves are queued to be split again. Each
+  // triangle of three clusters is read at its lowest corner.
+  bool queued = false;
+  for (std::int32_t v = 0; v < static_cast<std::int32_t>(this->P.size()); ++v)
+  {
+    const std::int32_t c0 = this->VertexCluster[v];
+    for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
+    {
+      const Survivor triangle{ corner->Triangle, { v, corner->Next, corner->Previous } };
+      const std::int32_t c1 = this->VertexCluster[corner->Next], c2 = this->VertexCluster[corner->Previous];
+      if (v > corner->Next || v > corner->Previous || c0 == c1 || c1 == c2 || c0 == c2 ||
+        !this->TurnedOver(triangle, this->VertexCluster, this->ClusterPositions))
+      {
+        continue;
+      }
+      for (const std::int32_t cluster : { c0, c1, c2 })
+      {
+        const std::int32_t node = this->ClusterNodes[cluster];
+        const OctreeNode& cell = this->Nodes[node];
+        if (CanSplit(cell, cell.ClusterCount))
+        {
+          this->Heap.push({ FlipSplitKey, cell.Half, node, cell.Serial, 0.0, 0.0, true });
+          queued = true;
+        }
+      }
+    }
+  }
+  return queued;
+}
+
 std::vector<Clusterer::Survivor> Clusterer::SurvivingTriangles(const std::vector<std::int32_t>& labels) const
 {
   // Triangles with three distinct labels, minus duplicates (the same three labels in either
@@ -1953,6 +2002,13 @@ bool Clusterer::Settle(std::int64_t target, std::vector<Survivor>& survivors, Me
   if (!this->Refine(target, this->Bound()))
   {
     return false;
+  }
+  while (target < 0 && this->Options.PreventFlips && this->QueueFlippedLeaves())
+  {
+    if (!this->Refine(target, this->Bound()))
+    {
+      return false;
+    }
   }
   mending.Cluster = this->VertexCluster;
   mending.Label = this->JoinFlaps(this->SurvivingTriangles(this->VertexCluster));
@@ -2485,7 +2541,47 @@ void Clusterer::IterateSecondError(const std::vector<Survivor>& survivors, Outpu
         }
       }
     }, 64 * static_cast<std::int64_t>(points.Members.size()));
+    if (this->Options.PreventFlips)
+    {
+      this->UndoTurningMoves(survivors, points, next);
+    }
     points.Position.swap(next);
+  }
+}
+
+bool Clusterer::TurnedOver(const Survivor& survivor, const std::vector<std::int32_t>& pointOf,
+  const std::vector<Vec3>& position) const
+{
+  const Vec3& normal = this->TriangleNormals[survivor.Triangle];
+  const Vec3& a = position[pointOf[survivor.Corners[0]]];
+  const Vec3& b = position[pointOf[survivor.Corners[1]]];
+  const Vec3& c = position[pointOf[survivor.Corners[2]]];
+  return normal != Vec3::Zero() && (b - a).cross(c - a).dot(normal) <= 0.0;
+}
+
+void Clusterer::UndoTurningMoves(
+  const std::vector<Survivor>& survivors, const OutputPoints& points, std::vector<Vec3>& next) const
+{
+  // §2.4 for the iteration: the moves of a triangle's corners are undone where the moved points
+  // turn it against its input triangle and the points before did not, until no triangle is
+  // turned over anew (undoing only puts points back, so this ends).
+  for (bool undone = true; undone;)
+  {
+    undone = false;
+    for (const Survivor& survivor : survivors)
+    {
+      if (!this->TurnedOver(survivor, points.PointOf, next) ||
+        this->TurnedOver(survivor, points.PointOf, points.Position))
+      {
+        continue;
+      }
+      for (const std::int32_t v : survivor.Corners)
+      {
+        const std::int32_t p = points.PointOf[v];
+        undone = undone || next[p] != points.Position[p];
+        next[p] = points.Position[p];
+      }
+    }
   }
 }
 
