@@ -500,39 +500,55 @@ void TargetCountIsMet()
 
 void ErrorBoundIsRespected()
 {
-  // In error mode every cluster error, recomputed here from its definition, is at most ε.
-  const Mesh mesh = Cow();
-  const TriangleMeshView view = mesh.View();
-  std::vector<std::vector<std::int32_t>> incident(view.NumberOfPoints);
-  for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
+  // In error mode every cluster error, recomputed here from its definition, is at most ε: on
+  // the cow, and on the cow with noise (σ = 1 % of its size), where mending splits pieces off
+  // clusters and what is left of one folds (at this bound one such cluster was 1.55 ε away
+  // before its leaf was refined again).
+  Mesh noisy = Cow();
+  std::mt19937 random(1);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  for (double& x : noisy.Points)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      incident[mesh.Triangles[3 * t + k]].push_back(static_cast<std::int32_t>(t));
-    }
+    x += noise(random);
   }
-  for (const double epsilon : { 0.002, 0.01, 0.03 })
+  const std::vector<std::pair<Mesh, std::vector<double>>> cases = { { Cow(), { 0.002, 0.01, 0.03 } },
+    { noisy, { 0.00745 } } };
+  for (const auto& testCase : cases)
   {
-    OctreeClusteringOptions options;
-    options.Goal.SetMaximumError(epsilon, true);
-    const OctreeClusteringResult result = Simplify(mesh, options);
-    const double bound = epsilon * 1.2170847; // the cow's bounding-box diagonal
-    CHECK(result.Report.MaximumError <= bound * (1 + 1e-9));
-    double measured = 0.0;
-    for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
+    const Mesh& mesh = testCase.first;
+    const TriangleMeshView view = mesh.View();
+    std::vector<std::vector<std::int32_t>> incident(view.NumberOfPoints);
+    for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
     {
-      const Eigen::Vector3d x(result.Points[3 * p], result.Points[3 * p + 1], result.Points[3 * p + 2]);
-      for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
+      for (int k = 0; k < 3; ++k)
       {
-        for (const std::int32_t t : incident[result.SourcePoints[k]])
-        {
-          const std::int32_t* c = &mesh.Triangles[3 * t];
-          measured = std::max(measured, PlaneDistance(x, view.Point(c[0]), view.Point(c[1]), view.Point(c[2])));
-        }
+        incident[mesh.Triangles[3 * t + k]].push_back(static_cast<std::int32_t>(t));
       }
     }
-    CHECK(measured <= bound * (1 + 1e-9));
-    CHECK(result.Triangles.size() < mesh.Triangles.size()); // and it did simplify
+    for (const double epsilon : testCase.second)
+    {
+      OctreeClusteringOptions options;
+      options.Goal.SetMaximumError(epsilon, true);
+      const OctreeClusteringResult result = Simplify(mesh, options);
+      const double bound = epsilon * result.Report.Diagonal;
+      std::printf("bound %g: cluster error %.3g of it\n", epsilon, result.Report.MaximumError / bound);
+      CHECK(result.Report.MaximumError <= bound * (1 + 1e-9));
+      double measured = 0.0;
+      for (std::size_t p = 0; p + 1 < result.SourceOffsets.size(); ++p)
+      {
+        const Eigen::Vector3d x(result.Points[3 * p], result.Points[3 * p + 1], result.Points[3 * p + 2]);
+        for (std::int32_t k = result.SourceOffsets[p]; k < result.SourceOffsets[p + 1]; ++k)
+        {
+          for (const std::int32_t t : incident[result.SourcePoints[k]])
+          {
+            const std::int32_t* c = &mesh.Triangles[3 * t];
+            measured = std::max(measured, PlaneDistance(x, view.Point(c[0]), view.Point(c[1]), view.Point(c[2])));
+          }
+        }
+      }
+      CHECK(measured <= bound * (1 + 1e-9));
+      CHECK(result.Triangles.size() < mesh.Triangles.size()); // and it did simplify
+    }
   }
 }
 
@@ -570,8 +586,8 @@ void CellLimitsAreAlwaysApplied()
 void FlipRuleReducesFlippedTriangles()
 {
   // §2.4: with PreventFlips, no output triangle faces against the input triangle it comes from
-  // under an error bound: a leaf that flips one is split, and so are the leaves at a triangle
-  // that later splits around it turn over; the iteration of the second error does not turn one
+  // under an error bound: a leaf that flips one is split, and so is a leaf at the corners of a
+  // triangle that later splits turn over; the iteration of the second error does not turn one
   // over either. With a count target the rule only ranks such leaves higher, so some remain,
   // but fewer than without it.
   const Mesh cow = Cow();
