@@ -116,8 +116,9 @@ public:
   /**
    * Split leaves whose representative would turn a neighbouring triangle against its
    * original normal (§2.4, default on), and keep the representatives' iteration from turning
-   * one. Under MaximumError no output triangle is turned over; with a count target such
-   * leaves are only split first, so fewer are.
+   * one. Under MaximumError the leaves at turned triangles are split again after refinement,
+   * while they can be split (mending may still turn a few); with a count target such leaves
+   * are only split first, so fewer triangles turn.
    */
   vtkSetMacro(PreventFlips, bool);
   vtkGetMacro(PreventFlips, bool);

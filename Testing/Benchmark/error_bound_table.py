@@ -6,7 +6,8 @@ kit's metro measures (% of the diagonal).
   /usr/bin/python3 error_bound_table.py MESH... --kit ../shared/bench --cli build/bin/meshsimplify
       --workdir /tmp/bound [--bin KIT/build] [--bound 0.002 0.01] [--out table.md]
 
-Any input the kit reads (a DEM .npz too) is written once as PLY in the workdir.
+Any input the kit reads (a DEM .npz too) is written as PLY in the workdir, named after the
+input's position in the list and its name.
 """
 import argparse
 import json
@@ -17,30 +18,36 @@ import sys
 METHODS = ["octree", "volume", "parallel"]
 
 
-def as_ply(mesh, kit, workdir):
+def as_ply(index, mesh, kit, workdir):
     """The mesh as a PLY our CLI and metro read (the kit's loader, unused points dropped)."""
-    name = os.path.splitext(os.path.basename(mesh))[0]
-    path = os.path.join(workdir, name + ".ply")
-    if not os.path.exists(path):
-        sys.path.insert(0, kit)
-        import benchlib  # noqa: E402
+    sys.path.insert(0, kit)
+    import benchlib  # noqa: E402
 
-        points, triangles, _ = benchlib.load(mesh)
-        benchlib.write_ply(path, points, triangles)
+    name = os.path.splitext(os.path.basename(mesh))[0]
+    path = os.path.join(workdir, "%d_%s.ply" % (index, name))
+    points, triangles, _ = benchlib.load(mesh)
+    benchlib.write_ply(path, points, triangles)
     return name, path
+
+
+def last_json_line(command):
+    """Runs the command; the JSON object on the last line it prints (its errors shown if it fails)."""
+    done = subprocess.run(command, capture_output=True, text=True)
+    lines = done.stdout.strip().splitlines()
+    if done.returncode != 0 or not lines:
+        sys.exit("%s failed (%d): %s" % (" ".join(command), done.returncode, done.stderr.strip()))
+    return json.loads(lines[-1])
 
 
 def run(cli, method, bound, source, output):
     """Our CLI under a relative bound; its JSON line."""
-    done = subprocess.run([cli, "--method", method, "--max-error", str(bound), "--relative-error",
-                           "--json", source, output], check=True, capture_output=True, text=True)
-    return json.loads(done.stdout.strip().splitlines()[-1])
+    return last_json_line([cli, "--method", method, "--max-error", str(bound), "--relative-error",
+                           "--json", source, output])
 
 
 def hausdorff(metro, source, output):
     """metro's symmetric Hausdorff distance, % of the diagonal."""
-    done = subprocess.run([metro, source, output], check=True, capture_output=True, text=True)
-    return json.loads(done.stdout.strip().splitlines()[-1])["symmetric"]["max_pct"]
+    return last_json_line([metro, source, output])["symmetric"]["max_pct"]
 
 
 def main():
@@ -49,7 +56,8 @@ def main():
     ap.add_argument("--kit", required=True, help="the shared benchmark kit folder (benchlib.py)")
     ap.add_argument("--bin", help="folder with the kit's metro (default KIT/build)")
     ap.add_argument("--cli", required=True, help="our meshsimplify")
-    ap.add_argument("--bound", type=float, nargs="+", default=[0.002, 0.01])
+    ap.add_argument("--bound", type=float, nargs="+", default=[0.002, 0.01],
+                    help="relative bounds (put the meshes first, or end the list with --)")
     ap.add_argument("--workdir", required=True)
     ap.add_argument("--out", help="also write the markdown here")
     args = ap.parse_args()
@@ -58,7 +66,7 @@ def main():
     lines = ["| mesh | bound | " + " | ".join(m + " tris" for m in METHODS) + " | " +
              " | ".join(m + " H" for m in METHODS) + " | largest reported error |",
              "|---" * (3 + 2 * len(METHODS)) + "|"]
-    inputs = [as_ply(mesh, args.kit, args.workdir) for mesh in args.meshes]
+    inputs = [as_ply(index, mesh, args.kit, args.workdir) for index, mesh in enumerate(args.meshes)]
     for bound in args.bound:
         for name, source in inputs:
             counts, distances, largest = [], [], 0.0
@@ -67,7 +75,7 @@ def main():
                 report = run(args.cli, method, bound, source, output)
                 counts.append("{:,}".format(report["output_triangles"]).replace(",", " "))
                 distances.append("%.2f" % hausdorff(metro, source, output))
-                largest = max(largest, report.get("max_error", 0.0) / bound)
+                largest = max(largest, report["max_error"] / bound)
             lines.append("| %s | %g %% | %s | %s | %.3f of the bound |" % (
                 name, 100 * bound, " | ".join(counts), " | ".join(distances), largest))
             print(lines[-1], file=sys.stderr)
