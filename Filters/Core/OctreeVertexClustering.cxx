@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OctreeVertexClustering.h"
 
+#include "CollapseMesh.h"
 #include "ProgressiveMesh.h"
 #include "Quadric.h"
 
@@ -737,46 +738,6 @@ Plane Clusterer::BoundaryPlane(
 /// in which no edge has more than two triangles: the input is a surface at v. Corners that
 /// share a far end are joined (union-find over the sorted ends); a fan is one set. ends and
 /// parent are scratch.
-/// Whether v's triangles make one closed fan, consistently oriented: walking from a triangle
-/// to the one whose previous corner is its next corner comes back to the first after all of
-/// them, and no two share their next corner. The common case of SurfaceVertex, without its sort
-/// (each far end is then the next corner of one triangle and the previous of another); false
-/// above FanLookup's scan limit, where the quadratic scans would cost more than the sort.
-bool ClosedFan(const VertexTriangleAdjacency& adjacency, std::int64_t v)
-{
-  const Corner* first = adjacency.Begin(v);
-  const std::int32_t degree = static_cast<std::int32_t>(adjacency.End(v) - first);
-  if (degree > FanLookup::ScanLimit)
-  {
-    return false;
-  }
-  for (std::int32_t i = 0; i < degree; ++i)
-  {
-    for (std::int32_t j = i + 1; j < degree; ++j)
-    {
-      if (first[i].Next == first[j].Next)
-      {
-        return false;
-      }
-    }
-  }
-  std::int32_t at = 0;
-  for (std::int32_t step = 1; step < degree; ++step)
-  {
-    std::int32_t next = 0;
-    while (next < degree && first[next].Previous != first[at].Next)
-    {
-      ++next;
-    }
-    if (next == degree || next == 0)
-    {
-      return false; // an open fan, or a cycle that leaves triangles out
-    }
-    at = next;
-  }
-  return degree >= 3 && first[at].Next == first[0].Previous;
-}
-
 bool SurfaceVertex(const VertexTriangleAdjacency& adjacency, std::int64_t v,
   std::vector<std::pair<std::int32_t, std::int32_t>>& ends, std::vector<std::int32_t>& parent)
 {
@@ -822,7 +783,8 @@ void Clusterer::ClassifyVertices()
 {
   // Per vertex: its open-border corners (MarkBoundaryCorners), and whether the input is a
   // surface around it (SurfaceVertex); the tear rule judges only surfaces. Most vertices are
-  // inside a closed fan (ClosedFan), which answers both at once.
+  // inside one closed, consistently oriented fan (ClassifyFan's Interior), which answers both
+  // at once: a surface vertex without border corners.
   const std::int64_t n = static_cast<std::int64_t>(this->P.size());
   this->BoundaryCorners.resize(this->Adjacency.Corners.size());
   this->BoundaryVertices.resize(n);
@@ -830,10 +792,12 @@ void Clusterer::ClassifyVertices()
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
     std::vector<std::pair<std::int32_t, std::int32_t>> ends;
     std::vector<std::int32_t> parent;
+    FanWorkspace fan;
+    std::int32_t opening, closing;
     for (std::int64_t v = b; v < e; ++v)
     {
       std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
-      if (ClosedFan(this->Adjacency, v))
+      if (ClassifyFan(this->Adjacency.Begin(v), this->Adjacency.End(v), opening, closing, fan) == VertexClass::Interior)
       {
         // Every edge paired, one triangle each way round: no border corner.
         std::fill(flags, flags + (this->Adjacency.End(v) - this->Adjacency.Begin(v)), std::uint8_t(0));
