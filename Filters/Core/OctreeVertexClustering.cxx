@@ -1945,13 +1945,24 @@ std::vector<std::int32_t> Clusterer::TornLabels(const std::vector<Survivor>& sur
   {
     ++sizes[labels[v]];
   }
-  std::vector<std::array<std::int32_t, 3>> edges; // a < b, third
+  // (a < b, third), sorted: (a, b) packed in one key, which sorts as the pair does.
+  struct Edge
+  {
+    std::uint64_t Ends;
+    std::int32_t Third;
+    std::int32_t A() const { return static_cast<std::int32_t>(this->Ends >> 32); }
+    std::int32_t B() const { return static_cast<std::int32_t>(this->Ends & 0xffffffffu); }
+    bool operator<(const Edge& o) const { return std::tie(this->Ends, this->Third) < std::tie(o.Ends, o.Third); }
+  };
+  std::vector<Edge> edges;
+  edges.reserve(3 * survivors.size());
   for (const Survivor& survivor : survivors)
   {
     for (int k = 0; k < 3; ++k)
     {
       const std::int32_t a = labels[survivor.Corners[k]], b = labels[survivor.Corners[(k + 1) % 3]];
-      edges.push_back({ std::min(a, b), std::max(a, b), labels[survivor.Corners[(k + 2) % 3]] });
+      edges.push_back({ static_cast<std::uint64_t>(std::min(a, b)) << 32 | static_cast<std::uint32_t>(std::max(a, b)),
+        labels[survivor.Corners[(k + 2) % 3]] });
     }
   }
   std::sort(edges.begin(), edges.end());
@@ -1964,8 +1975,8 @@ std::vector<std::int32_t> Clusterer::TornLabels(const std::vector<Survivor>& sur
   explode.clear();
   for (std::size_t k = 0, end = 0; k < edges.size(); k = end)
   {
-    const std::int32_t a = edges[k][0], b = edges[k][1];
-    for (end = k; end < edges.size() && edges[end][0] == a && edges[end][1] == b; ++end)
+    const std::int32_t a = edges[k].A(), b = edges[k].B();
+    for (end = k; end < edges.size() && edges[end].Ends == edges[k].Ends; ++end)
     {
     }
     const bool border = std::binary_search(borders.begin(), borders.end(), std::make_pair(a, b));
@@ -1976,7 +1987,7 @@ std::vector<std::int32_t> Clusterer::TornLabels(const std::vector<Survivor>& sur
     std::int32_t split = smaller(a, smaller(b, -1, tried), tried);
     for (std::size_t j = k; j < end && split < 0; ++j)
     {
-      split = smaller(edges[j][2], split, tried);
+      split = smaller(edges[j].Third, split, tried);
     }
     if (split >= 0)
     {
@@ -1987,7 +1998,7 @@ std::vector<std::int32_t> Clusterer::TornLabels(const std::vector<Survivor>& sur
     split = smaller(a, smaller(b, -1, none), none);
     for (std::size_t j = k; j < end; ++j)
     {
-      split = smaller(edges[j][2], split, none);
+      split = smaller(edges[j].Third, split, none);
     }
     if (split >= 0)
     {
