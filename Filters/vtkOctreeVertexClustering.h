@@ -116,9 +116,9 @@ public:
   /**
    * Split leaves whose representative would turn a neighbouring triangle against its
    * original normal (§2.4, default on), and keep the representatives' iteration from turning
-   * one. Under MaximumError the leaves at turned triangles are split again after refinement,
-   * while they can be split (mending may still turn a few); with a count target such leaves
-   * are only split first, so fewer triangles turn.
+   * one. After refinement the leaves at turned triangles are split again, while they can be
+   * split (mending may still turn a few); with a count target past it, and quadric collapses
+   * take the mesh back to the target.
    */
   vtkSetMacro(PreventFlips, bool);
   vtkGetMacro(PreventFlips, bool);

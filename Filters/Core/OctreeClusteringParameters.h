@@ -26,10 +26,10 @@ struct OctreeClusteringParameters
   bool BoundaryPlanes = true;
   double BoundaryWeight = 10.0;
   /// Split leaves whose clustering would flip a related triangle (§2.4), and keep the
-  /// representatives' iteration (ErrorIterations) from flipping one. Under an error bound the
-  /// leaves at flipped triangles are split again after refinement, while they can be split
-  /// (mending may still flip a few); with a count target such leaves only go first, so fewer
-  /// flip.
+  /// representatives' iteration (ErrorIterations) from flipping one. After refinement the
+  /// leaves at flipped triangles are split again, while they can be split (mending may still
+  /// flip a few); with a count target past it, and quadric collapses finish at the target
+  /// (not at non-surface vertices, nor with cell limits, where collapses cannot finish).
   bool PreventFlips = true;
 };
 

@@ -570,8 +570,8 @@ private:
   Fit FitOvershoot(const std::vector<HeapEntry>& batch, std::int64_t ceiling,
     std::vector<HeapEntry>& children, int& rejections);
   bool Refine(std::int64_t target, double bound);
-  /// Under an error bound, queues a splittable leaf at the corners of each triangle turned over
-  /// now (see the body); false when there are none.
+  /// Queues a splittable leaf at the corners of each triangle turned over now (see the body);
+  /// false when there are none.
   bool QueueFlippedLeaves();
   /// Queues the leaf to be split under an error bound whatever its error, if it can be split.
   bool QueueSplit(std::int32_t node);
@@ -1665,8 +1665,9 @@ bool Clusterer::QueueSplit(std::int32_t node)
   {
     return false;
   }
-  // Its error is not known here: the key alone makes it split under a bound (SetKey).
-  this->Heap.push({ FlipSplitKey, cell.Half, node, cell.Serial, 0.0, 0.0, true });
+  // Its error is not known here: the key alone makes it split, under a bound (SetKey), and past
+  // a count target (NextBatch).
+  this->Heap.push({ this->Counting() ? ForcedSplitKey : FlipSplitKey, cell.Half, node, cell.Serial, 0.0, 0.0, true });
   return true;
 }
 
@@ -1688,12 +1689,17 @@ bool Clusterer::QueueLargestSplit(const std::array<std::int32_t, 3>& clusters)
 
 bool Clusterer::QueueFlippedLeaves()
 {
-  // §2.4 under an error bound: a leaf that turns a triangle over is split (SetKey), but a
-  // leaf's flag is set when the leaf is made and tests only triangles with one corner in it. A
-  // neighbour split later, or one that cannot be split (a lone vertex, kept where it is), can
-  // still leave a triangle turned over: the largest of its corners' leaves is queued to be split
-  // (one is enough to move a corner; splitting all three cost 0.8 % more triangles over the
-  // corpus at 0.5 and 2 % bounds). Each triangle of three clusters is read at its lowest corner.
+  // §2.4: a leaf that turns a triangle over is split (SetKey), but a leaf's flag is set when
+  // the leaf is made and tests only triangles with one corner in it. A neighbour split later,
+  // or one that cannot be split (a lone vertex, kept where it is), can still leave a triangle
+  // turned over: the largest of its corners' leaves is queued to be split (one is enough to
+  // move a corner; splitting all three cost 0.8 % more triangles over the corpus at 0.5 and
+  // 2 % bounds). Each triangle of three clusters is read at its lowest corner.
+  // With a count target these splits pass the target, and quadric collapses take the clustered
+  // mesh back to it (FinishByCollapses, multiphase simplification): so not where the input is no
+  // surface at a corner (collapses are refused there, the splits would only add triangles), and
+  // not with cell limits (Settle: nothing finishes then).
+  const bool counting = this->Counting();
   bool queued = false;
   for (std::int32_t v = 0; v < static_cast<std::int32_t>(this->P.size()); ++v)
   {
@@ -1701,7 +1707,8 @@ bool Clusterer::QueueFlippedLeaves()
     for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
     {
       const std::int32_t c1 = this->VertexCluster[corner->Next], c2 = this->VertexCluster[corner->Previous];
-      if (v > corner->Next || v > corner->Previous || c0 == c1 || c1 == c2 || c0 == c2 ||
+      const bool irregular = this->Irregular[v] || this->Irregular[corner->Next] || this->Irregular[corner->Previous];
+      if (v > corner->Next || v > corner->Previous || c0 == c1 || c1 == c2 || c0 == c2 || (counting && irregular) ||
         !this->TurnedOver({ corner->Triangle, { v, corner->Next, corner->Previous } }, this->VertexCluster,
           this->ClusterPositions))
       {
@@ -2063,7 +2070,8 @@ bool Clusterer::Settle(std::int64_t target, std::vector<Survivor>& survivors, Me
   {
     return false;
   }
-  for (std::size_t nodes = 0; !this->Counting() && this->Options.PreventFlips && nodes != this->Nodes.size() &&
+  const bool finishable = !this->Counting() || !this->CellLimits(); // see QueueFlippedLeaves
+  for (std::size_t nodes = 0; finishable && this->Options.PreventFlips && nodes != this->Nodes.size() &&
        this->QueueFlippedLeaves();)
   {
     nodes = this->Nodes.size(); // a bound above every key splits nothing: the loop ends
