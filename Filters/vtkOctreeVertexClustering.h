@@ -31,7 +31,8 @@
  * parts become cones instead of vanishing; and with a count target late cheap splits can be
  * undone to afford a split of far larger error. Where the input is a surface, clustering makes
  * no open or non-manifold edge it did not have (clusters that would tear it are split into
- * pieces); where that takes the count over a count target (steep terrain, thin parts), quadric
+ * pieces), and a leaf at a triangle still turned over is split; where that takes the count
+ * over a count target (steep terrain, thin parts), quadric
  * half-edge collapses of the clustered mesh under the link condition finish it (multiphase
  * simplification, Garland and Shaffer): each collapsed point's clusters join a neighbour's.
  *
@@ -117,8 +118,9 @@ public:
    * Split leaves whose representative would turn a neighbouring triangle against its
    * original normal (§2.4, default on), and keep the representatives' iteration from turning
    * one. After refinement the leaves at turned triangles are split again, while they can be
-   * split (mending may still turn a few); with a count target past it, and quadric collapses
-   * take the mesh back to the target.
+   * split (mending may still turn a few); with a count target even past the target, and
+   * quadric collapses take the mesh back to it (not with MaximumCellSize or
+   * MaximumVerticesPerCell, which no collapse may cross, nor where the input is no surface).
    */
   vtkSetMacro(PreventFlips, bool);
   vtkGetMacro(PreventFlips, bool);

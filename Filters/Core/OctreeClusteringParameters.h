@@ -28,8 +28,8 @@ struct OctreeClusteringParameters
   /// Split leaves whose clustering would flip a related triangle (§2.4), and keep the
   /// representatives' iteration (ErrorIterations) from flipping one. After refinement the
   /// leaves at flipped triangles are split again, while they can be split (mending may still
-  /// flip a few); with a count target past it, and quadric collapses finish at the target
-  /// (not at non-surface vertices, nor with cell limits, where collapses cannot finish).
+  /// flip a few); with a count target even past the target, and quadric collapses finish at
+  /// it (not at non-surface vertices, nor with cell limits, where collapses cannot finish).
   bool PreventFlips = true;
 };
 

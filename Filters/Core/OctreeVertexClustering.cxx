@@ -573,7 +573,8 @@ private:
   /// Queues a splittable leaf at the corners of each triangle turned over now (see the body);
   /// false when there are none.
   bool QueueFlippedLeaves();
-  /// Queues the leaf to be split under an error bound whatever its error, if it can be split.
+  /// Queues the leaf to be split whatever its error (and past a count target), if it can be
+  /// split.
   bool QueueSplit(std::int32_t node);
   /// Queues the largest of the clusters' leaves that can be split (see QueueFlippedLeaves).
   bool QueueLargestSplit(const std::array<std::int32_t, 3>& clusters);
@@ -2061,7 +2062,7 @@ std::size_t Clusterer::SplitIntoPieces(const std::vector<std::int32_t>& members,
 
 bool Clusterer::Settle(std::int64_t target, std::vector<Survivor>& survivors, Mending& mending)
 {
-  // Refined to the target (under a bound, again while a triangle is turned over: see
+  // Refined to the target (and further while a triangle is turned over: see
   // QueueFlippedLeaves), flaps join their neighbours (JoinFlaps), and what still tears is
   // split into pieces (MendOnce), again while a split leaves a tear; so is a locked vertex
   // without a triangle (BareLocks). Mending only splits, so the count may pass the target: the
@@ -2075,7 +2076,7 @@ bool Clusterer::Settle(std::int64_t target, std::vector<Survivor>& survivors, Me
        this->QueueFlippedLeaves();)
   {
     nodes = this->Nodes.size(); // a bound above every key splits nothing: the loop ends
-    if (!this->Refine(target, this->Bound()))
+    if (!this->Report(this->Reported) || !this->Refine(target, this->Bound()))
     {
       return false;
     }

@@ -12,7 +12,8 @@
  *    where clustering it would flip a triangle of its related set (§2.4), and where its error
  *    exceeds the bound ε (§2.5 step 3); with a triangle-count target, leaves are split in
  *    decreasing order of error until the count is met, a flipping leaf as if its error were
- *    10 % larger;
+ *    10 % larger, and then a leaf at each triangle still turned over (past the count; see
+ *    below);
  *  - vertices of a leaf that are not connected by edges inside it form separate clusters, so
  *    distinct parts of the surface are never merged (the distortion of Figure 1); beyond the
  *    paper, an edge between vertices that face away from each other (unit mean normals more
@@ -43,8 +44,9 @@
  * Where the input is a surface, clustering makes no open or non-manifold edge that it did not
  * have: a cluster left with one triangle (a flap) joins a neighbour, and a cluster at an edge
  * that tears is split into pieces (parts of its cell) that merge under the link condition, as
- * a last resort into single points. Mending only adds triangles; where it takes the count over
- * a count target (steep terrain, thin parts: a coarser tree would tear more), the clustered
+ * a last resort into single points. Mending and the splits at turned triangles only add
+ * triangles; where they take the count over a count target (steep terrain, thin parts: a
+ * coarser tree would tear more), the clustered
  * mesh is finished by quadric half-edge collapses under the link condition (ProgressiveMesh's
  * core; the multiphase scheme of Garland and Shaffer): a collapsed point's clusters join the
  * point it collapses into, so the output is still a clustering of the input, without tears and
