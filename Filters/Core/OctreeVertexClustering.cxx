@@ -1708,8 +1708,8 @@ bool Clusterer::QueueFlippedLeaves()
     for (const Corner* corner = this->Adjacency.Begin(v); corner != this->Adjacency.End(v); ++corner)
     {
       const std::int32_t c1 = this->VertexCluster[corner->Next], c2 = this->VertexCluster[corner->Previous];
-      const bool irregular = this->Irregular[v] || this->Irregular[corner->Next] || this->Irregular[corner->Previous];
-      if (v > corner->Next || v > corner->Previous || c0 == c1 || c1 == c2 || c0 == c2 || (counting && irregular) ||
+      if (v > corner->Next || v > corner->Previous || c0 == c1 || c1 == c2 || c0 == c2 ||
+        (counting && (this->Irregular[v] || this->Irregular[corner->Next] || this->Irregular[corner->Previous])) ||
         !this->TurnedOver({ corner->Triangle, { v, corner->Next, corner->Previous } }, this->VertexCluster,
           this->ClusterPositions))
       {

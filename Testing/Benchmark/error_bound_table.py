@@ -3,8 +3,11 @@
 largest error it reports (which must not pass the bound) and the symmetric Hausdorff distance the
 kit's metro measures (% of the diagonal).
 
-  /usr/bin/python3 error_bound_table.py MESH... --kit ../shared/bench --cli build/bin/meshsimplify
-      --workdir /tmp/bound [--bin KIT/build] [--bound 0.002 0.01] [--out table.md]
+  python3 Testing/Benchmark/error_bound_table.py MESH... --kit KIT --cli build/bin/meshsimplify
+      --workdir bound-work [--bin KIT/build] [--bound 0.002 0.01] [--out table.md]
+
+KIT is the benchmark kit's folder (benchlib.py, and metro built in KIT/build unless --bin says
+where).
 
 Any input the kit reads (a DEM .npz too) is written as PLY in the workdir, named after the
 input's position in the list and its name.
