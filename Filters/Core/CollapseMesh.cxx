@@ -11,6 +11,40 @@
 
 namespace meshsimp
 {
+namespace
+{
+
+/// The common case, without the workspace: the walk from corner 0 along each corner's first
+/// successor comes back to corner 0 after exactly degree steps. The walk is deterministic, so it
+/// met every corner once; a corner that shared its previous vertex with another would have been
+/// skipped by the first match, and one that shared its next vertex would have been met twice.
+/// Each corner thus has exactly one successor and one predecessor, in one cycle: the full
+/// classification's Interior. Short lists only, as the scan is quadratic.
+bool IsOneClosedFan(const Corner* first, std::int32_t degree)
+{
+  std::int32_t corner = 0;
+  for (std::int32_t step = 1; step <= degree; ++step)
+  {
+    const std::int32_t next = first[corner].Next;
+    std::int32_t successor = 0;
+    while (successor < degree && first[successor].Previous != next)
+    {
+      ++successor;
+    }
+    if (successor == degree)
+    {
+      return false; // an open fan, or no fan
+    }
+    if (successor == 0)
+    {
+      return step == degree;
+    }
+    corner = successor;
+  }
+  return false; // a cycle that does not pass through corner 0
+}
+
+} // namespace
 
 VertexClass ClassifyFan(
   const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast, FanWorkspace& work)
@@ -19,6 +53,11 @@ VertexClass ClassifyFan(
   if (degree == 0)
   {
     return VertexClass::NonManifold; // no fan at all
+  }
+  if (degree <= FanLookup::ScanLimit && IsOneClosedFan(first, degree))
+  {
+    fanFirst = fanLast = -1;
+    return VertexClass::Interior;
   }
   const auto previousAt = [first](std::int32_t i) { return first[i].Previous; };
   work.ByPrevious.Reset(degree, previousAt);
