@@ -116,7 +116,6 @@ private:
   CollapseHeap Heap;
   std::vector<RingEntry> Ring, Affected;
   std::vector<std::pair<double, std::int32_t>> Candidates;
-  std::int32_t BorderNeighbours[2] = { -1, -1 };
   std::uint32_t CurrentStamp = 0;
 };
 
@@ -300,7 +299,7 @@ void ProgressiveBuilder::MeasureScales()
 
 void ProgressiveBuilder::GatherRing(std::int32_t x)
 {
-  // x's neighbours, each with the triangles on its edge; the border neighbours on the side.
+  // x's neighbours, each with the triangles on its edge.
   ++this->CurrentStamp;
   this->Ring.clear();
   this->ForEachTriangle(x, [&](std::int32_t t, int k) {
@@ -321,14 +320,6 @@ void ProgressiveBuilder::GatherRing(std::int32_t x)
       }
     }
   });
-  this->BorderNeighbours[0] = this->BorderNeighbours[1] = -1;
-  for (const RingEntry& entry : this->Ring)
-  {
-    if (entry.Count == 1)
-    {
-      this->BorderNeighbours[this->BorderNeighbours[0] < 0 ? 0 : 1] = entry.Vertex;
-    }
-  }
 }
 
 Refusal ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) const
@@ -356,11 +347,13 @@ double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) con
     return 1.0 - static_cast<double>(this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]));
   }
   const std::int32_t y = entry.Vertex;
-  const std::int32_t other = this->BorderNeighbours[0] == y ? this->BorderNeighbours[1] : this->BorderNeighbours[0];
-  if (other < 0)
+  const auto otherBorder = std::find_if(this->Ring.begin(), this->Ring.end(),
+    [y](const RingEntry& e) { return e.Count == 1 && e.Vertex != y; });
+  if (otherBorder == this->Ring.end())
   {
     return 0.0;
   }
+  const std::int32_t other = otherBorder->Vertex;
   const Eigen::Vector3d in = (this->P[x] - this->P[other]).normalized(), out = (this->P[y] - this->P[x]).normalized();
   return 1.0 - in.dot(out);
 }
