@@ -59,6 +59,20 @@ struct RingEntry
   double Cost; // of the collapse x -> Vertex (CostRing), infinite where RingCheck refuses it
 };
 
+/// x's gathered ring: storage that only grows, so that a gather writes its entries without a
+/// capacity check or a construction each; the first Size entries are the ring.
+struct RingBuffer
+{
+  std::vector<RingEntry> Storage;
+  std::int32_t Size = 0;
+  RingEntry* begin() { return this->Storage.data(); }
+  RingEntry* end() { return this->Storage.data() + this->Size; }
+  const RingEntry* begin() const { return this->Storage.data(); }
+  const RingEntry* end() const { return this->Storage.data() + this->Size; }
+  RingEntry& operator[](std::int32_t i) { return this->Storage[i]; }
+  const RingEntry& operator[](std::int32_t i) const { return this->Storage[i]; }
+};
+
 class ProgressiveBuilder
 {
 public:
@@ -85,6 +99,8 @@ private:
   bool WouldRepeatTriangle(std::int32_t y, const std::int32_t opposite[2]);
   Refusal Check(std::int32_t x, const RingEntry& entry);
   bool CollapseTop();
+  const RingEntry* Cheapest() const;
+  const RingEntry* CheapestLegal(std::int32_t x, const RingEntry& refused);
   bool StillCheapest(std::int32_t x, double cost);
   void Collapse(std::int32_t x, std::int32_t y);
   void UpdateNormal(std::int32_t t);
@@ -114,7 +130,8 @@ private:
   double LengthScale = 1.0, QuadricScale = 0.0; // the weights over their terms' units
   int ExtraDimension = 0;
   CollapseHeap Heap;
-  std::vector<RingEntry> Ring, Affected;
+  RingBuffer Ring;
+  std::vector<std::int32_t> Affected;
   std::vector<std::pair<double, std::int32_t>> Candidates;
   std::uint32_t CurrentStamp = 0;
 };
@@ -299,27 +316,35 @@ void ProgressiveBuilder::MeasureScales()
 
 void ProgressiveBuilder::GatherRing(std::int32_t x)
 {
-  // x's neighbours, each with the triangles on its edge.
-  ++this->CurrentStamp;
-  this->Ring.clear();
+  // x's neighbours, each with the triangles on its edge: at most two new ones per triangle.
+  const std::uint32_t stamp = ++this->CurrentStamp;
+  const std::size_t bound = 2 * static_cast<std::size_t>(this->Vertices[x].Triangles);
+  if (this->Ring.Storage.size() < bound)
+  {
+    this->Ring.Storage.resize(2 * bound);
+  }
+  RingEntry* ring = this->Ring.Storage.data();
+  std::int32_t size = 0;
   this->ForEachTriangle(x, [&](std::int32_t t, int k) {
     for (const int step : { 1, 2 })
     {
       const std::int32_t w = this->Corners[3 * t + NextInTriangle[k + step - 1]];
-      if (this->Vertices[w].Stamp != this->CurrentStamp)
+      VertexState& state = this->Vertices[w];
+      if (state.Stamp != stamp)
       {
-        this->Vertices[w].Stamp = this->CurrentStamp;
-        this->Vertices[w].Slot = static_cast<std::int32_t>(this->Ring.size());
-        this->Ring.push_back({ w, { t, -1 }, 1, 0.0 });
+        state.Stamp = stamp;
+        state.Slot = size;
+        ring[size++] = { w, { t, -1 }, 1, 0.0 };
       }
       else
       {
-        RingEntry& entry = this->Ring[this->Vertices[w].Slot];
+        RingEntry& entry = ring[state.Slot];
         entry.Triangles[1] = t;
         ++entry.Count;
       }
     }
   });
+  this->Ring.Size = size;
 }
 
 Refusal ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) const
@@ -517,48 +542,68 @@ bool ProgressiveBuilder::CollapseTop()
   {
     const std::int32_t x = this->Heap.Top();
     this->GatherRing(x);
-    std::vector<std::pair<double, std::int32_t>>& order = this->Candidates;
-    order.clear();
     this->CostRing(x);
-    for (const RingEntry& entry : this->Ring)
-    {
-      if (entry.Cost < std::numeric_limits<double>::infinity())
-      {
-        order.emplace_back(entry.Cost, entry.Vertex);
-      }
-    }
-    // The cheapest first; the others sorted only when it is illegal (seldom).
-    if (order.empty())
+    const RingEntry* cheapest = this->Cheapest();
+    if (!cheapest)
     {
       this->Heap.Remove(x);
       continue;
     }
-    std::iter_swap(order.begin(), std::min_element(order.begin(), order.end()));
-    if (!this->StillCheapest(x, order.front().first))
+    if (!this->StillCheapest(x, cheapest->Cost))
     {
       continue;
     }
-    const auto isLegal = [&](const std::pair<double, std::int32_t>& candidate) {
-      return this->Check(x, this->Ring[this->Vertices[candidate.second].Slot]) == Refusal::None;
-    };
-    auto legal = order.begin();
-    if (legal != order.end() && !isLegal(*legal))
-    {
-      std::sort(order.begin() + 1, order.end());
-      legal = std::find_if(order.begin() + 1, order.end(), isLegal);
-    }
-    if (legal == order.end())
+    // The others are sorted only when the cheapest is illegal (seldom).
+    const RingEntry* legal = this->Check(x, *cheapest) == Refusal::None ? cheapest : this->CheapestLegal(x, *cheapest);
+    if (!legal)
     {
       this->Heap.Remove(x);
       continue;
     }
-    if (this->StillCheapest(x, legal->first))
+    if (this->StillCheapest(x, legal->Cost))
     {
-      this->Collapse(x, legal->second);
+      this->Collapse(x, legal->Vertex);
       return true;
     }
   }
   return false;
+}
+
+const RingEntry* ProgressiveBuilder::Cheapest() const
+{
+  // The costed ring's allowed edge of least (cost, vertex); none when RingCheck refused all.
+  const RingEntry* best = nullptr;
+  for (const RingEntry& entry : this->Ring)
+  {
+    const bool cheaper = best ? std::make_pair(entry.Cost, entry.Vertex) < std::make_pair(best->Cost, best->Vertex)
+                              : entry.Cost < std::numeric_limits<double>::infinity();
+    best = cheaper ? &entry : best;
+  }
+  return best;
+}
+
+const RingEntry* ProgressiveBuilder::CheapestLegal(std::int32_t x, const RingEntry& refused)
+{
+  // The allowed edges other than refused, by (cost, vertex), until one passes Check.
+  std::vector<std::pair<double, std::int32_t>>& order = this->Candidates;
+  order.clear();
+  for (const RingEntry& entry : this->Ring)
+  {
+    if (&entry != &refused && entry.Cost < std::numeric_limits<double>::infinity())
+    {
+      order.emplace_back(entry.Cost, entry.Vertex);
+    }
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& candidate : order)
+  {
+    const RingEntry& entry = this->Ring[this->Vertices[candidate.second].Slot];
+    if (this->Check(x, entry) == Refusal::None)
+    {
+      return &entry;
+    }
+  }
+  return nullptr;
 }
 
 bool ProgressiveBuilder::StillCheapest(std::int32_t x, double cost)
@@ -616,13 +661,17 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   // costs them anew (and queues a vertex again when its cost rose); only vertices out of the
   // heap (none of their edges was allowed or legal) are measured now, as their ring changed.
   this->Measure(y);
-  this->Affected.assign(this->Ring.begin(), this->Ring.end()); // y's ring, gathered by Measure
-  for (const RingEntry& entry : this->Affected)
+  this->Affected.clear(); // of y's ring, gathered by Measure, the vertices out of the heap
+  for (const RingEntry& entry : this->Ring)
   {
     if (!this->Heap.Contains(entry.Vertex) && this->Vertices[entry.Vertex].Kind != Fixed)
     {
-      this->Measure(entry.Vertex);
+      this->Affected.push_back(entry.Vertex);
     }
+  }
+  for (const std::int32_t v : this->Affected)
+  {
+    this->Measure(v); // gathers v's ring: y's is read to the end first
   }
 }
 
