@@ -787,7 +787,7 @@ void Clusterer::ClassifyVertices()
   // inside one closed, consistently oriented fan (ClassifyFan's Interior), which answers both
   // at once: a surface vertex without border corners.
   const std::int64_t n = static_cast<std::int64_t>(this->P.size());
-  this->BoundaryCorners.resize(this->Adjacency.Corners.size());
+  this->BoundaryCorners.assign(this->Adjacency.Corners.size(), 0); // in one pass, not per fan
   this->BoundaryVertices.resize(n);
   this->Irregular.resize(n);
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {
@@ -800,8 +800,7 @@ void Clusterer::ClassifyVertices()
       std::uint8_t* flags = this->BoundaryCorners.data() + this->Adjacency.Offsets[v];
       if (ClassifyFan(this->Adjacency.Begin(v), this->Adjacency.End(v), opening, closing, fan) == VertexClass::Interior)
       {
-        // Every edge paired, one triangle each way round: no border corner.
-        std::fill(flags, flags + (this->Adjacency.End(v) - this->Adjacency.Begin(v)), std::uint8_t(0));
+        // Every edge paired, one triangle each way round: no border corner (flags stay 0).
         this->BoundaryVertices[v] = 0;
         this->Irregular[v] = 0;
         continue;
