@@ -787,7 +787,7 @@ void Clusterer::ClassifyVertices()
   // inside one closed, consistently oriented fan (ClassifyFan's Interior), which answers both
   // at once: a surface vertex without border corners.
   const std::int64_t n = static_cast<std::int64_t>(this->P.size());
-  this->BoundaryCorners.assign(this->Adjacency.Corners.size(), 0); // in one pass, not per fan
+  this->BoundaryCorners.assign(this->Adjacency.Corners.size(), 0); // MarkBoundaryCorners rewrites its fans'
   this->BoundaryVertices.resize(n);
   this->Irregular.resize(n);
   this->Context.For(n, [&](std::int64_t b, std::int64_t e) {

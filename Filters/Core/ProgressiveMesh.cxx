@@ -70,7 +70,6 @@ struct RingBuffer
   const RingEntry* begin() const { return this->Storage.data(); }
   const RingEntry* end() const { return this->Storage.data() + this->Size; }
   RingEntry& operator[](std::int32_t i) { return this->Storage[i]; }
-  const RingEntry& operator[](std::int32_t i) const { return this->Storage[i]; }
 };
 
 class ProgressiveBuilder
@@ -371,10 +370,17 @@ double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) con
   {
     return 1.0 - static_cast<double>(this->Normals[entry.Triangles[0]].dot(this->Normals[entry.Triangles[1]]));
   }
+  // The border's other neighbour: of the ring's single-triangle edges (a border vertex has two),
+  // the first, or the last when y's is the first.
   const std::int32_t y = entry.Vertex;
-  const auto otherBorder = std::find_if(this->Ring.begin(), this->Ring.end(),
-    [y](const RingEntry& e) { return e.Count == 1 && e.Vertex != y; });
-  if (otherBorder == this->Ring.end())
+  const RingEntry *first = nullptr, *last = nullptr;
+  for (const RingEntry& e : this->Ring)
+  {
+    first = !first && e.Count == 1 ? &e : first;
+    last = e.Count == 1 ? &e : last;
+  }
+  const RingEntry* otherBorder = first && first->Vertex == y ? (last != first ? last : nullptr) : first;
+  if (!otherBorder)
   {
     return 0.0;
   }
@@ -661,7 +667,9 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   // costs them anew (and queues a vertex again when its cost rose); only vertices out of the
   // heap (none of their edges was allowed or legal) are measured now, as their ring changed.
   this->Measure(y);
-  this->Affected.clear(); // of y's ring, gathered by Measure, the vertices out of the heap
+  // Of the ring gathered last (y's by Measure; x's when y is fixed and not measured: either holds
+  // every vertex whose ring changed), the vertices out of the heap.
+  this->Affected.clear();
   for (const RingEntry& entry : this->Ring)
   {
     if (!this->Heap.Contains(entry.Vertex) && this->Vertices[entry.Vertex].Kind != Fixed)

@@ -294,8 +294,9 @@ bool DropRepeatsBySort(std::vector<RunEntry>& run, const CompactMesh& mesh, std:
 
 /// Marks every triangle whose three vertices an earlier one (in input order) already has, in
 /// either orientation, unusable; returns whether any was. Such triangles share their lowest
-/// vertex, whose run of triangles (OrderTriangles: contiguous, in input order) is sorted by the
-/// other two corners, so a fan of any size costs d log d.
+/// vertex, whose run of triangles (OrderTriangles: contiguous, in input order) is compared pair
+/// by pair when short and sorted by the other two corners when long, so a fan of any size costs
+/// d log d.
 bool DropDuplicateTriangles(const CompactMesh& mesh, std::vector<std::uint8_t>& usable)
 {
   bool any = false;
