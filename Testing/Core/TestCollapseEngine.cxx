@@ -215,7 +215,13 @@ void FanClassesFromCorners()
     };
     std::int32_t ends[2];
     CHECK(classify({}) == VertexClass::NonManifold); // no triangle: no fan
-    CHECK(classify(fan(true)) == VertexClass::Interior);
+    CHECK(classify(fan(true), ends) == VertexClass::Interior);
+    CHECK(ends[0] == -1 && ends[1] == -1);
+    std::vector<Corner> shuffled = fan(true); // a closed fan's corners in any order
+    std::reverse(shuffled.begin(), shuffled.end());
+    std::rotate(shuffled.begin(), shuffled.begin() + 3, shuffled.end());
+    std::swap(shuffled[1], shuffled[degree - 2]);
+    CHECK(classify(shuffled) == VertexClass::Interior);
     std::vector<Corner> open = fan(false);
     std::rotate(open.begin(), open.begin() + 2, open.end()); // the opening corner anywhere
     CHECK(classify(open, ends) == VertexClass::Boundary);
