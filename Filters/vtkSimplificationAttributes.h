@@ -63,9 +63,10 @@ void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkP
 
 /// Whether input points a and b have the same value in every point array of pd (component by
 /// component, exactly (a vtkVariantArray's values as vtkVariant compares them); NaN equals NaN;
-/// the global and pedigree ids, which differ between any two points, are not compared): the core's SimplificationOptions::SamePointData,
-/// so that two points at one position join only where no array tells them apart (a colour or
-/// texture seam, or normals split at a crease, stay open).
+/// the global and pedigree ids, which differ between any two points, are not compared): the
+/// core's SimplificationOptions::SamePointData, so that two points at one position join only
+/// where no array tells them apart (a colour or texture seam, or normals split at a crease,
+/// stay open).
 bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b);
 
 /// Adds a one-value array to the output's field data.

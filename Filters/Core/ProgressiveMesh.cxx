@@ -430,7 +430,7 @@ void ProgressiveBuilder::CostRing(std::int32_t x)
 void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
 {
   // Step 2: the vertex's cost is its cheapest allowed edge's; fixed vertices never queue.
-  double best = std::numeric_limits<double>::infinity();
+  const RingEntry* cheapest = nullptr;
   if (this->Vertices[x].Kind != Fixed && this->Vertices[x].Triangles > 0)
   {
     if (!gathered)
@@ -438,14 +438,11 @@ void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
       this->GatherRing(x);
     }
     this->CostRing(x);
-    for (const RingEntry& entry : this->Ring)
-    {
-      best = std::min(best, entry.Cost);
-    }
+    cheapest = this->Cheapest();
   }
-  if (best < std::numeric_limits<double>::infinity())
+  if (cheapest)
   {
-    this->Heap.Set(x, best);
+    this->Heap.Set(x, cheapest->Cost);
   }
   else
   {
@@ -579,11 +576,14 @@ const RingEntry* ProgressiveBuilder::Cheapest() const
 {
   // The costed ring's allowed edge of least (cost, vertex); none when RingCheck refused all.
   const RingEntry* best = nullptr;
+  double bestCost = std::numeric_limits<double>::infinity();
   for (const RingEntry& entry : this->Ring)
   {
-    const bool cheaper = best ? std::make_pair(entry.Cost, entry.Vertex) < std::make_pair(best->Cost, best->Vertex)
-                              : entry.Cost < std::numeric_limits<double>::infinity();
-    best = cheaper ? &entry : best;
+    if (entry.Cost < bestCost || (best && entry.Cost == bestCost && entry.Vertex < best->Vertex))
+    {
+      best = &entry;
+      bestCost = entry.Cost;
+    }
   }
   return best;
 }

@@ -243,64 +243,18 @@ void OrderTriangles(const View& input, const std::vector<std::uint8_t>& usable,
   }, 30 * m);
 }
 
-/// A triangle of a run of DropDuplicateTriangles: its other two corners, sorted, and its index
-/// in the mesh (the run lists them in input order).
-struct RunEntry
-{
-  std::int32_t Low, High, Triangle;
-};
-
-/// Runs up to this long are compared pair by pair, longer ones sorted.
-constexpr std::size_t ShortRun = 8;
-
-/// Marks each entry that an earlier one of the run repeats (the same two other corners).
-bool DropRepeatsByPairs(
-  const std::vector<RunEntry>& run, const CompactMesh& mesh, std::vector<std::uint8_t>& usable)
-{
-  bool any = false;
-  for (std::size_t k = 1; k < run.size(); ++k)
-  {
-    bool repeat = false;
-    for (std::size_t j = 0; j < k; ++j)
-    {
-      repeat |= run[j].Low == run[k].Low && run[j].High == run[k].High;
-    }
-    if (repeat)
-    {
-      usable[mesh.InputTriangle[run[k].Triangle]] = 0;
-      any = true;
-    }
-  }
-  return any;
-}
-
-/// The same as DropRepeatsByPairs in d log d: sorted by corners, then position.
-bool DropRepeatsBySort(std::vector<RunEntry>& run, const CompactMesh& mesh, std::vector<std::uint8_t>& usable)
-{
-  std::sort(run.begin(), run.end(), [](const RunEntry& a, const RunEntry& b) {
-    return std::tie(a.Low, a.High, a.Triangle) < std::tie(b.Low, b.High, b.Triangle);
-  });
-  bool any = false;
-  for (std::size_t k = 1; k < run.size(); ++k)
-  {
-    if (run[k].Low == run[k - 1].Low && run[k].High == run[k - 1].High)
-    {
-      usable[mesh.InputTriangle[run[k].Triangle]] = 0;
-      any = true;
-    }
-  }
-  return any;
-}
-
 /// Marks every triangle whose three vertices an earlier one (in input order) already has, in
 /// either orientation, unusable; returns whether any was. Such triangles share their lowest
-/// vertex, whose run of triangles (OrderTriangles: contiguous, in input order) is compared pair
-/// by pair when short and sorted by the other two corners when long, so a fan of any size costs
-/// d log d.
+/// vertex, whose run of triangles (OrderTriangles: contiguous, in input order) is sorted by the
+/// other two corners, so a fan of any size costs d log d.
 bool DropDuplicateTriangles(const CompactMesh& mesh, std::vector<std::uint8_t>& usable)
 {
   bool any = false;
-  std::vector<RunEntry> run;
+  struct Entry
+  {
+    std::int32_t Low, High, Triangle; // the other two corners, sorted; the position in the run
+  };
+  std::vector<Entry> run;
   const std::size_t m = mesh.InputTriangle.size();
   for (std::size_t first = 0, last = 0; first < m; first = last)
   {
@@ -319,7 +273,17 @@ bool DropDuplicateTriangles(const CompactMesh& mesh, std::vector<std::uint8_t>& 
         static_cast<std::int64_t>(t[0]) + t[1] + t[2] - lowest - highest);
       run.push_back({ middle, highest, static_cast<std::int32_t>(last) });
     }
-    any |= run.size() <= ShortRun ? DropRepeatsByPairs(run, mesh, usable) : DropRepeatsBySort(run, mesh, usable);
+    std::sort(run.begin(), run.end(), [](const Entry& a, const Entry& b) {
+      return std::tie(a.Low, a.High, a.Triangle) < std::tie(b.Low, b.High, b.Triangle);
+    });
+    for (std::size_t k = 1; k < run.size(); ++k)
+    {
+      if (run[k].Low == run[k - 1].Low && run[k].High == run[k - 1].High)
+      {
+        usable[mesh.InputTriangle[run[k].Triangle]] = 0;
+        any = true;
+      }
+    }
   }
   return any;
 }
