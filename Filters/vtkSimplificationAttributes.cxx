@@ -356,15 +356,18 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
   vtkCellData* inCD = input->GetCellData();
   vtkCellData* outCD = output->GetCellData();
   outCD->CopyAllocate(inCD, numberOfTriangles);
-  // Each array's tuples in one call (a call per triangle costs VTK's dispatch over the arrays
-  // for every triangle, even where the input has no cell array).
-  vtkNew<vtkIdList> sources;
-  sources->SetNumberOfIds(numberOfTriangles);
-  for (vtkIdType i = 0; i < numberOfTriangles; ++i)
+  // Each array's tuples in one call: a call per triangle costs VTK's dispatch over the arrays
+  // for every triangle, even where the input has no cell array.
+  if (inCD->GetNumberOfArrays() > 0)
   {
-    sources->SetId(i, triangles.SourceCell(mesh.TriangleSource[i]));
+    vtkNew<vtkIdList> sources;
+    sources->SetNumberOfIds(numberOfTriangles);
+    for (vtkIdType i = 0; i < numberOfTriangles; ++i)
+    {
+      sources->SetId(i, triangles.SourceCell(mesh.TriangleSource[i]));
+    }
+    outCD->CopyData(inCD, sources.GetPointer(), vtkIdType{ 0 });
   }
-  outCD->CopyData(inCD, sources.GetPointer(), vtkIdType{ 0 });
   MapPointData(input->GetPointData(), mesh, output->GetPointData());
   FinishOutput(input, triangles, mesh, true, output);
 }
