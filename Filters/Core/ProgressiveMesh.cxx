@@ -104,7 +104,7 @@ private:
   void Collapse(std::int32_t x, std::int32_t y);
   void UpdateNormal(std::int32_t t);
   void ReleaseBuildState();
-  void WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence) const;
+  void WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence);
 
   const ProgressiveMeshOptions& Options;
   const ExecutionContext& Context;
@@ -685,15 +685,17 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
 
 void ProgressiveBuilder::ReleaseBuildState()
 {
-  // What only the build needed goes before the sequence is written, which lowers the peak.
+  // What only the build needed goes before the sequence is written, which lowers the peak;
+  // WriteSequence takes over NextCorner, Corners and Weights.
   const auto release = [](auto&... values) { (std::decay_t<decltype(values)>().swap(values), ...); };
-  release(this->Quadrics, this->Weights, this->Normals, this->NextCorner, this->Corners, this->Vertices, this->Extra,
-    this->P, this->Regions);
+  release(this->Quadrics, this->Normals, this->Vertices, this->Extra, this->P, this->Regions);
   this->Heap = CollapseHeap();
 }
 
-void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence) const
+void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, ProgressiveMesh& sequence)
 {
+  // The sequence's arrays reuse the build's buffers of the same type where their sizes allow:
+  // pages already mapped, where fresh ones cost more than writing them (see README, Large meshes).
   // Points: those never removed in vertex order, then the removed ones, last removed first.
   const std::int32_t n = static_cast<std::int32_t>(prepared.Mesh.InputVertex.size());
   const std::int32_t collapses = static_cast<std::int32_t>(this->Removed.size());
@@ -710,6 +712,7 @@ void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, Progressive
   sequence.BasePoints = base;
   sequence.InputPoint.resize(n);
   sequence.Parent.assign(n, -1);
+  sequence.Error = std::move(this->Weights);
   sequence.Error.assign(n, 0.0);
   for (std::int32_t v = 0; v < n; ++v)
   {
@@ -727,7 +730,8 @@ void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, Progressive
   const auto key = [&](std::size_t t) {
     return this->RemovedStep[t] < 0 ? 0 : static_cast<std::size_t>(collapses - this->RemovedStep[t]);
   };
-  std::vector<std::int32_t> start(static_cast<std::size_t>(collapses) + 2, 0), order(m);
+  std::vector<std::int32_t> start(static_cast<std::size_t>(collapses) + 2, 0), order = std::move(this->Corners);
+  order.resize(m);
   for (std::size_t t = 0; t < m; ++t)
   {
     ++start[key(t) + 1];
@@ -737,6 +741,7 @@ void ProgressiveBuilder::WriteSequence(const PreparedMesh& prepared, Progressive
   {
     order[start[key(t)]++] = static_cast<std::int32_t>(t);
   }
+  sequence.Triangles = std::move(this->NextCorner);
   sequence.Triangles.resize(3 * m);
   sequence.InputTriangle.resize(m);
   sequence.RemovedBy.resize(m);
