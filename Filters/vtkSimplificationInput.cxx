@@ -158,6 +158,7 @@ void TriangulateCells(vtkPolyData* input, vtkUnsignedCharArray* ghosts, vtkIdTyp
         continue;
       }
       cell->GetCurrentCell(size, ids);
+      out.NumberOfShortCells += size < 3;
       if (strips)
       {
         for (vtkIdType k = 0; k + 2 < size; ++k)
@@ -274,6 +275,13 @@ bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
   {
     vtkErrorWithObjectMacro(filter, << "Cannot simplify: " << problem << ".");
     return false;
+  }
+  if (triangles.NumberOfShortCells > 0)
+  {
+    const vtkIdType count = triangles.NumberOfShortCells;
+    vtkWarningWithObjectMacro(filter, << "Ignoring " << count
+                                      << (count == 1 ? " polygon or strip" : " polygons and strips")
+                                      << " of fewer than 3 points.");
   }
   const vtkIdType verts = triangles.NumberOfVerts, lines = triangles.NumberOfLines;
   if (verts + lines > 0)

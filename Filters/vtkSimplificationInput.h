@@ -34,6 +34,7 @@ struct TriangleInput
   std::vector<vtkIdType> SourceCells;  // input cell of each triangle, with Triangles
   vtkIdType FirstCell = 0;             // input cell of triangle 0 when viewed in place
   vtkIdType NumberOfVerts = 0, NumberOfLines = 0;
+  vtkIdType NumberOfShortCells = 0; // polygons and strips of fewer than 3 points: no triangle
   meshsimp::TriangleMeshView View;
   vtkIdType SourceCell(std::int64_t triangle) const
   {
@@ -58,8 +59,8 @@ vtkSmartPointer<vtkPolyData> AsSurface(vtkDataObject* data, std::string& problem
  * ExtractTriangles as every filter starts: false with a one-line error for an input it cannot
  * process. Point and cell data arrays shorter than the input's points or cells (copying them
  * would read past their ends) are left out, each named in a warning: input becomes a shallow
- * copy without them (the input itself is never changed). Dropped vertex and line cells are
- * named in a warning.
+ * copy without them (the input itself is never changed). Dropped vertex and line cells, and
+ * polygons and strips of fewer than 3 points, are counted in a warning.
  */
 bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input, TriangleInput& triangles);
 

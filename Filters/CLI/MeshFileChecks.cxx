@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshFileChecks.h"
 
+#include "XmlMarkupScan.h"
+
 #include "vtkBase64Utilities.h"
 #include "vtkNew.h"
 #include "vtkXMLDataElement.h"
@@ -11,9 +13,12 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cfloat>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +110,35 @@ std::vector<std::string> SplitBlanks(const std::string& line)
     words.push_back(line.substr(begin, at - begin));
   }
 }
+
+/// The largest magnitude among a file's finite vertex coordinates, for a reader that stores
+/// them as floats (VTK's PLY reader): beyond float's range they become infinite; below its
+/// normal range (FLT_MIN) they lose precision against the mesh's own size, to 0 at 1e-46.
+struct CoordinateScale
+{
+  double Largest = 0.0;
+
+  void Add(double value)
+  {
+    if (std::isfinite(value))
+    {
+      this->Largest = std::max(this->Largest, std::abs(value));
+    }
+  }
+
+  std::string Problem(const char* reader) const
+  {
+    if (this->Largest <= FLT_MAX && (this->Largest == 0.0 || this->Largest >= FLT_MIN))
+    {
+      return "";
+    }
+    char largest[32];
+    std::snprintf(largest, sizeof(largest), "%g", this->Largest);
+    return std::string("the largest vertex coordinate, ") + largest + ", is " +
+      (this->Largest > FLT_MAX ? "beyond" : "below") + " the single precision range " + reader +
+      " stores coordinates in";
+  }
+};
 
 // ----------------------------------------------------------------------------------------- PLY
 namespace ply
@@ -439,6 +473,21 @@ bool IsCornerList(const Element& element, const Property& property)
   return element.Name == "face" && property.Name == "vertex_indices";
 }
 
+bool IsCoordinate(const Element& element, const Property& property)
+{
+  return element.Name == "vertex" && !property.IsList() &&
+    (property.Name == "x" || property.Name == "y" || property.Name == "z");
+}
+
+/// Binary coordinates of a double type may leave the float range VTK's reader stores them in.
+bool HasDoubleCoordinates(const Element& element)
+{
+  return std::any_of(element.Properties.begin(), element.Properties.end(),
+    [&element](const Property& property) {
+      return IsCoordinate(element, property) && property.Item.Size == 8;
+    });
+}
+
 /// A list's length: an integer its type holds, at most 255 corners.
 std::string CheckListLength(long long length, const std::string& word, const Element& element, const Property& property)
 {
@@ -462,8 +511,8 @@ std::string ListLength(const std::string& word, const Element& element, const Pr
 }
 
 /// One ASCII record: enough words, numbers where numbers belong, corners naming vertices.
-std::string CheckAsciiRecord(
-  const std::vector<std::string>& words, const Element& element, long long vertices)
+std::string CheckAsciiRecord(const std::vector<std::string>& words, const Element& element,
+  long long vertices, CoordinateScale& scale)
 {
   std::size_t next = 0;
   for (const Property& property : element.Properties)
@@ -492,6 +541,10 @@ std::string CheckAsciiRecord(
       {
         return Quote(words[next]) + " is not a number";
       }
+      if (IsCoordinate(element, property))
+      {
+        scale.Add(std::strtod(words[next].c_str(), nullptr));
+      }
       if (IsCornerList(element, property) &&
         (!ParseInteger(words[next], corner) || corner < 0 || corner >= vertices))
       {
@@ -504,9 +557,12 @@ std::string CheckAsciiRecord(
 }
 
 /// The vertex and face records of an ASCII file, one line each; VTK's reader reads no further.
+/// Without other elements nothing but blank lines may follow the faces (more faces than the
+/// header declares would be lost).
 std::string CheckAsciiBody(std::istream& in, const Header& header)
 {
   const long long vertices = header.Elements[0].Count;
+  CoordinateScale scale;
   std::string line;
   for (std::size_t e = 0; e < 2; ++e)
   {
@@ -525,14 +581,22 @@ std::string CheckAsciiBody(std::istream& in, const Header& header)
       {
         return Record(element, record) + " is longer than 4000 characters";
       }
-      const std::string problem = CheckAsciiRecord(Words(line), element, vertices);
+      const std::string problem = CheckAsciiRecord(Words(line), element, vertices, scale);
       if (!problem.empty())
       {
         return Record(element, record) + ": " + problem;
       }
     }
   }
-  return "";
+  while (header.Elements.size() == 2 && std::getline(in, line))
+  {
+    if (!SplitBlanks(line).empty())
+    {
+      return "data follow the last of the " + std::to_string(header.Elements[1].Count) +
+        " faces the header declares";
+    }
+  }
+  return scale.Problem("VTK's PLY reader");
 }
 
 /// The bytes after the header, read in the file's byte order.
@@ -568,6 +632,33 @@ public:
   bool ReadInteger(const TypeFacts& type, long long& value)
   {
     const int size = type.Size;
+    std::uint64_t raw = 0;
+    if (!this->ReadBits(size, raw))
+    {
+      return false;
+    }
+    const bool negative = type.Signed && (raw >> (8 * size - 1)) != 0;
+    value = static_cast<long long>(raw) - (negative ? 1LL << (8 * size) : 0);
+    return true;
+  }
+
+  bool ReadDouble(double& value)
+  {
+    std::uint64_t raw = 0;
+    if (!this->ReadBits(8, raw))
+    {
+      return false;
+    }
+    std::memcpy(&value, &raw, 8);
+    return true;
+  }
+
+  std::uintmax_t Left() const { return this->Remaining; }
+
+private:
+  /// The next size bytes as an unsigned number in the file's byte order.
+  bool ReadBits(int size, std::uint64_t& raw)
+  {
     if (static_cast<std::uintmax_t>(size) > this->Remaining || !this->Have(size))
     {
       return false;
@@ -580,19 +671,14 @@ public:
     {
       std::reverse(bytes, bytes + size);
     }
-    std::uint64_t raw = 0;
+    raw = 0;
     for (int k = size - 1; k >= 0; --k)
     {
       raw = raw << 8 | bytes[k];
     }
-    const bool negative = type.Signed && (raw >> (8 * size - 1)) != 0;
-    value = static_cast<long long>(raw) - (negative ? 1LL << (8 * size) : 0);
     return true;
   }
 
-  std::uintmax_t Left() const { return this->Remaining; }
-
-private:
   /// Whether size bytes are buffered, reading the next block of the file when they are not.
   bool Have(std::size_t size)
   {
@@ -617,18 +703,25 @@ private:
   std::size_t At = 0, End = 0; // the buffered bytes not yet consumed: [At, End)
 };
 
-/// One binary record with lists: their lengths, and the corners naming vertices.
-std::string CheckBinaryRecord(BinaryReader& bytes, const Element& element, long long vertices)
+/// One binary record with lists or double coordinates: list lengths, the corners naming
+/// vertices, the coordinates' scale.
+std::string CheckBinaryRecord(
+  BinaryReader& bytes, const Element& element, long long vertices, CoordinateScale& scale)
 {
   for (const Property& property : element.Properties)
   {
     long long length = 0;
+    double coordinate = 0.0;
     if (!property.IsList())
     {
-      if (!bytes.Skip(property.Item.Size))
+      const bool read = IsCoordinate(element, property) && property.Item.Size == 8
+        ? bytes.ReadDouble(coordinate)
+        : bytes.Skip(property.Item.Size);
+      if (!read)
       {
         return "the file ends inside it";
       }
+      scale.Add(coordinate);
       continue;
     }
     if (!bytes.ReadInteger(property.Count, length))
@@ -667,12 +760,14 @@ std::string CheckBinaryRecord(BinaryReader& bytes, const Element& element, long 
   return "";
 }
 
-/// The vertex and face records of a binary file: records of scalars by their size, records
-/// with lists one by one.
+/// The vertex and face records of a binary file: records of floats and integers by their size,
+/// records with lists or double coordinates one by one. Without other elements the faces end the
+/// file.
 std::string CheckBinaryBody(std::istream& in, const Header& header, std::uintmax_t remaining)
 {
   BinaryReader bytes(in, header.Format == Encoding::BigEndian, remaining);
   const long long vertices = header.Elements[0].Count;
+  CoordinateScale scale;
   for (std::size_t e = 0; e < 2; ++e)
   {
     const Element& element = header.Elements[e];
@@ -683,7 +778,7 @@ std::string CheckBinaryBody(std::istream& in, const Header& header, std::uintmax
       stride += property.Item.Size;
       hasList = hasList || property.IsList();
     }
-    if (!hasList)
+    if (!hasList && !HasDoubleCoordinates(element))
     {
       const std::uintmax_t needed = stride * static_cast<std::uintmax_t>(element.Count);
       if (!bytes.Skip(needed))
@@ -695,14 +790,19 @@ std::string CheckBinaryBody(std::istream& in, const Header& header, std::uintmax
     }
     for (long long record = 0; record < element.Count; ++record)
     {
-      const std::string problem = CheckBinaryRecord(bytes, element, vertices);
+      const std::string problem = CheckBinaryRecord(bytes, element, vertices, scale);
       if (!problem.empty())
       {
         return Record(element, record) + ": " + problem;
       }
     }
   }
-  return "";
+  if (header.Elements.size() == 2 && bytes.Left() > 0)
+  {
+    return std::to_string(bytes.Left()) + " bytes follow the last of the " +
+      std::to_string(header.Elements[1].Count) + " faces the header declares";
+  }
+  return scale.Problem("VTK's PLY reader");
 }
 } // namespace ply
 
@@ -927,6 +1027,21 @@ std::string CheckElement(std::istream& in, std::string line, std::size_t argumen
   return "";
 }
 
+/// A vertex line's coordinates: vtkOBJReader reads nan and inf as other, finite numbers.
+std::string CheckCoordinates(const std::string& arguments)
+{
+  const std::vector<std::string> words = SplitBlanks(arguments);
+  for (std::size_t k = 0; k < std::min<std::size_t>(3, words.size()); ++k)
+  {
+    if (IsNumber(words[k]) && !std::isfinite(std::strtod(words[k].c_str(), nullptr)))
+    {
+      return "vertex coordinate " + Quote(words[k]) +
+        " is not a finite number (vtkOBJReader would read another number)";
+    }
+  }
+  return "";
+}
+
 /// The reader's second pass: vertices, normals and elements in order, every face corner
 /// checked; vertex and normal indices beyond those read so far, once all are read.
 std::string SecondPass(std::istream& in, Kinds& kinds)
@@ -940,14 +1055,18 @@ std::string SecondPass(std::istream& in, Kinds& kinds)
     kinds.Vertices.Read += command == "v";
     kinds.TextureCoordinates.Read += command == "vt";
     kinds.Normals.Read += command == "vn";
-    if (command == "f" || command == "l" || command == "p")
+    std::string problem;
+    if (command == "v")
     {
-      const std::string problem =
-        CheckElement(in, line, arguments, number, command == "f", kinds);
-      if (!problem.empty())
-      {
-        return "line " + std::to_string(first) + ": " + problem;
-      }
+      problem = CheckCoordinates(line.substr(arguments));
+    }
+    else if (command == "f" || command == "l" || command == "p")
+    {
+      problem = CheckElement(in, line, arguments, number, command == "f", kinds);
+    }
+    if (!problem.empty())
+    {
+      return "line " + std::to_string(first) + ": " + problem;
     }
   }
   for (const Entries* entries : { &kinds.Vertices, &kinds.Normals })
@@ -976,6 +1095,7 @@ struct XmlFile
   std::string Compressor; // empty: none
   std::int64_t AppendedPosition = -1;
   bool AppendedBase64 = false;
+  double Version = 0.0; // the VTKFile element's
 };
 
 /// Where an array's binary data are: a run of bytes, or of base64 characters, of some length.
@@ -1368,6 +1488,15 @@ std::string CheckCells(XmlFile& file, vtkXMLDataElement* cells, long long count)
     return ""; // nothing to read, or the reader reports the missing array
   }
   std::string problem = CheckArray(file, offsets, count);
+  std::uintmax_t values = 0;
+  if (problem.empty() && MeasureArray(file, offsets, values).empty() &&
+    values > static_cast<std::uintmax_t>(count))
+  {
+    // VTK 9.2 reads as many cells as the count says (file version 2's leading 0 included).
+    problem = "holds " + std::to_string(values) + " offsets for the " + std::to_string(count) +
+      " cells it declares" +
+      (file.Version >= 2 ? " (VTK 9.2 misreads the offsets of VTK files of version 2)" : "");
+  }
   long long last = -1;
   if (problem.empty() && ReadIntegerValue(file, offsets, count - 1, last) && last < 0)
   {
@@ -1433,6 +1562,7 @@ std::string ReadFileAttributes(XmlFile& file, vtkXMLDataElement* root, vtkXMLDat
     return "unknown compressor " + Quote(file.Compressor);
   }
   file.BigEndian = std::strcmp(order, "BigEndian") == 0;
+  file.Version = root->GetAttribute("version") ? std::atof(root->GetAttribute("version")) : 0.0;
   file.HeaderWord = header && std::strcmp(header, "UInt64") == 0 ? 8 : 4;
   vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData");
   const char* encoding = appended ? appended->GetAttribute("encoding") : nullptr;
@@ -1777,6 +1907,12 @@ std::string CheckOBJ(const std::string& path)
 
 std::string CheckVTP(const std::string& path)
 {
+  // The markup first, in a bounded pass: some files crash or stall any XML parser of VTK's.
+  const std::string markup = ScanXmlMarkup(path);
+  if (!markup.empty())
+  {
+    return markup;
+  }
   // VTK's XML parser reads the structure, alone: vtkXMLPolyDataReader's own first pass already
   // trusts the arrays (a field array without a type crashes it).
   std::ifstream stream(path, std::ios::binary);

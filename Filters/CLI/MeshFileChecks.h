@@ -29,21 +29,26 @@ namespace meshfiles
 /// ASCII and binary PLY: the header (a format line, element vertex with scalar x y z first,
 /// element face with a vertex_indices list of integers second, known types, end_header), then
 /// every vertex and face record: present, numbers where numbers belong, list lengths within
-/// their type and at most 255 corners, corner indices naming existing vertices.
+/// their type and at most 255 corners, corner indices naming existing vertices; coordinates
+/// within float's normal range (the reader stores floats: 1e300 would become infinite, a mesh
+/// of 1e-300 collapse to 0); without further elements, nothing after the declared faces (the
+/// reader would drop faces a short count leaves out).
 std::string CheckPLY(const std::string& path);
 
 /// STL, as VTK tells binary from ASCII: a binary file is 84 bytes plus 50 per triangle of its
 /// count; an ASCII one starts with "solid" and has facet and vertex lines.
 std::string CheckSTL(const std::string& path);
 
-/// OBJ: text without NUL bytes, lines and material names within vtkOBJReader's buffers, and
-/// every face corner (parsed as the reader parses it) naming an existing vertex, texture
-/// coordinate and normal.
+/// OBJ: text without NUL bytes, lines and material names within vtkOBJReader's buffers, finite
+/// vertex coordinates (the reader reads nan and inf as other numbers), and every face corner
+/// (parsed as the reader parses it) naming an existing vertex, texture coordinate and normal.
 std::string CheckOBJ(const std::string& path);
 
-/// VTK XML polydata (.vtp): structure read by VTK's XML parser, then every array of every piece:
-/// known type, format and compressor, a block header whose sizes fit the bytes that follow,
-/// and as many values as the piece's counts (or the last cell offset) make the reader expect.
+/// VTK XML polydata (.vtp): markup within XmlMarkupScan.h's limits, structure read by VTK's XML
+/// parser, then every array of every piece: known type, format and compressor, a block header
+/// whose sizes fit the bytes that follow, and as many values as the piece's counts (or the last
+/// cell offset) make the reader expect, and no more offsets than cells (the reader would drop the
+/// cells a short count leaves out).
 /// The last offset is only read from uncompressed arrays (zlib's checksum guards the rest).
 std::string CheckVTP(const std::string& path);
 

@@ -53,7 +53,7 @@ double ParseNumber(const std::string& option, const std::string& text)
   {
     std::size_t used = 0;
     const double value = std::stod(text, &used);
-    if (used == text.size())
+    if (used == text.size() && std::isfinite(value))
     {
       return value;
     }
@@ -61,7 +61,7 @@ double ParseNumber(const std::string& option, const std::string& text)
   catch (const std::exception&)
   {
   }
-  Fail("option " + option + " needs a number, not '" + text + "'");
+  Fail("option " + option + " needs a finite number, not '" + text + "'");
 }
 
 /// The --set names of each method's filter, and of every filter.
@@ -394,8 +394,23 @@ long long CountTriangles(vtkPolyData* mesh)
   return count;
 }
 
+/// A figure as a JSON value: its number, or null for a value JSON has no number for (NaN and
+/// the infinities), noted in notes as what it was.
+std::string JsonNumber(const char* key, double value, std::string& notes)
+{
+  char number[64];
+  std::snprintf(number, sizeof(number), "%.9g", value);
+  if (std::isfinite(value))
+  {
+    return number;
+  }
+  notes += std::string(notes.empty() ? "" : ", ") + "\"" + key + " is " + number + "\"";
+  return "null";
+}
+
 /// The run as one JSON object: counts, time, threads, and the figures of the output's field
-/// data (max_error in MaximumError's units where the method measures it).
+/// data (max_error in MaximumError's units where the method measures it); a figure that is not
+/// finite is null, and "notes" says what it was.
 void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilter* filter, double milliseconds)
 {
   const std::pair<const char*, const char*> figures[] = { { "max_error", "MaximumError" },
@@ -403,16 +418,15 @@ void PrintJson(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
     { "deviation_max", "DeviationMaximum" }, { "deviation_rms", "DeviationRMS" },
     { "joined_points", "JoinedPoints" } };
   vtkPolyData* result = filter->GetOutput();
-  std::string extra;
+  std::string extra, notes;
   for (const auto& [key, name] : figures)
   {
     if (vtkDataArray* array = result->GetFieldData()->GetArray(name))
     {
-      char number[64];
-      std::snprintf(number, sizeof(number), "%.9g", array->GetTuple1(0));
-      extra += std::string(", \"") + key + "\": " + number;
+      extra += std::string(", \"") + key + "\": " + JsonNumber(key, array->GetTuple1(0), notes);
     }
   }
+  extra += notes.empty() ? "" : ", \"notes\": [" + notes + "]";
   std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, "
               "\"time_ms\": %.3f, \"threads\": %d%s}\n",
     a.Method.c_str(), CountTriangles(mesh), static_cast<long long>(result->GetNumberOfPolys()), milliseconds,
@@ -459,6 +473,11 @@ int main(int argc, char* argv[])
   if (!mesh)
   {
     Fail(fileError);
+  }
+  if (CountTriangles(mesh) == 0)
+  {
+    Fail(arguments.Input + ": no triangle to simplify (" + std::to_string(mesh->GetNumberOfPoints()) +
+      " points, " + std::to_string(mesh->GetNumberOfCells()) + " cells, no polygon of 3 or more points)");
   }
   vtkSmartPointer<vtkMeshSimplificationFilter> filter = MakeFilter(arguments);
   filter->SetInputData(mesh);

@@ -155,6 +155,12 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
     }
     mesh.FaceOffsets.push_back(static_cast<std::int64_t>(mesh.FaceIds.size()));
   }
+  if (NextDataLine(in, line))
+  {
+    error = path + ": data follow the last of the " + std::to_string(numberOfFaces) +
+      " faces the counts line declares";
+    return false;
+  }
   return true;
 }
 

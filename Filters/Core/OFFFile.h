@@ -25,7 +25,8 @@ struct PolygonMesh
   std::vector<std::int64_t> FaceIds;
 };
 
-/// Returns false with a one-line message in error on failure.
+/// Returns false with a one-line message in error on failure, data after the declared faces
+/// included (a short count would drop faces).
 bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error);
 bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& error);
 

@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // meshsimplify on damaged mesh files of every format, written here at test time: each run must
 // exit with status 1 and one line "meshsimplify: cannot read '<file>': <reason>", never by a
-// signal. The same tetrahedron, undamaged, must be read in every format (the checks refuse no
-// sound file). Before the checks, the PLY files without faces and z, truncated or with a short
-// line, the OBJ naming missing texture coordinates, the STL, VTP and VTK declaring 2^31 - 1
-// entries, and field arrays of no or an unknown type in VTP and VTK crashed it; most others
-// gave no reason or pages of VTK messages.
+// signal, within 10 s. The same tetrahedron, undamaged, must be read in every format (the
+// checks refuse no sound file). Before the checks, the PLY files without faces and z, truncated
+// or with a short line, the OBJ naming missing texture coordinates, the STL, VTP and VTK
+// declaring 2^31 - 1 entries, field arrays of no or an unknown type in VTP and VTK, and a VTP
+// nested 20 000 deep crashed it; a VTP with a 2 MiB attribute took 0.6 s (20 MiB: 55 s); NaN
+// in OBJ, short face counts, PLY doubles beyond float's range and files without a triangle
+// gave a wrong mesh or an empty one with exit 0; most others gave no reason or pages of VTK
+// messages.
 //
 //   TestMeshSimplifyBadFiles <meshsimplify> <work directory>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <array>
@@ -239,6 +243,58 @@ std::string LegacyVTKWithField(const std::string& field)
   return sound.substr(0, points) + field + sound.substr(points);
 }
 
+/// The XML tetrahedron with extra markup after its PolyData element.
+std::string VTPWithMarkup(const std::string& markup)
+{
+  const std::string sound = VTP();
+  const std::size_t end = sound.find("</VTKFile>");
+  return sound.substr(0, end) + markup + sound.substr(end);
+}
+
+/// An ASCII PLY tetrahedron declaring faces faces (4 follow), of doubles scaled by scale.
+std::string DoublePLY(int faces, double scale)
+{
+  std::ostringstream ply;
+  ply << "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+         "property double z\nelement face "
+      << faces << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto& p : Points)
+  {
+    ply << p[0] * scale << " " << p[1] * scale << " " << p[2] * scale << "\n";
+  }
+  for (const auto& f : Faces)
+  {
+    ply << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+  }
+  return ply.str();
+}
+
+/// The binary PLY tetrahedron with its face count replaced.
+std::string BinaryPLYDeclaring(int faces)
+{
+  std::string ply = BinaryPLY(false);
+  return ply.replace(ply.find("element face 4"), 14, "element face " + std::to_string(faces));
+}
+
+/// The OBJ tetrahedron with one coordinate replaced by word.
+std::string OBJWithCoordinate(const std::string& word)
+{
+  std::string obj = OBJ();
+  return obj.replace(obj.find("v 0 1 0"), 7, "v 0 " + word + " 0");
+}
+
+/// Elements nested depth deep.
+std::string Nested(int depth)
+{
+  std::string open, close;
+  for (int k = 0; k < depth; ++k)
+  {
+    open += "<a>";
+    close += "</a>";
+  }
+  return open + close;
+}
+
 /// The XML tetrahedron with a FieldData element.
 std::string VTPWithField(const std::string& field)
 {
@@ -262,7 +318,11 @@ std::vector<Case> SoundFiles()
       LegacyVTKWithField("FIELD FieldData 1\nlines 1 3 int\n1 2 3\n") },
     { "sound_field.vtp",
       VTPWithField("      <DataArray type=\"Float64\" Name=\"x\" NumberOfTuples=\"1\" "
-                   "format=\"ascii\">1</DataArray>\n") } };
+                   "format=\"ascii\">1</DataArray>\n") },
+    { "sound_doubles.ply", DoublePLY(4, 1e-30) }, { "sound_blank_lines.ply", AsciiPLY() + "\n \n" },
+    { "sound_nested_and_comment.vtp",
+      VTPWithMarkup("<!-- " + std::string(1000, 'c') + " -->" + Nested(200)) },
+    { "sound_with_a_line.off", OFF().replace(4, 5, "4 5 0") + "2 0 1\n" } };
 }
 
 // ------------------------------------------------------------------------- damaged copies
@@ -335,6 +395,33 @@ std::vector<Case> DamagedFiles()
     { "empty.ply", "" },
     { "empty.stl", "" },
     { "empty.vtp", "" },
+    // Issue 50: what crashed, stalled or read silently wrong.
+    { "nested_20000.vtp", VTPWithMarkup(Nested(20000)) },
+    { "attribute_2mib.vtp", VTPWithMarkup("<a x=\"" + std::string(2 << 20, 'y') + "\"/>") },
+    { "comment_2mib.vtp", VTPWithMarkup("<!--" + std::string(2 << 20, 'y') + "-->") },
+    { "doctype.vtp", "<?xml version=\"1.0\"?>\n<!DOCTYPE VTKFile [<!ENTITY a \"b\">]>\n" + vtp.substr(22) },
+    { "more_offsets_than_cells.vtp", [] {
+        std::string vtp = VTP();
+        return vtp.replace(vtp.find("NumberOfPolys=\"4\""), 17, "NumberOfPolys=\"3\"");
+      }() },
+    { "nan.obj", OBJWithCoordinate("nan") },
+    { "inf.obj", OBJWithCoordinate("-inf") },
+    { "fewer_faces_declared.ply", DoublePLY(3, 1.0) },
+    { "fewer_faces_declared_binary.ply", BinaryPLYDeclaring(3) },
+    { "fewer_faces_declared.off", OFF().replace(4, 5, "4 3 0") },
+    { "doubles_beyond_float.ply", DoublePLY(4, 1e300) },
+    { "doubles_below_float.ply", DoublePLY(4, 1e-300) },
+  };
+}
+
+/// Inputs that read well but hold no triangle: one line, exit status 1.
+std::vector<Case> FilesWithoutTriangles()
+{
+  return {
+    { "no_faces_declared.ply", DoublePLY(0, 1.0).substr(0, DoublePLY(0, 1.0).find("3 0 2 1")) },
+    { "points_only.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n" },
+    { "lines_only.vtk", "# vtk DataFile Version 3.0\nlines\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+                        "0 0 0 1 0 0 0 1 0\nLINES 1 4\n3 0 1 2\n" },
   };
 }
 
@@ -352,6 +439,7 @@ int Run(const std::string& tool, const std::string& input, const std::string& ou
   const pid_t child = fork();
   if (child == 0)
   {
+    alarm(10); // any file is read or refused within 10 s
     const int file = open(errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(file, 2);
     const int null = open("/dev/null", O_WRONLY);
@@ -379,10 +467,24 @@ void ExpectRead(const std::string& tool, const std::string& directory, const Cas
   }
 }
 
-void ExpectOneLine(const std::string& tool, const std::string& directory, const std::string& name)
+/// A sound file read with warning among the messages.
+void ExpectWarning(const std::string& tool, const std::string& directory, const std::string& name,
+  const std::string& warning)
 {
   const std::string input = directory + "/" + name;
-  const std::string start = "meshsimplify: cannot read '" + input + "': ";
+  std::string errors;
+  const int status = Run(tool, input, directory + "/out.vtp", directory + "/stderr.txt", errors);
+  if (status != 0 || errors.find(warning) == std::string::npos)
+  {
+    Fail(name + ": exit " + std::to_string(status) + ", no warning '" + warning + "' in: " + errors);
+  }
+}
+
+void ExpectOneLine(const std::string& tool, const std::string& directory, const std::string& name,
+  const std::string& reason = "cannot read '")
+{
+  const std::string input = directory + "/" + name;
+  const std::string start = "meshsimplify: " + reason + input + (reason.empty() ? ": " : "': ");
   std::string errors;
   const int status = Run(tool, input, directory + "/out.vtp", directory + "/stderr.txt", errors);
   const bool oneLine = !errors.empty() && errors.find('\n') == errors.size() - 1;
@@ -411,6 +513,13 @@ int main(int argc, char* argv[])
     WriteFile(directory + "/" + damaged.Name, damaged.Bytes);
     ExpectOneLine(tool, directory, damaged.Name);
   }
+  for (const Case& empty : FilesWithoutTriangles())
+  {
+    WriteFile(directory + "/" + empty.Name, empty.Bytes);
+    ExpectOneLine(tool, directory, empty.Name, "");
+  }
+  ExpectWarning(tool, directory, "sound_with_a_line.off",
+    "meshsimplify: warning: Ignoring 1 polygon or strip of fewer than 3 points.\n");
   // A directory named like a mesh.
   mkdir((directory + "/directory.ply").c_str(), 0755);
   ExpectOneLine(tool, directory, "directory.ply");

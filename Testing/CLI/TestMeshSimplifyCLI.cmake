@@ -77,6 +77,32 @@ foreach (method IN ITEMS volume parallel)
   endif ()
 endforeach ()
 
+# Every JSON the tool prints parses: a 4 x 4 grid at 1e60 makes the volume error infinite,
+# which is null, with a note.
+set(grid "OFF\n25 32 0\n")
+foreach (i RANGE 4)
+  foreach (j RANGE 4)
+    math(EXPR height "(${i} * ${j}) % 3")
+    string(APPEND grid "${i}e60 ${j}e60 ${height}e60\n")
+  endforeach ()
+endforeach ()
+foreach (i RANGE 3)
+  foreach (j RANGE 3)
+    math(EXPR a "${i} * 5 + ${j}")
+    math(EXPR b "${a} + 1")
+    math(EXPR c "${a} + 6")
+    math(EXPR d "${a} + 5")
+    string(APPEND grid "3 ${a} ${b} ${c}\n3 ${a} ${c} ${d}\n")
+  endforeach ()
+endforeach ()
+file(WRITE "${OUTPUT}.huge.off" "${grid}")
+run_tool(--method volume --json "${OUTPUT}.huge.off" "${OUTPUT}")
+string(JSON type ERROR_VARIABLE json_error TYPE "${out}" square_volume_error)
+string(JSON note ERROR_VARIABLE note_error GET "${out}" notes 0)
+if (json_error OR note_error OR NOT type STREQUAL "NULL" OR NOT note STREQUAL "square_volume_error is inf")
+  message(FATAL_ERROR "JSON with a value that is not finite: ${out}")
+endif ()
+
 # A reduction outside [0, 1] is clamped by every filter, with a warning: 1.5 asks for no triangle.
 execute_process(COMMAND "${TOOL}" --method octree --reduction 1.5 --json "${INPUT}" "${OUTPUT}"
   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
