@@ -21,10 +21,21 @@
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include "WholeFile.h"
+
+#include <sys/mman.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace meshfiles
 {
@@ -138,24 +149,40 @@ bool Write(vtkPolyData* mesh, const std::string& path)
   return writer->Write() == 1;
 }
 
+/// As Write, through the Writer's output string: VTK's XML writer frees an invalid pointer
+/// when a write to its file fails, so it writes no file.
+template <typename Writer, void (*Configure)(Writer*) = NoSettings<Writer>>
+bool WriteThroughString(vtkPolyData* mesh, const std::string& path)
+{
+  vtkNew<Writer> writer;
+  writer->SetInputData(mesh);
+  writer->WriteToOutputStringOn();
+  Configure(writer);
+  std::ofstream out(path, std::ios::binary);
+  return writer->Write() == 1 && out << writer->GetOutputString() && out.flush();
+}
+
 /// A format by extension: the check of its files (none for OFF: our reader checks every
-/// line itself), its reader and its writer.
+/// line itself), its reader and its writer, and whether that writer writes whole files itself
+/// (ours does; VTK's are given memory to write to, see WriteThroughMemory).
 struct MeshFormat
 {
   const char* Extension;
   std::string (*Check)(const std::string& path);
   vtkSmartPointer<vtkAlgorithm> (*NewReader)(const std::string& path);
   bool (*Write)(vtkPolyData* mesh, const std::string& path);
+  bool WritesWholeFiles;
 };
 
 const MeshFormat Formats[] = {
-  { "off", nullptr, NewReader<vtkOFFReader>, Write<vtkOFFWriter> },
-  { "ply", CheckPLY, NewReader<vtkPLYReader>, Write<vtkPLYWriter, BinaryPLY> },
-  { "stl", CheckSTL, NewReader<vtkSTLReader>, Write<vtkSTLWriter, BinarySTL> },
-  { "obj", CheckOBJ, NewReader<vtkOBJReader>, Write<vtkOBJWriter> },
+  { "off", nullptr, NewReader<vtkOFFReader>, Write<vtkOFFWriter>, true },
+  { "ply", CheckPLY, NewReader<vtkPLYReader>, Write<vtkPLYWriter, BinaryPLY>, false },
+  { "stl", CheckSTL, NewReader<vtkSTLReader>, Write<vtkSTLWriter, BinarySTL>, false },
+  { "obj", CheckOBJ, NewReader<vtkOBJReader>, Write<vtkOBJWriter>, false },
   { "vtp", CheckVTP, NewReader<vtkXMLPolyDataReader>,
-    Write<vtkXMLPolyDataWriter, InlineBinaryVTP> },
-  { "vtk", CheckLegacyVTK, NewReader<vtkPolyDataReader>, Write<vtkPolyDataWriter> },
+    WriteThroughString<vtkXMLPolyDataWriter, InlineBinaryVTP>, false },
+  { "vtk", CheckLegacyVTK, NewReader<vtkPolyDataReader>, WriteThroughString<vtkPolyDataWriter>,
+    false },
 };
 const char* Extensions = "(.off .ply .stl .obj .vtp .vtk)";
 
@@ -293,6 +320,100 @@ vtkSmartPointer<vtkPolyData> RunReader(
   copy->ShallowCopy(output);
   return copy;
 }
+
+/// The bytes of a file descriptor from its start, copied to out; false when a read or a write
+/// fails.
+bool CopyBytes(int from, std::FILE* out)
+{
+  std::vector<char> buffer(1 << 20);
+  if (lseek(from, 0, SEEK_SET) != 0)
+  {
+    return false;
+  }
+  for (ssize_t got = 0; (got = read(from, buffer.data(), buffer.size())) != 0;)
+  {
+    if (got < 0 || std::fwrite(buffer.data(), 1, static_cast<std::size_t>(got), out) !=
+        static_cast<std::size_t>(got))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Why bytes written to a file may have been cut short ("" when not): the size reached the
+/// process's file size limit (ulimit -f), where writes fail with no error VTK would see.
+std::string SizeLimitReached(int file)
+{
+  struct stat status;
+  struct rlimit limit;
+  if (fstat(file, &status) != 0 || getrlimit(RLIMIT_FSIZE, &limit) != 0 ||
+    limit.rlim_cur == RLIM_INFINITY || static_cast<rlim_t>(status.st_size) < limit.rlim_cur)
+  {
+    return "";
+  }
+  return "the output reaches the file size limit of " + std::to_string(limit.rlim_cur) +
+    " bytes (ulimit -f)";
+}
+
+/// A file in memory (memfd), named for writers by a link "mesh.<extension>" in a private
+/// folder of the temporary directory (vtkPLYWriter adds ".ply" to a name without it).
+class MemoryFile
+{
+public:
+  explicit MemoryFile(const std::string& extension)
+    : Descriptor(memfd_create("meshsimplify-output", MFD_CLOEXEC))
+  {
+    const char* temporary = std::getenv("TMPDIR");
+    std::string folder = std::string(temporary && *temporary ? temporary : "/tmp") + "/meshsimplify-XXXXXX";
+    if (this->Descriptor >= 0 && mkdtemp(&folder[0]))
+    {
+      this->Folder = folder;
+      const std::string link = folder + "/mesh." + extension;
+      const std::string target = "/proc/self/fd/" + std::to_string(this->Descriptor);
+      this->Link = symlink(target.c_str(), link.c_str()) == 0 ? link : "";
+    }
+  }
+  ~MemoryFile()
+  {
+    unlink(this->Link.c_str());
+    rmdir(this->Folder.c_str());
+    close(this->Descriptor);
+  }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+
+  /// Its name for writers; "" when it could not be made (errno says why).
+  const std::string& Path() const { return this->Link; }
+  int Descriptor;
+
+private:
+  std::string Folder, Link;
+};
+
+/// VTK 9.2's writers check few of their writes (the PLY and OBJ writers none, and the XML
+/// writer frees an invalid pointer on a full disk), so each writes into memory, whose bytes
+/// then reach the disk through WriteWholeFile, every write checked.
+bool WriteThroughMemory(
+  const MeshFormat& format, vtkPolyData* mesh, const std::string& path, std::string& reason)
+{
+  MemoryFile memory(format.Extension);
+  if (memory.Path().empty())
+  {
+    reason = std::string("no file in memory to write to: ") + std::strerror(errno);
+    return false;
+  }
+  QuietVTK quiet;
+  const bool written = format.Write(mesh, memory.Path());
+  reason = SizeLimitReached(memory.Descriptor);
+  if (reason.empty() && (!written || !quiet.FirstMessage().empty()))
+  {
+    reason = quiet.FirstMessage().empty() ? "the writer failed" : quiet.FirstMessage();
+  }
+  return reason.empty() &&
+    meshsimp::WriteWholeFile(
+      path, [&memory](std::FILE* out) { return CopyBytes(memory.Descriptor, out); }, reason);
+}
 }
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
@@ -333,14 +454,28 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
     error = "cannot write '" + path + "': unknown extension " + Extensions;
     return false;
   }
-  QuietVTK quiet;
-  const bool written = format->Write(mesh, path);
-  if (written && quiet.FirstMessage().empty())
+  std::string reason;
+  if (!format->WritesWholeFiles)
   {
-    return true;
+    if (WriteThroughMemory(*format, mesh, path, reason))
+    {
+      return true;
+    }
   }
-  error = "cannot write '" + path + "': " +
-    (quiet.FirstMessage().empty() ? "the writer failed" : quiet.FirstMessage());
+  else
+  {
+    QuietVTK quiet;
+    if (format->Write(mesh, path) && quiet.FirstMessage().empty())
+    {
+      return true;
+    }
+    reason = quiet.FirstMessage().empty() ? "the writer failed" : quiet.FirstMessage();
+  }
+  if (reason.rfind("cannot write " + path + ": ", 0) == 0)
+  {
+    reason.erase(0, path.size() + 15); // our OFF writer names the file too
+  }
+  error = "cannot write '" + path + "': " + reason;
   return false;
 }
 

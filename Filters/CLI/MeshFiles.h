@@ -34,6 +34,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
 
 /// Writes mesh to path in the format of its extension (PLY and STL binary, VTP with inline
 /// binary data, OFF through vtkOFFWriter); false with "cannot write 'path': <reason>" in error.
+/// The file is whole or not there: written beside path and renamed over it (WholeFile.h), so a
+/// full disk leaves no partial file and an existing file untouched.
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
 
 } // namespace meshfiles

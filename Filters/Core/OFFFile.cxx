@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OFFFile.h"
 
+#include "WholeFile.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -164,14 +166,11 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
   return true;
 }
 
-bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& error)
+namespace
 {
-  std::FILE* out = std::fopen(path.c_str(), "w");
-  if (!out)
-  {
-    error = "cannot write " + path + ": " + std::strerror(errno);
-    return false;
-  }
+/// The mesh as OFF text; false when a write failed.
+bool WriteOFFText(std::FILE* out, const PolygonMesh& mesh)
+{
   const std::size_t faces = mesh.FaceOffsets.size() - 1;
   std::fprintf(out, "OFF\n%zu %zu 0\n", mesh.Points.size() / 3, faces);
   for (std::size_t i = 0; i < mesh.Points.size(); i += 3)
@@ -187,12 +186,19 @@ bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& err
     }
     std::fprintf(out, "\n");
   }
-  const bool ok = std::fclose(out) == 0;
-  if (!ok)
+  return !std::ferror(out);
+}
+}
+
+bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& error)
+{
+  std::string reason;
+  if (WriteWholeFile(path, [&mesh](std::FILE* out) { return WriteOFFText(out, mesh); }, reason))
   {
-    error = "error writing " + path + ": " + std::strerror(errno);
+    return true;
   }
-  return ok;
+  error = "cannot write " + path + ": " + reason;
+  return false;
 }
 
 } // namespace meshsimp

@@ -28,6 +28,7 @@ struct PolygonMesh
 /// Returns false with a one-line message in error on failure, data after the declared faces
 /// included (a short count would drop faces).
 bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error);
+/// Writes the whole file or none (WholeFile.h): false with a one-line message in error.
 bool WriteOFF(const std::string& path, const PolygonMesh& mesh, std::string& error);
 
 } // namespace meshsimp
