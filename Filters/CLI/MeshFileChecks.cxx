@@ -1780,7 +1780,14 @@ std::string CheckCountLine(Scan& scan, const std::vector<std::string>& words)
   const long long width = AttributeWidth(words, typeAt);
   if (keyword == "points")
   {
-    return Fits(scan, words, 1, 3, words.size() > 2 ? words[2] : "", count);
+    // vtkPolyDataReader crashes on points of a type it does not know (found by fuzzing).
+    const std::string type = words.size() > 2 ? Lower(words[2]) : "";
+    if (!IsType(type) || type == "bit" || type == "string" || type == "utf8_string" ||
+      type == "variant")
+    {
+      return "POINTS of type " + Quote(words.size() > 2 ? words[2] : "") + ", not a number type";
+    }
+    return Fits(scan, words, 1, 3, type, count);
   }
   if (IsCellSection(keyword))
   {
@@ -1973,6 +1980,10 @@ std::string CheckLegacyVTK(const std::string& path)
     {
       problem = "line " + std::to_string(number) + ": " + problem;
     }
+  }
+  if (problem.empty() && (scan.FieldArrays > 0 || scan.FieldValues > 0))
+  {
+    problem = "the file ends inside a FIELD block (vtkPolyDataReader crashes on it)";
   }
   return problem;
 }

@@ -411,6 +411,12 @@ std::vector<Case> DamagedFiles()
     { "fewer_faces_declared.off", OFF().replace(4, 5, "4 3 0") },
     { "doubles_beyond_float.ply", DoublePLY(4, 1e300) },
     { "doubles_below_float.ply", DoublePLY(4, 1e-300) },
+    // Found by fuzzing: vtkPolyDataReader crashed on both.
+    { "points_of_unknown_type.vtk", [] {
+        std::string vtk = LegacyVTK();
+        return vtk.replace(vtk.find("4 float"), 7, "4 floatFIELD");
+      }() },
+    { "field_block_cut_short.vtk", LegacyVTK().substr(0, LegacyVTK().find("POINTS")) + "FIELD FieldData 2\n" },
   };
 }
 
