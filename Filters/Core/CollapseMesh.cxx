@@ -268,7 +268,9 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->Scratch.Marks.assign(n, 0);
   this->Scratch.Stamp = 0;
   this->History.clear();
+  this->HistoryUndo.clear();
   this->Undone.clear();
+  this->UndoneUndo.clear();
   this->Changes.clear();
   this->RemovedTriangles.clear();
   this->AngleCosines.clear();
@@ -1105,6 +1107,7 @@ int CollapseMesh::Merge(
 int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
 {
   this->Undone.clear(); // a new collapse ends the replay of undone ones
+  this->UndoneUndo.clear();
   CollapseRecord record;
   const std::int32_t kept = plan.Vertices[0];
   record.Kept = kept;
@@ -1113,11 +1116,12 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
     record.Removed[i - 1] = plan.Vertices[i];
   }
   std::copy(plan.Weights, plan.Weights + 3, record.Weights);
-  record.KeptPosition = this->Points[kept];
-  record.NewPosition = plan.Position;
-  record.KeptClass = this->Classes[kept];
-  record.FirstChange = static_cast<std::int32_t>(this->Changes.size());
-  record.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
+  CollapseUndo undo;
+  undo.KeptPosition = this->Points[kept];
+  undo.NewPosition = plan.Position;
+  undo.KeptClass = this->Classes[kept];
+  undo.FirstChange = static_cast<std::int32_t>(this->Changes.size());
+  undo.FirstRemovedTriangle = static_cast<std::int32_t>(this->RemovedTriangles.size());
 
   std::int64_t dropped = 0;
   const int removed = this->Merge(plan, this->Span, keepUndo, dropped);
@@ -1130,15 +1134,18 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
     this->IndexSpan(plan.Vertices[i]);
   }
   this->SetSpan(kept, this->Span);
-  record.ChangeCount = static_cast<std::int32_t>(this->Changes.size()) / 2 - record.FirstChange / 2;
-  record.RemovedTriangleCount =
-    static_cast<std::int32_t>(this->RemovedTriangles.size()) - record.FirstRemovedTriangle;
-  if (!keepUndo)
-  {
-    record.FirstChange = record.ChangeCount = 0;
-    record.FirstRemovedTriangle = record.RemovedTriangleCount = 0;
-  }
+  undo.ChangeCount = static_cast<std::int32_t>(this->Changes.size()) / 2 - undo.FirstChange / 2;
+  undo.RemovedTriangleCount =
+    static_cast<std::int32_t>(this->RemovedTriangles.size()) - undo.FirstRemovedTriangle;
   this->History.push_back(record);
+  if (keepUndo)
+  {
+    this->HistoryUndo.push_back(undo);
+  }
+  else
+  {
+    this->HistoryUndo.clear(); // no undo reaches past this collapse
+  }
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {
     this->CompactRefs();
@@ -1226,6 +1233,8 @@ std::int64_t CollapseMesh::ApplyIndependent(
     this->IndexSpan(w);
   }
   this->Undone.clear();
+  this->UndoneUndo.clear();
+  this->HistoryUndo.clear(); // no undo reaches past a batch
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {
     this->CompactRefs(context);
@@ -1235,31 +1244,34 @@ std::int64_t CollapseMesh::ApplyIndependent(
 
 void CollapseMesh::Undo()
 {
-  if (this->History.empty())
+  if (this->HistoryUndo.empty())
   {
     return;
   }
   const CollapseRecord record = this->History.back();
+  const CollapseUndo undo = this->HistoryUndo.back();
   this->History.pop_back();
+  this->HistoryUndo.pop_back();
   this->Undone.push_back(record);
+  this->UndoneUndo.push_back(undo);
   const std::int32_t kept = record.Kept;
   // Candidates for the restored spans: the kept vertex's triangles and the revived ones.
   std::vector<std::int32_t> candidates;
   this->ForEachTriangle(kept, [&](std::int32_t t) { candidates.push_back(t); });
-  for (std::int32_t i = 0; i < record.RemovedTriangleCount; ++i)
+  for (std::int32_t i = 0; i < undo.RemovedTriangleCount; ++i)
   {
-    const std::int32_t t = this->RemovedTriangles[record.FirstRemovedTriangle + i];
+    const std::int32_t t = this->RemovedTriangles[undo.FirstRemovedTriangle + i];
     this->Alive[t] = 1;
     candidates.push_back(t);
   }
-  this->AliveCount += record.RemovedTriangleCount;
-  for (std::int32_t i = record.ChangeCount - 1; i >= 0; --i)
+  this->AliveCount += undo.RemovedTriangleCount;
+  for (std::int32_t i = undo.ChangeCount - 1; i >= 0; --i)
   {
-    const std::int32_t* change = this->Changes.data() + record.FirstChange + 2 * i;
+    const std::int32_t* change = this->Changes.data() + undo.FirstChange + 2 * i;
     this->Triangles[change[0]] = change[1];
   }
-  this->Points[kept] = record.KeptPosition;
-  this->Classes[kept] = record.KeptClass;
+  this->Points[kept] = undo.KeptPosition;
+  this->Classes[kept] = undo.KeptClass;
   for (const std::int32_t t : candidates)
   {
     this->MeasureAngles(t);
@@ -1283,9 +1295,9 @@ void CollapseMesh::Undo()
     this->SetSpan(v, span);
   }
   // The revived triangles' other corners may have lost them in a compaction.
-  for (std::int32_t i = 0; i < record.RemovedTriangleCount; ++i)
+  for (std::int32_t i = 0; i < undo.RemovedTriangleCount; ++i)
   {
-    const std::int32_t t = this->RemovedTriangles[record.FirstRemovedTriangle + i];
+    const std::int32_t t = this->RemovedTriangles[undo.FirstRemovedTriangle + i];
     for (int k = 0; k < 3; ++k)
     {
       const std::int32_t w = this->Triangles[3 * t + k];
@@ -1307,8 +1319,8 @@ void CollapseMesh::Undo()
       }
     }
   }
-  this->Changes.resize(record.FirstChange);
-  this->RemovedTriangles.resize(record.FirstRemovedTriangle);
+  this->Changes.resize(undo.FirstChange);
+  this->RemovedTriangles.resize(undo.FirstRemovedTriangle);
 }
 
 bool CollapseMesh::Redo()
@@ -1318,7 +1330,9 @@ bool CollapseMesh::Redo()
     return false;
   }
   const CollapseRecord record = this->Undone.back();
+  const CollapseUndo undo = this->UndoneUndo.back();
   this->Undone.pop_back();
+  this->UndoneUndo.pop_back();
   CollapsePlan plan;
   plan.Vertices[plan.Count++] = record.Kept;
   for (const std::int32_t removed : record.Removed)
@@ -1328,12 +1342,15 @@ bool CollapseMesh::Redo()
       plan.Vertices[plan.Count++] = removed;
     }
   }
-  plan.Position = record.NewPosition;
+  plan.Position = undo.NewPosition;
   std::copy(record.Weights, record.Weights + 3, plan.Weights);
   std::vector<CollapseRecord> undone;
+  std::vector<CollapseUndo> undoneUndo;
   undone.swap(this->Undone); // Apply starts a new branch; this replay continues the old one
+  undoneUndo.swap(this->UndoneUndo);
   this->Apply(plan);
   undone.swap(this->Undone);
+  undoneUndo.swap(this->UndoneUndo);
   return true;
 }
 

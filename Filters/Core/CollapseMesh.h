@@ -133,13 +133,19 @@ VertexClass ClassifyFan(
  */
 bool IsHinge(const Corner* first, const Corner* last, std::int32_t ends[2], FanWorkspace& work);
 
-/// One collapse: the kept vertex, the one or two merged into it, the attribute weights and what
-/// undoing it needs (spans into CollapseMesh's change and removed-triangle lists).
+/// One collapse: the kept vertex, the one or two merged into it, and the attribute weights
+/// (40 bytes: a decimation to 1 % keeps about one per input vertex).
 struct CollapseRecord
 {
   std::int32_t Kept = -1;
   std::int32_t Removed[2] = { -1, -1 };
   double Weights[3] = { 1.0, 0.0, 0.0 }; // kept, Removed[0], Removed[1]
+};
+
+/// What undoing a collapse needs besides its record: the kept vertex's position and class, and
+/// spans into CollapseMesh's change and removed-triangle lists.
+struct CollapseUndo
+{
   Eigen::Vector3d KeptPosition = Eigen::Vector3d::Zero(); // before the collapse
   Eigen::Vector3d NewPosition = Eigen::Vector3d::Zero();  // after it
   VertexClass KeptClass = VertexClass::Interior;          // before the collapse
@@ -349,15 +355,19 @@ public:
   /// One region id per vertex (see IsLegal), or none (empty, the default).
   void SetRegions(std::vector<std::int32_t> regions) { this->Regions = std::move(regions); }
 
+  /// Room for count records (a hint: the list grows past it as it must).
+  void ReserveRecords(std::int64_t count) { this->History.reserve(static_cast<std::size_t>(std::max<std::int64_t>(0, count))); }
+
   /**
    * Applies a legal plan and appends its record. Returns the number of triangles removed.
-   * With keepUndo false the record keeps only the attribute weights (no undo, less memory).
+   * With keepUndo false nothing is kept to undo it (less memory), and Undo stops there.
    */
   int Apply(const CollapsePlan& plan, bool keepUndo = true);
 
   /// Splits the vertex of the last record again: points, triangles, classes and adjacency are
   /// as before that collapse (adjacency spans may list triangles in another order). The record
-  /// moves to the redo list, so that the progressive mesh can be replayed both ways.
+  /// moves to the redo list, so that the progressive mesh can be replayed both ways. Nothing
+  /// happens when the last collapse kept no undo (Apply's keepUndo, ApplyIndependent).
   void Undo();
 
   /// Collapses again the last undone record (forward replay); false when none is left.
@@ -484,7 +494,9 @@ private:
   std::vector<std::int32_t> Regions;
 
   std::vector<CollapseRecord> History;
+  std::vector<CollapseUndo> HistoryUndo; // of the last HistoryUndo.size() records of History
   std::vector<CollapseRecord> Undone;
+  std::vector<CollapseUndo> UndoneUndo; // one per Undone record
   std::vector<std::int32_t> Changes;          // per change: corner (3 t + k), old vertex
   std::vector<std::int32_t> RemovedTriangles;
 

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace meshsimp
@@ -225,6 +226,9 @@ private:
   bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
   /// ": of the N half-edge collapses left, x % would ..." from RefusedBy, or empty.
   std::string RefusalSummary() const;
+  /// Frees what only the collapses need (quadrics, normals, input planes, the heap) before the
+  /// output is made, so that the two stages' memory does not add up.
+  void ReleaseWorkspace();
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
   /// The outcome: why it stopped where it did, and the angle guard's note.
   void Judge(VolumeCollapseResult& result) const;
@@ -237,7 +241,21 @@ private:
   double Diagonal = 1.0;                                 // 1 / Normalised.Scale
   std::vector<Vec3> Normals;
   std::vector<double> Areas;
-  std::vector<Quadric> TriangleQuadrics; // Q_i of eq. (4)
+  /// Q_i of eq. (4) is the plane of triangle i (its normal through its first corner) with a
+  /// weight: the weight is kept (8 bytes a triangle, not the quadric's 80) and the quadric
+  /// made when read. Its normal and corners are refreshed with it (UpdateGeometry and
+  /// UpdateQuadric together, around every collapse before any read), so it is the same.
+  std::vector<double> TriangleWeights;
+  Quadric TriangleQuadric(std::int32_t t) const
+  {
+    const double weight = this->TriangleWeights[t];
+    if (weight == 0.0)
+    {
+      return Quadric();
+    }
+    const Vec3& n = this->Normals[t];
+    return Quadric::FromPlane(n, -n.dot(this->Mesh.Point(this->Mesh.Triangle(t)[0])), weight);
+  }
   std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
   std::vector<Quadric> InputPlanes;      // input planes merged into each vertex (faces, borders)
   double SurfaceScale = 0.0;             // SurfaceErrorWeight · (mean input triangle area)²
@@ -328,7 +346,7 @@ void VolumeCollapser::UpdateVertex(std::int32_t v)
       angles += this->Angles[3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
     }
     area += this->Areas[t];
-    sum += this->TriangleQuadrics[t];
+    sum += this->TriangleQuadric(t);
   });
   this->VertexQuadrics[v] = sum;
   if (this->TracksCurvature)
@@ -366,11 +384,11 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
         }
         if (sign > 0.0)
         {
-          this->VertexQuadrics[c] += this->TriangleQuadrics[t];
+          this->VertexQuadrics[c] += this->TriangleQuadric(t);
         }
         else
         {
-          this->VertexQuadrics[c] -= this->TriangleQuadrics[t];
+          this->VertexQuadrics[c] -= this->TriangleQuadric(t);
         }
         if (this->TracksCurvature)
         {
@@ -388,7 +406,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
   const Vec3& n = this->Normals[t];
   if (!(area > 0.0) || n == Vec3::Zero())
   {
-    this->TriangleQuadrics[t] = Quadric();
+    this->TriangleWeights[t] = 0.0;
     return;
   }
   const std::int32_t* tri = this->Mesh.Triangle(t);
@@ -421,7 +439,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
       (this->VertexError[tri[0]] + this->VertexError[tri[1]] + this->VertexError[tri[2]]) / 3.0;
     weight *= 1.0 + accumulated / (area * area * area);
   }
-  this->TriangleQuadrics[t] = Quadric::FromPlane(n, -n.dot(this->Mesh.Point(tri[0])), weight);
+  this->TriangleWeights[t] = weight;
 }
 
 void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbours* across) const
@@ -432,17 +450,17 @@ void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbo
   q = this->VertexQuadrics[tri[0]];
   q += this->VertexQuadrics[tri[1]];
   q += this->VertexQuadrics[tri[2]];
-  q -= this->TriangleQuadrics[t];
-  q -= this->TriangleQuadrics[t];
+  q -= this->TriangleQuadric(t);
+  q -= this->TriangleQuadric(t);
   for (int k = 0; k < 3; ++k)
   {
     this->Mesh.ForEachTriangleOnEdge(tri[k], tri[(k + 1) % 3], [&](std::int32_t j) {
       if (j != t)
       {
-        q -= this->TriangleQuadrics[j];
+        q -= this->TriangleQuadric(j);
         if (across)
         {
-          across->Quadrics[k] += this->TriangleQuadrics[j];
+          across->Quadrics[k] += this->TriangleQuadric(j);
           ++across->Count[k];
         }
       }
@@ -552,7 +570,7 @@ MESHSIMP_RARE_PATH void VolumeCollapser::CheaperHingeEdge(std::int32_t t, int k,
   const std::int32_t ends[2] = { tri[k], tri[(k + 1) % 3] };
   Quadric q = this->VertexQuadrics[ends[0]];
   q += this->VertexQuadrics[ends[1]];
-  q -= this->TriangleQuadrics[t];
+  q -= this->TriangleQuadric(t);
   q -= across.Quadrics[k];
   double best = EdgeErrorShare * candidate.Cost;
   int kept = -1;
@@ -751,7 +769,7 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
   {
     Quadric q = this->VertexQuadrics[tri[k]];
     q += this->VertexQuadrics[tri[(k + 1) % 3]];
-    q -= this->TriangleQuadrics[t];
+    q -= this->TriangleQuadric(t);
     q -= across.Quadrics[k];
     const Vec3& pa = this->Mesh.Point(tri[k]);
     const Vec3& pb = this->Mesh.Point(tri[(k + 1) % 3]);
@@ -806,7 +824,7 @@ void VolumeCollapser::CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeigh
   const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
   Quadric q = this->VertexQuadrics[a];
   q += this->VertexQuadrics[b];
-  q -= this->TriangleQuadrics[t];
+  q -= this->TriangleQuadric(t);
   const double omega = SegmentMinimum(q, this->Mesh.Point(a), this->Mesh.Point(b));
   const Vec3 x = this->Mesh.Point(b) + omega * (this->Mesh.Point(a) - this->Mesh.Point(b));
   const double cost = q.Evaluate(x);
@@ -1112,6 +1130,9 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   }
   this->MeasureAll();
   this->QueueAll();
+  // At most a record per vertex removed, and a mesh of T triangles keeps about T / 2 vertices:
+  // reserved so that the list never doubles (which held 1.5 times its size at once).
+  this->Mesh.ReserveRecords(this->Mesh.NumberOfPoints() - prepared.TargetTriangles / 2);
   return prepared.TargetTriangles;
 }
 
@@ -1125,7 +1146,7 @@ void VolumeCollapser::MeasureAll()
   this->Areas.resize(m);
   this->TracksCurvature = this->Options.FeatureCurvature > 0.0;
   this->Angles.resize(this->TracksCurvature ? 3 * static_cast<std::size_t>(m) : 0);
-  this->TriangleQuadrics.resize(m);
+  this->TriangleWeights.resize(m);
   this->VertexQuadrics.resize(n);
   this->VertexError.assign(n, 0.0);
   this->Moved.assign(n, 0);
@@ -1556,9 +1577,30 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
     result.Report.Stop = StopReason::Aborted;
     return false;
   }
+  this->ReleaseWorkspace();
   this->Output(input, result);
   this->Judge(result);
   return this->Context.Report(1.0);
+}
+
+void VolumeCollapser::ReleaseWorkspace()
+{
+  const auto release = [](auto& list) { std::decay_t<decltype(list)>().swap(list); };
+  release(this->Normals);
+  release(this->Areas);
+  release(this->TriangleWeights);
+  release(this->VertexQuadrics);
+  release(this->InputPlanes);
+  release(this->Angles);
+  release(this->Deficit);
+  release(this->VertexArea);
+  release(this->VertexMarks);
+  release(this->Scratches);
+  release(this->Batch);
+  release(this->Passed);
+  release(this->RefreshTriangles);
+  release(this->RefreshKeys);
+  this->Heap.Reset(0);
 }
 
 } // namespace
