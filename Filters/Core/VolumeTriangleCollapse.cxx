@@ -115,8 +115,7 @@ private:
     }
   }
 
-  /// The corner angles of t, for the feature rule (only where TracksCurvature).
-  void UpdateAngles(std::int32_t t);
+  void UpdateGeometry(std::int32_t t);
   /// SurfaceErrorWeight's term of the heap key: the new point's weighted squared distance to
   /// the input planes merged into the plan's vertices.
   double SurfaceError(const CollapsePlan& plan) const;
@@ -240,10 +239,12 @@ private:
   std::vector<std::int32_t> InputVertex, InputTriangle; // compact → input ids
   Frame Normalised;                                      // the centred box of diagonal 1
   double Diagonal = 1.0;                                 // 1 / Normalised.Scale
+  std::vector<Vec3> Normals;
+  std::vector<double> Areas;
   /// Q_i of eq. (4) is the plane of triangle i (its normal through its first corner) with a
   /// weight: the weight is kept (8 bytes a triangle, not the quadric's 80) and the quadric
-  /// made when read. The weight is refreshed around every collapse (UpdateQuadric) before any
-  /// read, and the normal and corners change only there, so it is the quadric it was.
+  /// made when read. Its normal and corners are refreshed with it (UpdateGeometry and
+  /// UpdateQuadric together, around every collapse before any read), so it is the same.
   std::vector<double> TriangleWeights;
   Quadric TriangleQuadric(std::int32_t t) const
   {
@@ -252,25 +253,9 @@ private:
     {
       return Quadric();
     }
-    const Vec3 n = this->Normal(t);
+    const Vec3& n = this->Normals[t];
     return Quadric::FromPlane(n, -n.dot(this->Mesh.Point(this->Mesh.Triangle(t)[0])), weight);
   }
-  /// The cross product of t's edges from its first corner, whose direction is its normal and
-  /// whose length twice its area: computed when read (they change only with its corners), not
-  /// kept (32 bytes a triangle).
-  Vec3 Cross(std::int32_t t) const
-  {
-    const std::int32_t* tri = this->Mesh.Triangle(t);
-    const Vec3& p = this->Mesh.Point(tri[0]);
-    return (this->Mesh.Point(tri[1]) - p).cross(this->Mesh.Point(tri[2]) - p);
-  }
-  Vec3 Normal(std::int32_t t) const
-  {
-    const Vec3 cross = this->Cross(t);
-    const double length = cross.norm();
-    return length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
-  }
-  double Area(std::int32_t t) const { return 0.5 * this->Cross(t).norm(); }
   std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
   std::vector<Quadric> InputPlanes;      // input planes merged into each vertex (faces, borders)
   double SurfaceScale = 0.0;             // SurfaceErrorWeight · (mean input triangle area)²
@@ -316,11 +301,18 @@ private:
   std::vector<double> RefreshKeys;
 };
 
-void VolumeCollapser::UpdateAngles(std::int32_t t)
+void VolumeCollapser::UpdateGeometry(std::int32_t t)
 {
   const std::int32_t* tri = this->Mesh.Triangle(t);
   const Vec3* p[3] = { &this->Mesh.Point(tri[0]), &this->Mesh.Point(tri[1]), &this->Mesh.Point(tri[2]) };
-  const double length = (*p[1] - *p[0]).cross(*p[2] - *p[0]).norm();
+  const Vec3 cross = (*p[1] - *p[0]).cross(*p[2] - *p[0]);
+  const double length = cross.norm();
+  this->Normals[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
+  this->Areas[t] = 0.5 * length;
+  if (!this->TracksCurvature)
+  {
+    return;
+  }
   // Two corner angles measured, the third from their sum: atan2 of |e1 × e2| = 2S and e1 · e2.
   double* angles = this->Angles.data() + 3 * static_cast<std::size_t>(t);
   angles[0] = std::atan2(length, (*p[1] - *p[0]).dot(*p[2] - *p[0]));
@@ -353,7 +345,7 @@ void VolumeCollapser::UpdateVertex(std::int32_t v)
       const std::int32_t* tri = this->Mesh.Triangle(t);
       angles += this->Angles[3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
     }
-    area += this->Area(t);
+    area += this->Areas[t];
     sum += this->TriangleQuadric(t);
   });
   this->VertexQuadrics[v] = sum;
@@ -402,7 +394,7 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
         {
           this->Deficit[c] -= sign * this->Angles[3 * t + k];
         }
-        this->VertexArea[c] += sign * this->Area(t);
+        this->VertexArea[c] += sign * this->Areas[t];
       }
     });
   }
@@ -410,8 +402,8 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
 
 void VolumeCollapser::UpdateQuadric(std::int32_t t)
 {
-  const double area = this->Area(t);
-  const Vec3 n = this->Normal(t);
+  const double area = this->Areas[t];
+  const Vec3& n = this->Normals[t];
   if (!(area > 0.0) || n == Vec3::Zero())
   {
     this->TriangleWeights[t] = 0.0;
@@ -434,7 +426,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
     this->ForEachAdjacent(t, [&](std::int32_t j) {
       if (j != t)
       {
-        sum += 0.5 * (1.0 - std::abs(n.dot(this->Normal(j))));
+        sum += 0.5 * (1.0 - std::abs(n.dot(this->Normals[j])));
         ++count;
       }
     });
@@ -948,10 +940,7 @@ void VolumeCollapser::RefreshAround(
   const std::uint32_t mark = ++scratch.Stamp;
   scratch.Ring.clear();
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) {
-    if (this->TracksCurvature)
-    {
-      this->UpdateAngles(t);
-    }
+    this->UpdateGeometry(t);
     const std::int32_t* tri = this->Mesh.Triangle(t);
     for (int k = 0; k < 3; ++k)
     {
@@ -1153,6 +1142,8 @@ void VolumeCollapser::MeasureAll()
   // surface term: concurrently, with work estimates in nanoseconds (ExecutionContext), measured.
   const std::int32_t n = this->Mesh.NumberOfPoints();
   const std::int32_t m = this->Mesh.NumberOfTriangles();
+  this->Normals.resize(m);
+  this->Areas.resize(m);
   this->TracksCurvature = this->Options.FeatureCurvature > 0.0;
   this->Angles.resize(this->TracksCurvature ? 3 * static_cast<std::size_t>(m) : 0);
   this->TriangleWeights.resize(m);
@@ -1164,10 +1155,10 @@ void VolumeCollapser::MeasureAll()
   this->VertexMarks.assign(n, 0);
   this->BatchLimit =
     std::max<std::int64_t>(1, std::min<std::int64_t>(this->Options.BatchSize, m / BatchShare));
-  this->Context.For(this->TracksCurvature ? m : 0, [&](std::int64_t b, std::int64_t e) {
+  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
-      this->UpdateAngles(static_cast<std::int32_t>(t));
+      this->UpdateGeometry(static_cast<std::int32_t>(t));
     }
   }, 150 * static_cast<std::int64_t>(m));
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
@@ -1186,9 +1177,9 @@ void VolumeCollapser::MeasureAll()
   {
     this->HasFans = this->Mesh.NumberOfTrianglesAround(v) > FanLimit;
   }
-  for (std::int32_t t = 0; t < m; ++t)
+  for (const double a : this->Areas)
   {
-    this->TotalArea += this->Area(t);
+    this->TotalArea += a;
   }
   if (this->Options.SurfaceErrorWeight > 0.0)
   {
@@ -1207,12 +1198,11 @@ void VolumeCollapser::GatherInputPlanes()
   this->InputPlanes.assign(this->Mesh.NumberOfPoints(), Quadric());
   for (std::int32_t t = 0; t < m; ++t)
   {
-    const double area = this->Area(t);
-    if (area > 0.0)
+    if (this->Areas[t] > 0.0)
     {
-      const Vec3 normal = this->Normal(t);
+      const Vec3& normal = this->Normals[t];
       const std::int32_t* tri = this->Mesh.Triangle(t);
-      const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), area);
+      const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), this->Areas[t]);
       for (int k = 0; k < 3; ++k)
       {
         this->InputPlanes[tri[k]] += plane;
@@ -1238,7 +1228,7 @@ void VolumeCollapser::AddBorderPlanes(std::int32_t t)
     int sharing = 0;
     this->Mesh.ForEachTriangleOnEdge(a, b, [&sharing](std::int32_t) { ++sharing; });
     Quadric border;
-    if (sharing == 1 && Quadric::FromBorderEdge(this->Mesh.Point(a), this->Mesh.Point(b), this->Normal(t), border))
+    if (sharing == 1 && Quadric::FromBorderEdge(this->Mesh.Point(a), this->Mesh.Point(b), this->Normals[t], border))
     {
       this->InputPlanes[a] += border;
       this->InputPlanes[b] += border;
@@ -1596,6 +1586,8 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
 void VolumeCollapser::ReleaseWorkspace()
 {
   const auto release = [](auto& list) { std::decay_t<decltype(list)>().swap(list); };
+  release(this->Normals);
+  release(this->Areas);
   release(this->TriangleWeights);
   release(this->VertexQuadrics);
   release(this->InputPlanes);
