@@ -161,49 +161,49 @@ bool Same(const meshsimp::SimplifiedMesh& a, const meshsimp::SimplifiedMesh& b)
     a.SourceWeights == b.SourceWeights;
 }
 
-/// One algorithm's output on the mesh with the given context.
-template <typename Options>
-meshsimp::SimplifiedMesh Run(int algorithm, const Options& shared, const FuzzMesh& mesh,
+/// A core algorithm's output, with the shared options and its own defaults.
+template <typename Options, typename Result>
+meshsimp::SimplifiedMesh RunCore(bool (*core)(const meshsimp::TriangleMeshView&, const Options&,
+                                   Result&, const meshsimp::ExecutionContext&),
+  const meshsimp::SimplificationOptions& shared, const meshsimp::TriangleMeshView& view,
   const meshsimp::ExecutionContext& context)
+{
+  Options options;
+  static_cast<meshsimp::SimplificationOptions&>(options) = shared;
+  Result result;
+  core(view, options, result, context);
+  return result;
+}
+
+/// Progressive Mesh's level for the target, its sequence validated.
+meshsimp::SimplifiedMesh RunProgressive(const meshsimp::SimplificationOptions& shared,
+  const meshsimp::TriangleMeshView& view, const meshsimp::ExecutionContext& context)
+{
+  meshsimp::ProgressiveMeshOptions options;
+  static_cast<meshsimp::SimplificationOptions&>(options) = shared;
+  meshsimp::ProgressiveMesh sequence;
+  meshsimp::BuildProgressiveMesh(view, options, sequence, context);
+  Require(sequence.Validate(view.NumberOfPoints).empty(), "the progressive sequence is not valid");
+  meshsimp::SimplifiedMesh level;
+  meshsimp::ExtractTarget(sequence, shared.Goal, view, level);
+  return level;
+}
+
+/// One algorithm's output on the mesh with the given context.
+meshsimp::SimplifiedMesh Run(int algorithm, const meshsimp::SimplificationOptions& shared,
+  const FuzzMesh& mesh, const meshsimp::ExecutionContext& context)
 {
   const meshsimp::TriangleMeshView view = mesh.View();
   switch (algorithm)
   {
     case 0:
-    {
-      meshsimp::OctreeClusteringOptions options;
-      static_cast<meshsimp::SimplificationOptions&>(options) = shared;
-      meshsimp::OctreeClusteringResult result;
-      meshsimp::OctreeVertexClustering(view, options, result, context);
-      return result;
-    }
+      return RunCore(meshsimp::OctreeVertexClustering, shared, view, context);
     case 1:
-    {
-      meshsimp::VolumeCollapseOptions options;
-      static_cast<meshsimp::SimplificationOptions&>(options) = shared;
-      meshsimp::VolumeCollapseResult result;
-      meshsimp::VolumeTriangleCollapse(view, options, result, context);
-      return result;
-    }
+      return RunCore(meshsimp::VolumeTriangleCollapse, shared, view, context);
     case 2:
-    {
-      meshsimp::ParallelDecimationOptions options;
-      static_cast<meshsimp::SimplificationOptions&>(options) = shared;
-      meshsimp::ParallelDecimationResult result;
-      meshsimp::ParallelDecimation(view, options, result, context);
-      return result;
-    }
+      return RunCore(meshsimp::ParallelDecimation, shared, view, context);
     default:
-    {
-      meshsimp::ProgressiveMeshOptions options;
-      static_cast<meshsimp::SimplificationOptions&>(options) = shared;
-      meshsimp::ProgressiveMesh sequence;
-      meshsimp::BuildProgressiveMesh(view, options, sequence, context);
-      Require(sequence.Validate(view.NumberOfPoints).empty(), "the progressive sequence is not valid");
-      meshsimp::SimplifiedMesh level;
-      meshsimp::ExtractTarget(sequence, shared.Goal, view, level);
-      return level;
-    }
+      return RunProgressive(shared, view, context);
   }
 }
 }
