@@ -2,7 +2,8 @@
 // A plain main for a fuzz target (LLVMFuzzerTestOneInput), for compilers without libFuzzer and
 // for CI, where a run must be the same every time: every file of the given folders is run as it
 // is (the seeds, and the inputs that ever failed), then a fixed count of inputs, each a file
-// (or random bytes) changed by one to four mutations drawn from a fixed seed. A failure aborts
+// (one in four, and all without files: random bytes) changed by one to four mutations drawn
+// from a fixed seed. A failure aborts
 // the process (the target's check, or a sanitizer's finding); with --keep FILE each input is
 // written to FILE before it runs, so the one that failed is left there.
 //
@@ -148,7 +149,7 @@ int main(int argc, char* argv[])
   for (long long run = 0; run < runs; ++run)
   {
     Input input;
-    if (corpus.empty())
+    if (corpus.empty() || random() % 4 == 0)
     {
       input.resize(1 + random() % 1024);
       std::generate(input.begin(), input.end(), [&random] { return static_cast<std::uint8_t>(random()); });
