@@ -18,6 +18,7 @@ constexpr MeshSimplificationQuickLaunchAlias MeshSimplificationQuickLaunchAliase
   { "Mesh Simplification: Octree Vertex Clustering (simplify, decimate)", "OctreeVertexClustering" },
   { "Mesh Simplification: Volume Triangle Collapse (simplify, decimate)", "VolumeTriangleCollapse" },
   { "Mesh Simplification: Parallel Decimation (simplify, decimate)", "ParallelDecimation" },
+  { "Mesh Simplification: Progressive Mesh (simplify, decimate, level of detail)", "ProgressiveMesh" },
 };
 
 #endif

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The filters' quick-launch entries in ParaView's own quick-launch dialog (pqQuickLaunchDialog):
-// typing "simplify", "simplification" or "decimate" lists all three, and the labels alone
+// typing "simplify", "simplification" or "decimate" lists every filter, and the labels alone
 // (what 5.11 matches without the entries) list none of them for "simplify".
 #include "MeshSimplificationQuickLaunchAliases.h"
 
@@ -51,7 +51,7 @@ int main(int argc, char* argv[])
   {
     const QStringList listed = Search(aliases, query);
     std::printf("'%s' -> %s\n", query, qPrintable(listed.join(" | ")));
-    failures += listed.size() == 3 ? 0 : 1;
+    failures += listed.size() == aliases.size() ? 0 : 1;
   }
   failures += Search(labels, "simplify").isEmpty() ? 0 : 1;
   std::printf("%d failed\n", failures);

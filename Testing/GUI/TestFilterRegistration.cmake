@@ -1,0 +1,26 @@
+# Every filter of the plugin (a proxy on the common base MeshSimplificationFilter) is in the
+# Filters > Mesh Simplification menu and has a quick-launch entry: Progressive Mesh had neither
+# (issue 45). Run with -DPLUGIN_DIR=<the Plugin folder>.
+file(GLOB xmls "${PLUGIN_DIR}/*.xml")
+file(READ "${PLUGIN_DIR}/MeshSimplificationQuickLaunchAliases.h" aliases)
+set(filters "")
+foreach (xml IN LISTS xmls)
+  file(READ "${xml}" text)
+  string(REGEX MATCHALL "<SourceProxy name=\"[A-Za-z]+\"[^>]*base_proxyname=\"MeshSimplificationFilter\""
+    proxies "${text}")
+  foreach (proxy IN LISTS proxies)
+    string(REGEX REPLACE "<SourceProxy name=\"([A-Za-z]+)\".*" "\\1" name "${proxy}")
+    list(APPEND filters "${name}")
+    if (NOT text MATCHES "<ShowInMenu category=\"Mesh Simplification\"/>")
+      message(FATAL_ERROR "${name} is not in the Mesh Simplification menu (${xml})")
+    endif ()
+    if (NOT aliases MATCHES "\"${name}\" }")
+      message(FATAL_ERROR "${name} has no quick-launch entry")
+    endif ()
+  endforeach ()
+endforeach ()
+list(LENGTH filters count)
+if (count LESS 4)
+  message(FATAL_ERROR "only ${count} filters found: ${filters}")
+endif ()
+message(STATUS "in the menu and quick launch: ${filters}")
