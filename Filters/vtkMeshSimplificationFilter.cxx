@@ -20,6 +20,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -164,9 +165,10 @@ std::string Format(double value)
 vtkMeshSimplificationFilter::vtkMeshSimplificationFilter() = default;
 vtkMeshSimplificationFilter::~vtkMeshSimplificationFilter() = default;
 
+// The targets are clamped as vtkSetClampMacro would (NaN passes, for CheckTarget's error), the
+// value asked for remembered for CheckTarget's warning.
 void vtkMeshSimplificationFilter::SetTargetReduction(double reduction)
 {
-  // Clamped as vtkSetClampMacro would, remembering the value asked for (see CheckTarget).
   const double clamped = reduction < 0.0 ? 0.0 : reduction > 1.0 ? 1.0 : reduction;
   if (reduction == this->RequestedReduction && clamped == this->TargetReduction)
   {
@@ -174,6 +176,28 @@ void vtkMeshSimplificationFilter::SetTargetReduction(double reduction)
   }
   this->RequestedReduction = reduction;
   this->TargetReduction = clamped;
+  this->Modified();
+}
+
+void vtkMeshSimplificationFilter::SetTargetTriangleCount(vtkIdType count)
+{
+  if (count == this->RequestedTriangleCount)
+  {
+    return;
+  }
+  this->RequestedTriangleCount = count;
+  this->TargetTriangleCount = std::max<vtkIdType>(0, count);
+  this->Modified();
+}
+
+void vtkMeshSimplificationFilter::SetMaximumError(double bound)
+{
+  if (bound == this->RequestedMaximumError)
+  {
+    return;
+  }
+  this->RequestedMaximumError = bound;
+  this->MaximumError = bound < 0.0 ? 0.0 : bound;
   this->Modified();
 }
 
@@ -214,19 +238,38 @@ int vtkMeshSimplificationFilter::FillOutputPortInformation(int, vtkInformation* 
 
 bool vtkMeshSimplificationFilter::CheckTarget()
 {
-  // One line for a target that is not a number (vtkSetClampMacro lets NaN through), and a
-  // warning for a reduction outside [0, 1] that was clamped.
-  const bool bounded = this->TargetMode == TARGET_MAXIMUM_ERROR;
-  const char* name = bounded ? "MaximumError" : "TargetReduction";
-  if ((bounded && std::isnan(this->MaximumError)) || (this->TargetMode == TARGET_REDUCTION && std::isnan(this->TargetReduction)))
+  // One line for a target that is not a number, and a warning for one that was clamped: the
+  // target of the mode in force, with the value asked for and the value used.
+  const struct
   {
-    vtkErrorMacro(<< "Cannot simplify: " << name << " is not a number.");
-    return false;
-  }
-  if (this->TargetMode == TARGET_REDUCTION && this->RequestedReduction != this->TargetReduction)
+    int Mode;
+    const char* Name;
+    double Requested, Used;
+    const char* Range;
+  } targets[] = {
+    { TARGET_REDUCTION, "TargetReduction", this->RequestedReduction, this->TargetReduction,
+      "outside [0, 1]" },
+    { TARGET_TRIANGLE_COUNT, "TargetTriangleCount", static_cast<double>(this->RequestedTriangleCount),
+      static_cast<double>(this->TargetTriangleCount), "below 0" },
+    { TARGET_MAXIMUM_ERROR, "MaximumError", this->RequestedMaximumError, this->MaximumError,
+      "below 0" },
+  };
+  for (const auto& target : targets)
   {
-    vtkWarningMacro(<< "TargetReduction " << Format(this->RequestedReduction) << " is outside [0, 1]: "
-                    << Format(this->TargetReduction) << " is used.");
+    if (target.Mode != this->TargetMode)
+    {
+      continue;
+    }
+    if (std::isnan(target.Used))
+    {
+      vtkErrorMacro(<< "Cannot simplify: " << target.Name << " is not a number.");
+      return false;
+    }
+    if (target.Requested != target.Used)
+    {
+      vtkWarningMacro(<< target.Name << " " << Format(target.Requested) << " is " << target.Range
+                      << ": " << Format(target.Used) << " is used.");
+    }
   }
   return true;
 }

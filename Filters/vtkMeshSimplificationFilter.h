@@ -103,9 +103,9 @@ public:
   /**
    * The number of triangles to keep in TargetTriangleCount mode (default 1000), over the whole
    * input: the blocks of a composite input and the pieces of a distributed one share it out by
-   * their triangles.
+   * their triangles. A negative count is clamped to 0, and the execution warns that it was.
    */
-  vtkSetClampMacro(TargetTriangleCount, vtkIdType, 0, VTK_ID_MAX);
+  void SetTargetTriangleCount(vtkIdType count);
   vtkGetMacro(TargetTriangleCount, vtkIdType);
   ///@}
 
@@ -113,9 +113,10 @@ public:
   /**
    * The error bound of MaximumError mode (default 0.01): what it bounds is the algorithm's
    * (see the subclass). A distance, relative to the whole input's bounding-box diagonal when
-   * RelativeError is on (default), else in input units.
+   * RelativeError is on (default), else in input units. A negative bound is clamped to 0, and
+   * the execution warns that it was.
    */
-  vtkSetClampMacro(MaximumError, double, 0.0, VTK_DOUBLE_MAX);
+  void SetMaximumError(double bound);
   vtkGetMacro(MaximumError, double);
   vtkSetMacro(RelativeError, bool);
   vtkGetMacro(RelativeError, bool);
@@ -249,7 +250,9 @@ protected:
   double TargetReduction = 0.9;
   double RequestedReduction = 0.9; // as set, before clamping
   vtkIdType TargetTriangleCount = 1000;
+  vtkIdType RequestedTriangleCount = 1000; // as set, before clamping
   double MaximumError = 0.01;
+  double RequestedMaximumError = 0.01; // as set, before clamping
   bool RelativeError = true;
   bool PreserveBoundary = false;
   bool PreserveAttributeBorders = false;

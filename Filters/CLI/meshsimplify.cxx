@@ -34,6 +34,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -142,8 +143,9 @@ const char* Usage =
 struct Arguments
 {
   std::string Method, Input, Output;
-  double Reduction = 0.9, MaximumError = -1.0;
-  long long TargetTriangles = -1;
+  double Reduction = 0.9;
+  std::optional<double> MaximumError;
+  std::optional<long long> TargetTriangles;
   bool RelativeError = false, Json = false;
   int Threads = 0, Repeat = 1;
   std::vector<std::pair<std::string, double>> Settings;
@@ -232,12 +234,12 @@ Arguments ParseArguments(int argc, char* argv[])
       "unknown --method (available: octree, volume, parallel, progressive)" },
     { !a.Levels.empty() && a.Method != "progressive", "--levels needs --method progressive" },
     { !a.Levels.empty() && a.Output.find("%l") == std::string::npos, "--levels needs %l in OUTPUT" },
-    { !a.Levels.empty() && (reductionGiven || a.TargetTriangles >= 0 || a.MaximumError >= 0.0 || a.Repeat != 1),
+    { !a.Levels.empty() && (reductionGiven || a.TargetTriangles || a.MaximumError || a.Repeat != 1),
       "--levels gives the reductions: no --reduction, --target-triangles, --max-error or --repeat with it" },
-    { reductionGiven + (a.TargetTriangles >= 0) + (a.MaximumError >= 0.0) > 1,
+    { reductionGiven + a.TargetTriangles.has_value() + a.MaximumError.has_value() > 1,
       "give only one of --reduction, --target-triangles, --max-error" },
-    { a.MaximumError < 0.0 && a.MaximumError != -1.0, "--max-error must be 0 or more" },
-    { std::isnan(a.MaximumError), "--max-error must be a number" },
+    { a.MaximumError.value_or(0.0) < 0.0, "--max-error must be 0 or more" },
+    { a.TargetTriangles.value_or(0) < 0, "--target-triangles must be 0 or more" },
     { a.Threads < 0, "--threads must be 0 (all cores) or more" },
     { a.Repeat < 1, "--repeat must be 1 or more" },
   };
@@ -283,15 +285,15 @@ vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
   setters.merge(CommonSetters(filter));
   filter->SetNumberOfThreads(a.Threads);
   filter->SetRelativeError(a.RelativeError);
-  if (a.TargetTriangles >= 0)
+  if (a.TargetTriangles)
   {
     filter->SetTargetModeToTriangleCount();
-    filter->SetTargetTriangleCount(a.TargetTriangles);
+    filter->SetTargetTriangleCount(*a.TargetTriangles);
   }
-  else if (a.MaximumError >= 0.0)
+  else if (a.MaximumError)
   {
     filter->SetTargetModeToMaximumError();
-    filter->SetMaximumError(a.MaximumError);
+    filter->SetMaximumError(*a.MaximumError);
   }
   else
   {

@@ -10,6 +10,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkMeshSimplificationFilter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -106,7 +107,8 @@ inline vtkSmartPointer<vtkPolyData> Sphere()
 }
 
 /// What every filter says about targets out of range and targets it cannot reach: the same
-/// clamping to [0, 1] with a warning; no triangle asked for gives an empty output, with a
+/// clamping to [0, 1] with a warning, and of a negative count to 0, each warning giving the
+/// value typed and the value used; no triangle asked for gives an empty output, with a
 /// warning; every point locked gives the input back, the first warning naming the locks; a
 /// dropped line is named without a count of zero vertices.
 inline void CheckTargetMessages(const FilterFactory& make)
@@ -119,6 +121,15 @@ inline void CheckTargetMessages(const FilterFactory& make)
   const Run none = Simplify(make, sphere, -1);
   CHECK(none.Output->GetNumberOfPolys() >= sphere->GetNumberOfPolys() - 2 && none.Warnings.size() == 1);
   CHECK(!none.Warnings.empty() && Mentions(none.Warnings[0], "TargetReduction -1 is outside [0, 1]: 0 is used"));
+  const Run negative = Simplify(make, sphere, 0.5, [](vtkPolyDataAlgorithm* filter) {
+    auto* simplifier = vtkMeshSimplificationFilter::SafeDownCast(filter);
+    simplifier->SetTargetModeToTriangleCount();
+    simplifier->SetTargetTriangleCount(-5);
+  });
+  CHECK(negative.Output->GetNumberOfCells() == 0 && negative.Warnings.size() == 2);
+  CHECK(negative.Warnings.size() == 2 &&
+    Mentions(negative.Warnings[0], "TargetTriangleCount -5 is below 0: 0 is used") &&
+    Mentions(negative.Warnings[1], "TargetTriangleCount 0 asks for no triangle"));
 
   vtkNew<vtkDoubleArray> everywhere;
   everywhere->SetName("Everywhere");
@@ -353,7 +364,7 @@ inline void CheckBadInputCases(const FilterFactory& make, double countTolerance)
 
 /// The error-bound target's bad input: a negative bound is clamped to 0, and on a sphere no
 /// point stays on all its planes after a merge, so nothing changes; stopping at the bound is no
-/// cause for a warning. A bound of 5 % does simplify.
+/// cause for a warning, but the clamp is, with the value typed. A bound of 5 % does simplify.
 template <typename Filter>
 void CheckErrorBoundClamped()
 {
@@ -366,7 +377,8 @@ void CheckErrorBoundClamped()
   };
   vtkSmartPointer<vtkPolyData> sphere = Sphere();
   const Run none = Simplify(bounded, sphere, -1);
-  CHECK(!none.Warned && !none.Failed);
+  CHECK(!none.Failed && none.Warnings.size() == 1 &&
+    Mentions(none.Warnings[0], "MaximumError -1 is below 0: 0 is used"));
   CHECK(none.Output->GetNumberOfPolys() == sphere->GetNumberOfPolys());
   const Run some = Simplify(bounded, sphere, 0.05);
   CHECK(!some.Warned && some.Output->GetNumberOfPolys() < sphere->GetNumberOfPolys());
