@@ -37,6 +37,7 @@ vtkStandardNewMacro(vtkProgressiveMesh);
 struct vtkProgressiveMesh::Cache
 {
   std::string Key; // the input's modification time and the properties the build depends on
+  int Precision = -1; // the OutputPointsPrecision Wholes were written with
   std::vector<meshsimp::ProgressiveMesh> Pieces;
   std::vector<bool> Ready;
   /// Per piece, the whole sequence as a mesh (made once, at the first level written): levels are
@@ -271,13 +272,14 @@ vtkTypeBool vtkProgressiveMesh::ProcessRequest(
 int vtkProgressiveMesh::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The cached sequences serve while the input and every property but the target are unchanged.
+  // The cached sequences serve while the input and every property the build depends on are
+  // unchanged; another OutputPointsPrecision only writes the whole sequences' meshes again.
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   std::ostringstream key;
   key.precision(17);
   key << InputStamp(input) << ' ' << this->LengthWeight << ' ' << this->CurvatureWeight << ' '
       << this->QuadricWeight << ' ' << this->AttributeWeight << ' ' << this->PreserveBoundary << ' '
-      << this->PreserveAttributeBorders << ' ' << this->CloseCracks << ' ' << this->OutputPointsPrecision;
+      << this->PreserveAttributeBorders << ' ' << this->CloseCracks;
   for (int index = 0; index < 3; ++index)
   {
     vtkInformation* selection = this->GetInputArrayInformation(index);
@@ -288,6 +290,11 @@ int vtkProgressiveMesh::RequestData(
   {
     *this->Sequences = Cache();
     this->Sequences->Key = key.str();
+  }
+  if (this->Sequences->Precision != this->OutputPointsPrecision)
+  {
+    this->Sequences->Wholes.clear();
+    this->Sequences->Precision = this->OutputPointsPrecision;
   }
   this->Sequences->Levels.clear();
   this->Sequences->Outputs.clear();

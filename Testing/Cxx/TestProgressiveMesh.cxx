@@ -94,6 +94,16 @@ void TestLevelsFromOneBuild(vtkPolyData* cow)
     vtkDataArray* count = out->GetFieldData()->GetArray("LevelTriangles");
     CHECK(count && count->GetTuple1(0) == out->GetNumberOfPolys());
   }
+  // Another output precision writes the level again from the same build (issue 45: it built
+  // the whole sequence again).
+  filter->SetTargetReduction(0.9);
+  filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 1 && filter->GetOutput()->GetPoints()->GetDataType() == VTK_DOUBLE);
+  filter->SetOutputPointsPrecision(vtkAlgorithm::SINGLE_PRECISION);
+  filter->Update();
+  CHECK(filter->GetNumberOfBuilds() == 1 && filter->GetOutput()->GetPoints()->GetDataType() == VTK_FLOAT);
+  CHECK(std::abs(filter->GetOutput()->GetNumberOfPolys() - std::round(triangles * 0.1)) <= 1);
   // A build property, or a change of the input's points, builds again.
   filter->SetCurvatureWeight(1.0);
   filter->Update();
