@@ -9,9 +9,12 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <fstream>
 
 vtkStandardNewMacro(vtkOFFReader);
@@ -36,7 +39,7 @@ int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   if (!meshsimp::ReadOFF(this->FileName, mesh, error))
   {
     vtkErrorMacro(<< error);
-    return 0;
+    return 1; // the error is said; 0 would add the executive's dump of the request
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -62,6 +65,15 @@ int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   polys->SetData(offsets, connectivity);
   output->SetPoints(points);
   output->SetPolys(polys);
+  if (!mesh.Colours.empty())
+  {
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetName("RGBA");
+    colours->SetNumberOfComponents(4);
+    colours->SetNumberOfTuples(numberOfPoints);
+    std::copy(mesh.Colours.begin(), mesh.Colours.end(), colours->GetPointer(0));
+    output->GetPointData()->SetScalars(colours);
+  }
   return 1;
 }
 

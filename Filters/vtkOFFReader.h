@@ -4,7 +4,9 @@
  * @brief   read an ASCII Object File Format (.off) mesh into vtkPolyData
  *
  * OFF files (Geomview, CGAL, many mesh repositories) hold points and polygons of any size.
- * Only the plain "OFF" variant is read; colours after the coordinates are ignored.
+ * The plain "OFF" variant is read (columns after the coordinates ignored), and "COFF", whose
+ * per-point colours become the unsigned-char point scalars "RGBA" (as vtkPLYReader names
+ * them). A file that cannot be read gives one error line and an empty output.
  */
 #ifndef vtkOFFReader_h
 #define vtkOFFReader_h

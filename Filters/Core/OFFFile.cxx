@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -67,6 +68,121 @@ bool NextNumber(const char*& cursor, const char* end, T& value)
   cursor = parsed.ptr;
   return true;
 }
+
+/// The counts are not trusted with memory: a damaged header could claim more than any machine
+/// holds. The lists grow with what is read; reserved up front only to a bounded size.
+constexpr long long ReserveLimit = 1 << 22;
+
+/// The header: the optional keyword (OFF, or COFF for colours) and the counts line; false with
+/// the reason in error.
+bool ReadHeader(std::istream& in, long long& points, long long& faces, bool& colours, std::string& error)
+{
+  std::string line;
+  if (!NextDataLine(in, line))
+  {
+    error = "empty file";
+    return false;
+  }
+  std::istringstream header(line);
+  std::string keyword;
+  header >> keyword;
+  colours = keyword == "COFF";
+  if (keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0)
+  {
+    if (keyword != "OFF" && keyword != "COFF")
+    {
+      error = "only plain ASCII OFF and COFF are supported, not " + keyword;
+      return false;
+    }
+    if (!(header >> std::ws).eof())
+    {
+      line = line.substr(line.find("OFF") + 3); // counts on the header line
+    }
+    else if (!NextDataLine(in, line))
+    {
+      error = "missing counts line";
+      return false;
+    }
+  }
+  std::istringstream counts(line);
+  if (!(counts >> points >> faces) || points < 0 || faces < 0)
+  {
+    error = "bad counts line";
+    return false;
+  }
+  return true;
+}
+
+/// count point lines: x y z, and with colours r g b a (0–255, or 0–1 when none is above 1).
+bool ReadPoints(std::istream& in, long long count, bool colours, PolygonMesh& mesh, std::string& error)
+{
+  const int columns = colours ? 7 : 3;
+  std::vector<double> rgba;
+  mesh.Points.reserve(3 * static_cast<std::size_t>(std::min(count, ReserveLimit)));
+  rgba.reserve(colours ? 4 * static_cast<std::size_t>(std::min(count, ReserveLimit)) : 0);
+  std::string line;
+  for (long long i = 0; i < count; ++i)
+  {
+    double values[7];
+    bool ok = NextDataLine(in, line);
+    const char* cursor = line.data();
+    const char* end = cursor + line.size();
+    for (int k = 0; k < columns && ok; ++k)
+    {
+      ok = NextNumber(cursor, end, values[k]);
+    }
+    if (!ok)
+    {
+      error = "bad or missing point " + std::to_string(i);
+      return false;
+    }
+    mesh.Points.insert(mesh.Points.end(), values, values + 3);
+    rgba.insert(rgba.end(), values + 3, values + columns);
+  }
+  const bool unit = std::all_of(rgba.begin(), rgba.end(), [](double c) { return c <= 1.0; });
+  mesh.Colours.resize(rgba.size());
+  std::transform(rgba.begin(), rgba.end(), mesh.Colours.begin(), [unit](double c) {
+    return static_cast<std::uint8_t>(std::lround(std::min(255.0, std::max(0.0, unit ? 255.0 * c : c))));
+  });
+  return true;
+}
+
+/// count face lines: a corner count, then that many point indices.
+bool ReadFaces(std::istream& in, long long count, long long points, PolygonMesh& mesh, std::string& error)
+{
+  mesh.FaceOffsets.reserve(static_cast<std::size_t>(std::min(count, ReserveLimit)) + 1);
+  mesh.FaceIds.reserve(3 * static_cast<std::size_t>(std::min(count, ReserveLimit)));
+  std::string line;
+  for (long long f = 0; f < count; ++f)
+  {
+    long long size = 0;
+    const bool found = NextDataLine(in, line);
+    const char* cursor = line.data();
+    const char* end = cursor + line.size();
+    if (!found || !NextNumber(cursor, end, size) || size < 0)
+    {
+      error = "bad or missing face " + std::to_string(f);
+      return false;
+    }
+    for (long long k = 0; k < size; ++k)
+    {
+      long long id = -1;
+      if (!NextNumber(cursor, end, id) || id < 0 || id >= points)
+      {
+        error = "face " + std::to_string(f) + " has a bad point index";
+        return false;
+      }
+      mesh.FaceIds.push_back(id);
+    }
+    mesh.FaceOffsets.push_back(static_cast<std::int64_t>(mesh.FaceIds.size()));
+  }
+  if (NextDataLine(in, line))
+  {
+    error = "data follow the last of the " + std::to_string(count) + " faces the counts line declares";
+    return false;
+  }
+  return true;
+}
 }
 
 bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
@@ -78,89 +194,12 @@ bool ReadOFF(const std::string& path, PolygonMesh& mesh, std::string& error)
     return false;
   }
   mesh = PolygonMesh();
-  std::string line;
-  if (!NextDataLine(in, line))
+  long long points = -1, faces = -1;
+  bool colours = false;
+  if (!ReadHeader(in, points, faces, colours, error) || !ReadPoints(in, points, colours, mesh, error) ||
+    !ReadFaces(in, faces, points, mesh, error))
   {
-    error = path + ": empty file";
-    return false;
-  }
-  std::istringstream header(line);
-  std::string keyword;
-  header >> keyword;
-  if (keyword.size() >= 3 && keyword.compare(keyword.size() - 3, 3, "OFF") == 0)
-  {
-    if (keyword != "OFF")
-    {
-      error = path + ": only plain ASCII OFF is supported, not " + keyword;
-      return false;
-    }
-    if (!(header >> std::ws).eof())
-    {
-      line = line.substr(line.find("OFF") + 3); // counts on the header line
-    }
-    else if (!NextDataLine(in, line))
-    {
-      error = path + ": missing counts line";
-      return false;
-    }
-  }
-  long long numberOfPoints = -1, numberOfFaces = -1;
-  std::istringstream counts(line);
-  if (!(counts >> numberOfPoints >> numberOfFaces) || numberOfPoints < 0 || numberOfFaces < 0)
-  {
-    error = path + ": bad counts line";
-    return false;
-  }
-  // The counts are not trusted with memory: a damaged header could claim more than any machine
-  // holds. The lists grow with what is read; reserved up front only to a bounded size.
-  constexpr long long ReserveLimit = 1 << 22;
-  mesh.Points.reserve(3 * static_cast<std::size_t>(std::min(numberOfPoints, ReserveLimit)));
-  for (long long i = 0; i < numberOfPoints; ++i)
-  {
-    double p[3];
-    bool ok = NextDataLine(in, line);
-    const char* cursor = line.data();
-    const char* end = cursor + line.size();
-    for (int k = 0; k < 3 && ok; ++k)
-    {
-      ok = NextNumber(cursor, end, p[k]);
-    }
-    if (!ok)
-    {
-      error = path + ": bad or missing point " + std::to_string(i);
-      return false;
-    }
-    mesh.Points.insert(mesh.Points.end(), p, p + 3);
-  }
-  mesh.FaceOffsets.reserve(static_cast<std::size_t>(std::min(numberOfFaces, ReserveLimit)) + 1);
-  mesh.FaceIds.reserve(3 * static_cast<std::size_t>(std::min(numberOfFaces, ReserveLimit)));
-  for (long long f = 0; f < numberOfFaces; ++f)
-  {
-    long long size = 0;
-    const bool found = NextDataLine(in, line);
-    const char* cursor = line.data();
-    const char* end = cursor + line.size();
-    if (!found || !NextNumber(cursor, end, size) || size < 0)
-    {
-      error = path + ": bad or missing face " + std::to_string(f);
-      return false;
-    }
-    for (long long k = 0; k < size; ++k)
-    {
-      long long id = -1;
-      if (!NextNumber(cursor, end, id) || id < 0 || id >= numberOfPoints)
-      {
-        error = path + ": face " + std::to_string(f) + " has a bad point index";
-        return false;
-      }
-      mesh.FaceIds.push_back(id);
-    }
-    mesh.FaceOffsets.push_back(static_cast<std::int64_t>(mesh.FaceIds.size()));
-  }
-  if (NextDataLine(in, line))
-  {
-    error = path + ": data follow the last of the " + std::to_string(numberOfFaces) +
-      " faces the counts line declares";
+    error = path + ": " + error;
     return false;
   }
   return true;

@@ -4,7 +4,8 @@
  * @brief Reading and writing Object File Format (.off) meshes, which VTK has no reader for.
  *
  * Supports the plain ASCII variant: an optional "OFF" header keyword, the counts line, points
- * (extra columns such as colours are ignored), and polygons of any size. Comments (#) and blank
+ * (extra columns are ignored), and polygons of any size; and COFF (MeshLab's and Geomview's),
+ * whose points carry an RGBA colour each, 0–255, or 0–1 when no value in the file is above 1. Comments (#) and blank
  * lines are skipped. Numbers are read with std::from_chars: the same values as strtod gives, in
  * any locale (no hexadecimal floats); one beyond double's range becomes its infinity or zero.
  */
@@ -23,6 +24,7 @@ struct PolygonMesh
   std::vector<double> Points;              // 3 per point
   std::vector<std::int64_t> FaceOffsets{ 0 }; // CSR over FaceIds
   std::vector<std::int64_t> FaceIds;
+  std::vector<std::uint8_t> Colours; // 4 per point (RGBA) from a COFF file, else empty
 };
 
 /// Returns false with a one-line message in error on failure, data after the declared faces

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkOFFWriter: vtkOFFReader reads back what it writes (points bit for bit, polygons of any
 // size, the cow's counts); vertex and line cells are left out with a warning; a file that
-// cannot be written is an error and Write() returns 0.
+// cannot be written is an error and Write() returns 0. vtkOFFReader: COFF's colours become RGBA
+// point scalars (0-255, or 0-1 scaled); a damaged file is one error, without the executive's
+// dump of the request that followed it (issue 45).
 #include "vtkOFFReader.h"
 #include "vtkOFFWriter.h"
 
 #include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkPointData.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -16,6 +21,7 @@
 #include "TestHelpers.h"
 
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 namespace
@@ -114,10 +120,48 @@ void UnwritablePathFails()
   CHECK(observer->GetError() && writer->GetErrorCode() != 0);
   CHECK(observer->GetErrorMessage().find("/nonexistent-directory/mesh.off") != std::string::npos);
 }
+
+/// The text written to path.
+void WriteText(const std::string& path, const std::string& text)
+{
+  std::ofstream(path) << text;
+}
+
+void ColouredOFFIsRead(const std::string& path)
+{
+  const std::string faces = "3 0 1 2\n3 0 2 3\n3 0 3 1\n3 1 3 2\n";
+  WriteText(path, "COFF\n4 4 0\n0 0 0 255 0 0 255\n1 0 0 0 128 0 255\n0 1 0 0 0 255 255\n"
+                  "0 0 1 10 20 30 40\n" + faces);
+  vtkSmartPointer<vtkPolyData> bytes = ReadOFF(path);
+  vtkDataArray* colours = bytes->GetPointData()->GetScalars();
+  CHECK(bytes->GetNumberOfPolys() == 4 && colours && colours->GetNumberOfComponents() == 4 &&
+    colours->GetDataType() == VTK_UNSIGNED_CHAR && std::string(colours->GetName()) == "RGBA");
+  CHECK(colours && colours->GetComponent(1, 1) == 128 && colours->GetComponent(3, 3) == 40);
+  WriteText(path, "COFF\n4 4 0\n0 0 0 1 0 0 1\n1 0 0 0 0.5 0 1\n0 1 0 0 0 1 1\n0 0 1 0 0 0 1\n" + faces);
+  vtkSmartPointer<vtkPolyData> fractions = ReadOFF(path);
+  vtkDataArray* units = fractions->GetPointData()->GetScalars();
+  CHECK(units && units->GetComponent(1, 1) == 128 && units->GetComponent(0, 0) == 255);
+}
+
+void DamagedOFFIsOneError(const std::string& path)
+{
+  WriteText(path, "OFF\n4 9 0\n0 0 0\n");
+  vtkNew<vtkOFFReader> reader;
+  vtkNew<vtkTest::ErrorObserver> observer, executive;
+  reader->AddObserver(vtkCommand::ErrorEvent, observer);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  CHECK(observer->GetError() && !executive->GetError());
+  CHECK(observer->GetErrorMessage().find("bad or missing point 1") != std::string::npos);
+  CHECK(reader->GetOutput()->GetNumberOfPoints() == 0);
+}
 }
 
 int TestOFFWriter(int, char*[])
 {
+  ColouredOFFIsRead(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFReaderColours.off");
+  DamagedOFFIsOneError(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFReaderDamaged.off");
   RoundTripIsExact(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterMixed.off");
   CowKeepsItsCounts(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterCow.off");
   UnwritablePathFails();
