@@ -7,6 +7,9 @@
 #  2. Qt's help browser reads a page without a declared encoding as Latin-1: UTF-8 is declared.
 #  3. The converter ignores an InputArrayDomain's optional="1" and says the input "must contain"
 #     such an array: the sentence says that the array is optional.
+#  4. The contents list every page: the pages of the internal proxies (the filters' base, and the
+#     OFF writer's inner proxy, a table with no row) are removed once read, so that the contents
+#     list what a user can pick.
 
 # The rows of a page's property table, without its header row.
 function (table_rows page out)
@@ -48,3 +51,8 @@ foreach (page IN LISTS pages)
     file(WRITE "${page}" "${text}")
   endif ()
 endforeach ()
+
+file(GLOB internal_pages "${dir}/meshsimplification_ubase.*.html" "${dir}/internal_u*.html")
+if (internal_pages)
+  file(REMOVE ${internal_pages})
+endif ()

@@ -22,6 +22,18 @@ foreach (page IN LISTS pages)
     message(FATAL_ERROR "${page} claims a required array or has characters that are not ASCII")
   endif ()
 endforeach ()
+# The contents list what a user can pick: the four filters, the reader and the writer, not the
+# filters' internal base nor the writer's inner proxy (issue 45).
+file(READ "${HELP}/MeshSimplification.qhp" contents)
+if (contents MATCHES "meshsimplification_ubase|internal_u")
+  message(FATAL_ERROR "the help contents list an internal proxy: ${contents}")
+endif ()
+foreach (title IN ITEMS "Octree Vertex Clustering" "Parallel Decimation" "Progressive Mesh"
+                        "Volume Triangle Collapse" "OFF Reader" "OFF Writer")
+  if (NOT contents MATCHES "<section title=\"${title}\"")
+    message(FATAL_ERROR "the help contents lack ${title}")
+  endif ()
+endforeach ()
 file(GLOB xmls "${XML}/*.xml")
 foreach (xml IN LISTS xmls)
   file(READ "${xml}" text)
