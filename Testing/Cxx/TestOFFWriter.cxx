@@ -108,6 +108,40 @@ void CowKeepsItsCounts(const std::string& path)
   CHECK(back->GetNumberOfPoints() == 2904 && back->GetNumberOfPolys() == 5804);
 }
 
+/// Two triangles of two pieces whose shared edge each brings its own points: merged on request
+/// (4 points, the faces sharing two), kept by default (6).
+void CoincidentPointsMergeOnRequest(const std::string& path)
+{
+  const double corners[6][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 }, { 1, 1, 0 },
+    { 0, 1, 0 } };
+  vtkNew<vtkPoints> points;
+  for (const double* p : corners)
+  {
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType first[] = { 0, 1, 2 }, second[] = { 3, 4, 5 };
+  polys->InsertNextCell(3, first);
+  polys->InsertNextCell(3, second);
+  vtkNew<vtkPolyData> pieces;
+  pieces->SetPoints(points);
+  pieces->SetPolys(polys);
+  for (const bool merge : { false, true })
+  {
+    vtkNew<vtkOFFWriter> writer;
+    writer->SetInputData(pieces);
+    writer->SetFileName(path.c_str());
+    writer->SetMergeCoincidentPoints(merge);
+    CHECK(writer->Write() == 1);
+    vtkSmartPointer<vtkPolyData> back = ReadOFF(path);
+    CHECK(back->GetNumberOfPoints() == (merge ? 4 : 6) && back->GetNumberOfPolys() == 2);
+    vtkNew<vtkIdList> a, b;
+    back->GetPolys()->GetCellAtId(0, a);
+    back->GetPolys()->GetCellAtId(1, b);
+    CHECK(!merge || (b->GetId(0) == a->GetId(1) && b->GetId(2) == a->GetId(2)));
+  }
+}
+
 void UnwritablePathFails()
 {
   vtkNew<vtkOFFWriter> writer;
@@ -164,6 +198,7 @@ int TestOFFWriter(int, char*[])
   DamagedOFFIsOneError(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFReaderDamaged.off");
   RoundTripIsExact(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterMixed.off");
   CowKeepsItsCounts(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterCow.off");
+  CoincidentPointsMergeOnRequest(MESHSIMPLIFICATION_TEST_OUTPUT "/TestOFFWriterPieces.off");
   UnwritablePathFails();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
