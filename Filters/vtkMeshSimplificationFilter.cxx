@@ -439,9 +439,12 @@ void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i
     vtkWarningMacro(<< run.Name(i) << "Reached " << count << " triangles where " << target
                     << " were asked for: " << reason << ".");
   }
+  const std::string lead = this->TargetMode == TARGET_MAXIMUM_ERROR
+    ? "Under MaximumError " + Format(this->MaximumError) + ", "
+    : "To reach " + std::to_string(target) + " triangles, ";
   for (const std::string& note : report.Notes)
   {
-    vtkWarningMacro(<< run.Name(i) << "To reach " << target << " triangles, " << note << ".");
+    vtkWarningMacro(<< run.Name(i) << lead << note << ".");
   }
   if (report.NonFinitePoints > 0)
   {

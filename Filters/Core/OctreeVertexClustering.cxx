@@ -2957,8 +2957,21 @@ bool Clusterer::Run(OctreeClusteringResult& result)
 bool OctreeVertexClustering(const TriangleMeshView& mesh, const OctreeClusteringOptions& options,
   OctreeClusteringResult& result, const ExecutionContext& context)
 {
-  Clusterer clusterer(mesh, options, context);
-  const bool finished = clusterer.Run(result);
+  bool finished = Clusterer(mesh, options, context).Run(result);
+  if (finished && options.Goal.Bounded() && result.NumberOfTriangles() == 0 &&
+    result.Report.UsableTriangles > 0)
+  {
+    // A bound so large that every cluster merges would leave no triangle: the coarsest mesh the
+    // clustering makes instead (the nearest count to one triangle), never an empty one.
+    OctreeClusteringOptions coarsest = options;
+    coarsest.Goal.SetTriangleCount(1);
+    finished = Clusterer(mesh, coarsest, context).Run(result);
+    result.Report.TargetTriangles = 0;
+    result.Report.Stop = StopReason::NearestCount;
+    result.Report.Reason = "the bound would leave no triangle";
+    result.Report.Notes.push_back("the bound would leave no triangle: the coarsest mesh vertex clustering makes, of " +
+      std::to_string(result.NumberOfTriangles()) + " triangles, is given");
+  }
   if (!finished)
   {
     result.Report.Stop = StopReason::Aborted;

@@ -26,6 +26,23 @@ int TestOctreeVertexClusteringBadInput(int, char*[])
     CHECK(filter->GetOutput()->GetNumberOfPolys() > 0.9 * sphere->GetNumberOfPolys());
     CHECK(filter->GetAchievedMaximumError() < 1e-9);
   }
+  // A bound so large that every cluster would merge (issue 45: 0 triangles and MaximumError 0,
+  // without a word): the coarsest mesh the clustering makes, its error, and a warning.
+  {
+    vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+    const meshsimp_test::Run run = meshsimp_test::Simplify(
+      [](double bound) {
+        vtkNew<vtkOctreeVertexClustering> filter;
+        filter->SetTargetModeToMaximumError();
+        filter->SetMaximumError(bound);
+        return vtkSmartPointer<vtkPolyDataAlgorithm>(filter);
+      },
+      sphere, 0.3);
+    vtkDataArray* reached = run.Output->GetFieldData()->GetArray("MaximumError");
+    CHECK(run.Output->GetNumberOfPolys() >= 4 && reached && reached->GetTuple1(0) > 0.0);
+    CHECK(run.Warnings.size() == 1 && meshsimp_test::Mentions(run.Warnings[0], "MaximumError 0.3") &&
+      meshsimp_test::Mentions(run.Warnings[0], "coarsest mesh"));
+  }
   // ParaView's default Sphere (96 triangles) at the default reduction (10 triangles): not an
   // empty mesh. Clustering alone stops at 12; the collapses that finish it reach the count.
   {
