@@ -32,6 +32,8 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <exception>
+#include <new>
 
 #include <algorithm>
 #include <cctype>
@@ -396,25 +398,42 @@ unsigned ReadTimeLimit(const std::string& path)
 [[noreturn]] void ReadAsChild(
   const MeshFormat& format, const std::string& path, const std::string& handBack, int report)
 {
+  // The limit works whatever the parent did with SIGALRM (a fuzzer installs its own handler).
+  std::signal(SIGALRM, SIG_DFL);
+  sigset_t alarmOnly;
+  sigemptyset(&alarmOnly);
+  sigaddset(&alarmOnly, SIGALRM);
+  sigprocmask(SIG_UNBLOCK, &alarmOnly, nullptr);
   alarm(ReadTimeLimit(path));
 #ifndef __SANITIZE_ADDRESS__
   const rlim_t memory = static_cast<rlim_t>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGESIZE);
   const struct rlimit limit = { memory, memory };
   setrlimit(RLIMIT_AS, &limit);
 #endif
-  QuietVTK quiet;
   std::string reason;
-  vtkSmartPointer<vtkPolyData> mesh = RunReader(format, path, quiet, reason);
-  if (mesh)
+  try
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetInputData(mesh);
-    writer->SetFileName(handBack.c_str());
-    writer->SetDataModeToAppended();
-    writer->EncodeAppendedDataOff();
-    writer->SetCompressorTypeToNone();
-    writer->SetHeaderTypeToUInt64();
-    reason = writer->Write() == 1 ? quiet.FirstMessage() : "the mesh could not be handed back";
+    QuietVTK quiet;
+    vtkSmartPointer<vtkPolyData> mesh = RunReader(format, path, quiet, reason);
+    if (mesh)
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputData(mesh);
+      writer->SetFileName(handBack.c_str());
+      writer->SetDataModeToAppended();
+      writer->EncodeAppendedDataOff();
+      writer->SetCompressorTypeToNone();
+      writer->SetHeaderTypeToUInt64();
+      reason = writer->Write() == 1 ? quiet.FirstMessage() : "the mesh could not be handed back";
+    }
+  }
+  catch (const std::bad_alloc&)
+  {
+    reason = "reading it takes more memory than the machine has";
+  }
+  catch (const std::exception& exception)
+  {
+    reason = std::string("the reader failed: ") + exception.what();
   }
   const bool sent = write(report, reason.data(), reason.size()) == static_cast<ssize_t>(reason.size());
   _exit(reason.empty() && sent ? 0 : 1);

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -469,6 +470,9 @@ void RunLevels(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
 
 int main(int argc, char* argv[])
 {
+  // Past a file size limit (ulimit -f) a write fails with EFBIG, which is reported, rather
+  // than the signal ending the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   const Arguments arguments = ParseArguments(argc, argv);
   std::string fileError;
   vtkSmartPointer<vtkPolyData> mesh = meshfiles::ReadMesh(arguments.Input, fileError);

@@ -1144,7 +1144,10 @@ int CollapseMesh::Apply(const CollapsePlan& plan, bool keepUndo)
   }
   else
   {
-    this->HistoryUndo.clear(); // no undo reaches past this collapse
+    // No undo reaches past this collapse: what earlier ones kept for it is freed.
+    this->HistoryUndo.clear();
+    this->Changes.clear();
+    this->RemovedTriangles.clear();
   }
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {
@@ -1234,7 +1237,9 @@ std::int64_t CollapseMesh::ApplyIndependent(
   }
   this->Undone.clear();
   this->UndoneUndo.clear();
-  this->HistoryUndo.clear(); // no undo reaches past a batch
+  this->HistoryUndo.clear(); // no undo reaches past a batch: what earlier ones kept is freed
+  this->Changes.clear();
+  this->RemovedTriangles.clear();
   if (static_cast<std::int64_t>(this->Refs.size()) > 2 * this->LiveRefs + 4096)
   {
     this->CompactRefs(context);

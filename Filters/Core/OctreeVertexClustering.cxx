@@ -2962,7 +2962,7 @@ bool OctreeVertexClustering(const TriangleMeshView& mesh, const OctreeClustering
     result.Report.UsableTriangles > 0)
   {
     // A bound so large that every cluster merges would leave no triangle: the coarsest mesh the
-    // clustering makes instead (the nearest count to one triangle), never an empty one.
+    // clustering makes instead (the nearest count to one triangle).
     OctreeClusteringOptions coarsest = options;
     coarsest.Goal.SetTriangleCount(1);
     finished = Clusterer(mesh, coarsest, context).Run(result);

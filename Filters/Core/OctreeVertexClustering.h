@@ -104,7 +104,8 @@ struct OctreeClusteringResult : SimplifiedMesh
 
 /// Runs the clustering. Invalid triangles (bad index, repeated index, non-finite corner) are
 /// skipped. Under an error bound that would leave no triangle (every cluster merged), the
-/// coarsest mesh the clustering makes is given instead, with a note. Returns false only when
+/// coarsest mesh the clustering makes (its nearest count to one triangle) is given instead, with
+/// a note. Returns false only when
 /// aborted.
 bool OctreeVertexClustering(const TriangleMeshView& mesh, const OctreeClusteringOptions& options,
   OctreeClusteringResult& result, const ExecutionContext& context = {});

@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <exception>
+#include <filesystem>
 
 namespace meshsimp
 {
@@ -33,11 +35,21 @@ int CreatePartFile(const std::string& path, std::string& partPath)
   return -1;
 }
 
-/// The part file's bytes written, checked, flushed to the disk and closed; false with errno set.
+/// The part file's bytes written, checked, flushed to the disk and closed; false with errno set
+/// (an exception from write is a failure too, the file still closed).
 bool Finish(std::FILE* out, const std::function<bool(std::FILE*)>& write)
 {
   errno = 0;
-  bool ok = write(out) && !std::ferror(out) && std::fflush(out) == 0 && fsync(fileno(out)) == 0;
+  bool written = false;
+  try
+  {
+    written = write(out);
+  }
+  catch (const std::exception&)
+  {
+    errno = errno != 0 ? errno : ENOMEM;
+  }
+  bool ok = written && !std::ferror(out) && std::fflush(out) == 0 && fsync(fileno(out)) == 0;
   const int failure = errno;
   ok = std::fclose(out) == 0 && ok;
   errno = failure != 0 ? failure : errno;
@@ -46,8 +58,13 @@ bool Finish(std::FILE* out, const std::function<bool(std::FILE*)>& write)
 }
 
 bool WriteWholeFile(
-  const std::string& path, const std::function<bool(std::FILE*)>& write, std::string& error)
+  const std::string& given, const std::function<bool(std::FILE*)>& write, std::string& error)
 {
+  // A link is written through: the part file goes beside the file it names, which it replaces.
+  std::error_code ignored;
+  const std::string path = std::filesystem::is_symlink(given, ignored) && std::filesystem::exists(given, ignored)
+    ? std::filesystem::canonical(given, ignored).string()
+    : given;
   std::string partPath;
   const int file = CreatePartFile(path, partPath);
   std::FILE* out = file >= 0 ? fdopen(file, "wb") : nullptr;

@@ -8,7 +8,8 @@
  * so that the last step is a rename within one file system); every write, the flush, the sync
  * to the disk and the close are checked; on success the new file replaces the target in one
  * rename, and takes the target's permissions if it existed (else 0666 less the umask, as any
- * new file). On any failure the new file is removed and the reason given, one line, with the
+ * new file). A symbolic link is written through (the file it names is replaced); a hard link
+ * to the target is left with the old file. The folder must be writable. On any failure the new file is removed and the reason given, one line, with the
  * system's words (for example "No space left on device").
  */
 #ifndef MeshSimplification_WholeFile_h
