@@ -1731,6 +1731,14 @@ std::string CheckFieldLine(Scan& scan, const std::vector<std::string>& words, bo
   }
   if (scan.FieldValues > 0)
   {
+    // vtkPolyDataReader crashes on a dataset FIELD block it cannot read (found by fuzzing).
+    for (std::size_t k = 0; k < words.size() && static_cast<long long>(k) < scan.FieldValues; ++k)
+    {
+      if (!IsNumber(words[k]))
+      {
+        return Quote(words[k]) + " where a value of a FIELD array is due";
+      }
+    }
     scan.FieldValues -= static_cast<long long>(words.size());
     return "";
   }
@@ -1775,6 +1783,11 @@ std::string CheckFieldLine(Scan& scan, const std::vector<std::string>& words, bo
 std::string CheckCountLine(Scan& scan, const std::vector<std::string>& words)
 {
   const std::string keyword = Lower(words[0]);
+  if (keyword.rfind("field", 0) == 0 && keyword != "field")
+  {
+    // vtkPolyDataReader takes any word that starts so for FIELD, and crashes on what follows.
+    return Quote(words[0]) + " reads as FIELD to vtkPolyDataReader, which cannot read it";
+  }
   long long count = 0;
   std::size_t typeAt = 0;
   const long long width = AttributeWidth(words, typeAt);

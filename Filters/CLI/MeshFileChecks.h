@@ -29,9 +29,9 @@ namespace meshfiles
 /// ASCII and binary PLY: the header (a format line, element vertex with scalar x y z first,
 /// element face with a vertex_indices list of integers second, known types, end_header), then
 /// every vertex and face record: present, numbers where numbers belong, list lengths within
-/// their type and at most 255 corners, corner indices naming existing vertices; coordinates
-/// within float's normal range (the reader stores floats: 1e300 would become infinite, a mesh
-/// of 1e-300 collapse to 0); without further elements, nothing after the declared faces (the
+/// their type and at most 255 corners, corner indices naming existing vertices; ASCII and double
+/// coordinates within float's normal range (the reader stores floats: 1e300 would become
+/// infinite, a mesh of 1e-300 collapse to 0; float ones are stored as they are); without further elements, nothing after the declared faces (the
 /// reader would drop faces a short count leaves out).
 std::string CheckPLY(const std::string& path);
 

@@ -417,6 +417,8 @@ std::vector<Case> DamagedFiles()
         return vtk.replace(vtk.find("4 float"), 7, "4 floatFIELD");
       }() },
     { "field_block_cut_short.vtk", LegacyVTK().substr(0, LegacyVTK().find("POINTS")) + "FIELD FieldData 2\n" },
+    { "field_values_cut_short.vtk", LegacyVTKWithField("FIELD FieldData 1\nx 1 3 int\n2 3\n") },
+    { "field_keyword_prefix.vtk", LegacyVTKWithField("FIELDv 2 2 double\n1 2\n3 4\n") },
   };
 }
 

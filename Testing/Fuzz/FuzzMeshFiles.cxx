@@ -2,7 +2,9 @@
 // Fuzz target over meshsimplify's file reading (MeshFiles.h: the checks, then VTK's readers):
 // the input's first byte picks the format (.off .ply .stl .obj .vtp .vtk), the rest is the
 // file. Reading must give a mesh whose cells name its points, or a one-line reason; never a
-// crash, a sanitizer finding or pages of messages. Built with libFuzzer (clang
+// crash, a sanitizer finding or pages of messages. A VTK reader runs in a child process, where
+// a crash or a time-out becomes a reason: those reasons fail here too, since the checks should
+// have refused the file with its own reason first. Built with libFuzzer (clang
 // -fsanitize=fuzzer) or with FuzzDriver.cxx's plain main; its seeds are files of every format
 // with the format byte in front (Testing/Data/Fuzz/files).
 #include "MeshFiles.h"
@@ -54,6 +56,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::remove(path.c_str());
   Require(mesh || (!error.empty() && error.find('\n') == std::string::npos),
     "a failed read without a one-line reason: " + error);
+  Require(error.find("the VTK reader crashed") == std::string::npos &&
+      error.find("reading took longer") == std::string::npos,
+    "a file that passed the checks stopped the reader: " + error);
   for (vtkCellArray* cells : { mesh ? mesh->GetPolys() : nullptr, mesh ? mesh->GetStrips() : nullptr })
   {
     const vtkIdType points = mesh ? mesh->GetNumberOfPoints() : 0;
