@@ -2701,10 +2701,8 @@ void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const Output
     {
       const std::int32_t* members = points.MembersOf(p);
       const std::int32_t size = points.Count(p);
-      // Clamped: the way back to input units may round a point on the box's face out of it.
-      const auto toInput = [this](const Vec3& y) {
-        return Vec3(this->Prepared.ToInput(y).cwiseMax(this->Prepared.Mesh.Lower).cwiseMin(this->Prepared.Mesh.Upper));
-      };
+      // Within the box: the way back to input units may round a point on its face out of it.
+      const auto toInput = [this](const Vec3& y) { return this->Prepared.ToInput(y); };
       const Vec3 x =
         this->Locked[members[0]] ? this->Input.Point(inputVertex[members[0]]) : toInput(points.Position[p]);
       const Vec3 lower = toInput(points.Regions[p].Lower), upper = toInput(points.Regions[p].Upper);

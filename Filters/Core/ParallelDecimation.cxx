@@ -341,7 +341,7 @@ private:
   const ExecutionContext& Context;
   double FeatureAngle = 0.0, DeviationAngle = 0.0, CosFeature = 1.0, CosDeviation = 1.0;
   CollapseMesh Mesh;
-  double Scale = 1.0; // a power of two: mesh coordinates = input coordinates · Scale
+  Frame Normalised; // Scale a power of two: mesh coordinates = input coordinates · Scale; the box
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0; // MaximumError in input units; < 0: no bound
   std::vector<std::int32_t> InputVertex, InputTriangle;
@@ -879,7 +879,7 @@ std::int64_t Decimator::Prepare(const TriangleMeshView& input, ParallelDecimatio
   result.Report = prepared.Report();
   this->InputVertex = std::move(prepared.Mesh.InputVertex);
   this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
-  this->Scale = prepared.Scale;
+  this->Normalised = prepared;
   this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
   this->Mesh.SetRegions(std::move(prepared.Regions));
   if (prepared.Bound >= 0.0)
@@ -1263,7 +1263,8 @@ std::int64_t Decimator::MoveSurvivors()
     const double reach = 0.5 * std::sqrt(shortest), distance = (x - p).norm();
     if (distance > 0.0 && reach < Never)
     {
-      after[i] = distance > reach ? MinimizeQuadricWithin(this->Quadrics[v], p, reach) : x;
+      // Within the input's box: no survivor leaves a grid's border or rises above a peak.
+      after[i] = this->Normalised.InBox(distance > reach ? MinimizeQuadricWithin(this->Quadrics[v], p, reach) : x);
       this->Moved[v] = 1;
     }
     if (this->Moved[v] && this->BoundLimit >= 0.0)
@@ -1332,10 +1333,8 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
 {
   // The surviving triangles and their points (MoveSurvivors' moved ones through the scale), with
   // their importance and type.
-  Frame scaled;
-  scaled.Scale = this->Scale;
   const std::vector<std::int32_t> used =
-    WriteSurvivors(this->Mesh, this->Moved, scaled, input, this->InputVertex, this->InputTriangle, result);
+    WriteSurvivors(this->Mesh, this->Moved, this->Normalised, input, this->InputVertex, this->InputTriangle, result);
   // A distance (AveragePlane), or the square root of an area-weighted squared distance: divided
   // by Scale once or twice (Scale² underflows for the largest meshes).
   const bool squared = this->Options.Measure == ImportanceMeasure::Quadric;
@@ -1345,12 +1344,12 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
   for (std::size_t i = 0; i < used.size(); ++i)
   {
     const std::int32_t v = used[i];
-    const double scaled = this->Importance[v] / this->Scale;
-    importance[i] = this->Importance[v] < Never ? (squared ? scaled / this->Scale : scaled) : -1.0;
+    const double scaled = this->Importance[v] / this->Normalised.Scale;
+    importance[i] = this->Importance[v] < Never ? (squared ? scaled / this->Normalised.Scale : scaled) : -1.0;
     types[i] = static_cast<double>(this->Types[v]);
     if (bounded)
     {
-      distance[i] = this->Bound.Error(v) / this->Scale;
+      distance[i] = this->Bound.Error(v) / this->Normalised.Scale;
       result.Report.MaximumError = std::max(result.Report.MaximumError, distance[i]);
     }
   }

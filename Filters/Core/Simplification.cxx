@@ -18,6 +18,8 @@ void Normalize(PreparedMesh& prepared, Normalization normalization, const Execut
   CompactMesh& mesh = prepared.Mesh;
   const double diagonal = mesh.Diagonal();
   prepared.Diagonal = diagonal;
+  prepared.Lower = mesh.Lower;
+  prepared.Upper = mesh.Upper;
   if (normalization == Normalization::CentreAndDiagonal)
   {
     // The box centred at the origin with a diagonal of 1: tolerances become relative, and the

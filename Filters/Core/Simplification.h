@@ -25,6 +25,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -133,16 +134,32 @@ enum class Normalization : std::uint8_t
   PowerOfTwo         // scaled by a power of two (exact) when the diagonal is outside [2^-64, 2^64]
 };
 
-/// How an algorithm's coordinates relate to the input's: frame = (input − Origin) · Scale.
+/// How an algorithm's coordinates relate to the input's: frame = (input − Origin) · Scale; and
+/// the box of the usable input, which no output point leaves: an algorithm that places points
+/// keeps them in it (InBox), and the way back to input units rounds within it (ToInput). So a
+/// terrain's peak never rises above its highest point, nor a grid's border leaves its footprint.
 struct Frame
 {
   Eigen::Vector3d Origin = Eigen::Vector3d::Zero();
   double Scale = 1.0;
   bool Centred = false; // Origin is used (CentreAndDiagonal)
+  /// The box, in input units (PrepareMesh sets it; unbounded by default).
+  Eigen::Vector3d Lower = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+  Eigen::Vector3d Upper = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
 
   Eigen::Vector3d ToInput(const Eigen::Vector3d& x) const
   {
-    return this->Centred ? Eigen::Vector3d(x / this->Scale + this->Origin) : Eigen::Vector3d(x / this->Scale);
+    const Eigen::Vector3d p = this->Centred ? Eigen::Vector3d(x / this->Scale + this->Origin) : Eigen::Vector3d(x / this->Scale);
+    return p.cwiseMax(this->Lower).cwiseMin(this->Upper);
+  }
+  Eigen::Vector3d ToFrame(const Eigen::Vector3d& p) const
+  {
+    return this->Centred ? Eigen::Vector3d((p - this->Origin) * this->Scale) : Eigen::Vector3d(p * this->Scale);
+  }
+  /// x, in frame units, moved into the box.
+  Eigen::Vector3d InBox(const Eigen::Vector3d& x) const
+  {
+    return x.cwiseMax(this->ToFrame(this->Lower)).cwiseMin(this->ToFrame(this->Upper));
   }
 };
 

@@ -609,6 +609,10 @@ void VolumeCollapser::PlaceFreely(const std::int32_t* v, const Quadric& q, Colla
   {
     x = blend; // a far minimiser of a barely conditioned Q̄ would make a spike
   }
+  if (this->Normalised.InBox(x) != x)
+  {
+    x = blend; // no point beyond the input's box (a terrain's peak, its border): the blend is inside
+  }
   // Attribute weights: barycentric coordinates of x projected onto the triangle, clamped.
   const Vec3 n = (p1 - p0).cross(p2 - p0);
   const double n2 = n.squaredNorm();
@@ -779,6 +783,10 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
     if ((x - middle).squaredNorm() > 4.0 * (pb - pa).squaredNorm())
     {
       x = middle; // as for triangles: no spike from a barely conditioned quadric
+    }
+    if (this->Normalised.InBox(x) != x)
+    {
+      x = middle; // inside the input's box, as the edge is
     }
     const double cost = q.Evaluate(x);
     if (cost < bestCost)

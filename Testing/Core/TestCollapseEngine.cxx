@@ -1301,7 +1301,10 @@ void VolumeCollapseGuardIsAPrice()
 {
   // A steep terrain (relief twice its width): thin triangles are its shape. The guard prices
   // them instead of refusing them, so at 95 % the surface stays close to where it is with no
-  // guard at all: the farthest input point 1.75 times as far (as a wall, 5.0 times).
+  // guard at all. With placements kept in the input's box (issue 45) the unguarded run's
+  // farthest input point came from 0.163 to 0.109 and the guarded one's stayed (0.227, 0.233):
+  // the guarded run stays where it was (a bound tighter than the 2 x 0.163 the ratio allowed
+  // before), within 2.5 times the unguarded one (as a wall it was 5.0 times a worse one).
   Mesh terrain = Grid(40); // 3200 triangles
   std::mt19937 random(11);
   for (std::size_t i = 2; i < terrain.Points.size(); i += 3)
@@ -1313,7 +1316,7 @@ void VolumeCollapseGuardIsAPrice()
   const auto [with, without] = FarthestWithAndWithout(terrain, 0.95,
     [](meshsimp::VolumeCollapseOptions& options) { options.MinimumAngle = 0.0; });
   std::printf("steep terrain at 95 %%: farthest %g with the guard, %g without\n", with, without);
-  CHECK(with < 2.0 * without);
+  CHECK(with < 0.25 && with < 2.5 * without);
 }
 
 void VolumeCollapseHugeAndTinyCoordinates()
