@@ -608,6 +608,10 @@ private:
   /// Puts back the points of an iteration's step that turn a triangle over (see the body).
   void UndoTurningMoves(const std::vector<Survivor>& survivors, const OutputPoints& points,
     std::vector<Vec3>& next) const;
+  /// The usable input as it is, for a count target that keeps every triangle (a reduction of
+  /// 0): each point its own cluster at its input coordinates, no error, as the collapse
+  /// filters give it back.
+  void WriteInput(OctreeClusteringResult& result) const;
   void WriteResult(const std::vector<Survivor>& survivors, const OutputPoints& points,
     OctreeClusteringResult& result) const;
   void Finalize(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& owner,
@@ -630,6 +634,7 @@ private:
   /// the bounding-box diagonal is 1 and tolerances are relative.
   PreparedMesh Prepared;
   Outcome Start; // the prepared mesh's report
+  bool KeepsEverything = false; // a count target of every usable triangle: the input as it is
   std::vector<Vec3> P;
   Box Bounds; // of P
   std::vector<HeapEntry> Batch; // NextBatch's
@@ -712,8 +717,12 @@ void Clusterer::PrepareGeometry()
     }
   }, 8 * m);
   // From here on triangles are read at their corners in the adjacency; the list's memory
-  // serves the arrays that follow.
-  std::vector<std::int32_t>().swap(this->Prepared.Mesh.Triangles);
+  // serves the arrays that follow, unless the target keeps every triangle (WriteInput).
+  this->KeepsEverything = this->Counting() && this->Prepared.TargetTriangles >= m;
+  if (!this->KeepsEverything)
+  {
+    std::vector<std::int32_t>().swap(this->Prepared.Mesh.Triangles);
+  }
 }
 
 Plane Clusterer::BoundaryPlane(
@@ -2753,6 +2762,35 @@ void Clusterer::WriteResult(const std::vector<Survivor>& survivors, const Output
   }
 }
 
+void Clusterer::WriteInput(OctreeClusteringResult& result) const
+{
+  const CompactMesh& mesh = this->Prepared.Mesh;
+  const std::int64_t n = static_cast<std::int64_t>(mesh.InputVertex.size());
+  result.Points.resize(3 * n);
+  result.PointCells.resize(6 * n);
+  result.SourceOffsets.resize(n + 1);
+  result.SourcePoints = mesh.InputVertex;
+  result.SourceWeights.assign(n, 1.0);
+  result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
+  for (std::int64_t v = 0; v < n; ++v)
+  {
+    const Vec3 x = this->Input.Point(mesh.InputVertex[v]);
+    for (int k = 0; k < 3; ++k)
+    {
+      result.Points[3 * v + k] = result.PointCells[6 * v + k] = result.PointCells[6 * v + 3 + k] = x[k];
+    }
+    result.SourceOffsets[v] = static_cast<std::int32_t>(v);
+    result.VertexToPoint[mesh.InputVertex[v]] = static_cast<std::int32_t>(v);
+  }
+  result.SourceOffsets[n] = static_cast<std::int32_t>(n);
+  result.Triangles = mesh.Triangles;
+  result.TriangleSource = mesh.InputTriangle;
+  result.Report.MaximumError = 0.0;
+  result.FieldValues.emplace_back("MaximumClusterError", 0.0);
+  result.AddPointArray("ClusterSize", std::vector<double>(n, 1.0), NamedArray::Kind::Integer);
+  result.AddPointArray("ClusterError", std::vector<double>(n, 0.0));
+}
+
 void Clusterer::Finalize(const std::vector<Survivor>& survivors, const std::vector<std::int32_t>& owner,
   OctreeClusteringResult& result)
 {
@@ -2899,6 +2937,12 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   {
     return false;
   }
+  if (this->KeepsEverything && !this->P.empty())
+  {
+    result.Report = this->Start;
+    this->WriteInput(result);
+    return this->Report(1.0);
+  }
   this->ClassifyVertices();
   this->PrepareQuadrics();
   if (!this->Report(0.15))
@@ -2913,6 +2957,7 @@ bool Clusterer::Run(OctreeClusteringResult& result)
     result.VertexToPoint.assign(this->Input.NumberOfPoints, -1);
     return this->Report(1.0);
   }
+
   this->PlantTree(target);
   std::vector<Survivor> survivors;
   Mending mending;
