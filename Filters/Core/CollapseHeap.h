@@ -10,8 +10,9 @@
  *
  * Tie rule, so that results are deterministic: of two equal costs the one set earlier comes
  * first. Each Set() draws a fresh sequence number, so an element whose cost is set again goes
- * behind the others of the same cost — paper 004 §3.5 queues a triangle whose new cost is zero
- * behind the triangles already waiting with cost zero. Fill the heap in id order to make the
+ * behind the others of the same cost — Zhou, Zhang and Cheng, "Mesh Simplification by Volume
+ * Variation with Feature Preserving", §3.5, queue a triangle whose new cost is zero behind the
+ * triangles already waiting with cost zero. Fill the heap in id order to make the
  * initial order the id order.
  */
 #ifndef MeshSimplification_CollapseHeap_h

@@ -735,7 +735,8 @@ CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) cons
       const Eigen::Vector3d& q = this->Points[qId];
       const Eigen::Vector3d edge = q - p;
       const Eigen::Vector3d normal = (p - old).cross(q - old);
-      // Paper 001 §5.3: the plane through the opposite edge, perpendicular to the triangle.
+      // Franc, "Methods for Polygonal Mesh Simplification", §5.3: the plane through the
+      // opposite edge, perpendicular to the triangle.
       const Eigen::Vector3d inward = normal.cross(edge);
       const double sideOld = inward.dot(old - p);
       const double sideNew = inward.dot(x - p);

@@ -16,7 +16,8 @@
  * so that a fan is not restored in quadratic time either.
  *
  * A collapse merges a connected set of two vertices (an edge, or a half-edge when the position is
- * one end point) or three (a triangle, paper 004) into the first of them, the kept vertex, at a
+ * one end point) or three (a triangle, as in Zhou, Zhang and Cheng's volume-variation
+ * simplification) into the first of them, the kept vertex, at a
  * new position. Triangles with two of the merged vertices disappear: the two around an edge, or
  * the triangle and its up-to-three edge neighbours. Every collapse leaves a CollapseRecord with
  * the attribute weights (value(kept) := Σ weight_i · value(vertex_i)) and, unless records are

@@ -15,6 +15,8 @@ sound meshes of every format) by damage of known kinds, runs each binary given o
 
     hostile_files.py [--count N] [--seed S] [--work DIR] BINARY [BINARY ...]
 
+The seeds are the project's own (Testing/Data/Fuzz/MeshFiles); nothing outside the checkout.
+
 The files are made the same for a given seed, so two builds meet the same files.
 """
 import argparse
@@ -24,6 +26,7 @@ import random
 import re
 import subprocess
 import sys
+import tempfile
 from collections import Counter
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -144,8 +147,9 @@ def main():
     parser.add_argument("binaries", nargs="+")
     parser.add_argument("--count", type=int, default=1200)
     parser.add_argument("--seed", type=int, default=50)
-    parser.add_argument("--work", default="/tmp/hostile_files")
+    parser.add_argument("--work", default=None, help="folder for the files (default: a new temporary one)")
     args = parser.parse_args()
+    args.work = args.work or tempfile.mkdtemp(prefix="hostile_files_")
     os.makedirs(args.work, exist_ok=True)
     files = make_files(args.count, args.seed, args.work)
     columns = ["crash", "hang", "silent", "other", "error", "read"]
