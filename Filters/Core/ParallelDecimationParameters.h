@@ -40,7 +40,7 @@ struct ParallelDecimationParameters
   ImportanceMeasure Measure = ImportanceMeasure::Quadric;
   /// Quadric: move each survivor to the point of least error of its accumulated quadric after
   /// the last round, within half its shortest edge (MinimizeQuadricWithin). Off: survivors keep
-  /// their input coordinates (a larger distance to the input; see the README's benchmark).
+  /// their input coordinates (a larger distance to the input; see ParallelDecimation.md).
   bool MoveSurvivors = true;
   /// AveragePlane: a survivor adds the importance of each vertex collapsed into it to its own,
   /// so that error does not vanish from the ordering when its vertex goes.

@@ -80,7 +80,7 @@
  *   new angle, and is made when every collapse that makes no sliver costs more. As a wall it
  *   made the order skip the right collapses on steep terrain, where thin triangles are the
  *   shape: terrain_fractal_steep at 95 % had 4.0× vtkQuadricDecimation's mean distance, now
- *   1.6×; the corpus's terrain class 1.28× -> 1.10× at 70/95 % (see the README). A flat
+ *   1.6×; the corpus's terrain class 1.28× -> 1.10× at 70/95 % (see VolumeTriangleCollapse.md). A flat
  *   collapse — its error under 10⁻⁷ · Σ weights · (longest edge)², the point within about
  *   3·10⁻⁴ edge lengths of its planes — that fails only the guard, and for which no corner
  *   placement passes, is still made: on a plane or a straight crease it loses nothing,

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""The README's error-bound table: each filter under a relative bound, its triangle count, the
+"""The error-bound table of Filters/Core/ErrorBounds.md: each filter under a relative bound, its triangle count, the
 largest error it reports (which must not pass the bound) and the symmetric Hausdorff distance the
 kit's metro measures (% of the diagonal).
 
