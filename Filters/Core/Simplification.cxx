@@ -128,6 +128,8 @@ PreparedMesh PrepareMesh(const TriangleMeshView& input, const SimplificationOpti
   };
   prepared.Mesh = MakeCompactMesh(input, context, options.CloseCracks ? mayMerge : PointMergeTest());
   Normalize(prepared, normalization, context);
+  prepared.FrameLower = prepared.ToFrame(prepared.Lower);
+  prepared.FrameUpper = prepared.ToFrame(prepared.Upper);
   GatherLocks(prepared, options, context);
   const Target& goal = options.Goal;
   prepared.TargetTriangles = goal.TriangleCountFor(static_cast<std::int64_t>(prepared.Mesh.InputTriangle.size()));

@@ -143,9 +143,10 @@ struct Frame
   Eigen::Vector3d Origin = Eigen::Vector3d::Zero();
   double Scale = 1.0;
   bool Centred = false; // Origin is used (CentreAndDiagonal)
-  /// The box, in input units (PrepareMesh sets it; unbounded by default).
+  /// The box, in input units and in frame units (PrepareMesh sets both; unbounded by default).
   Eigen::Vector3d Lower = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
   Eigen::Vector3d Upper = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d FrameLower = Lower, FrameUpper = Upper;
 
   Eigen::Vector3d ToInput(const Eigen::Vector3d& x) const
   {
@@ -159,7 +160,7 @@ struct Frame
   /// x, in frame units, moved into the box.
   Eigen::Vector3d InBox(const Eigen::Vector3d& x) const
   {
-    return x.cwiseMax(this->ToFrame(this->Lower)).cwiseMin(this->ToFrame(this->Upper));
+    return x.cwiseMax(this->FrameLower).cwiseMin(this->FrameUpper);
   }
 };
 
