@@ -89,6 +89,7 @@ public:
       this->Position[last.Id] = slot;
       this->Restore(slot);
     }
+    this->ReleaseUnused();
   }
 
   std::int32_t Pop()
@@ -148,6 +149,17 @@ private:
       slot = best;
     }
     this->Place(slot, entry);
+  }
+
+  /// A heap emptied to a quarter of its room gives the rest back: a decimator's heap holds
+  /// every triangle at first and few at the end, when its collapse records are the most.
+  void ReleaseUnused()
+  {
+    constexpr std::size_t smallest = 1 << 16;
+    if (this->Entries.capacity() > smallest && 4 * this->Entries.size() < this->Entries.capacity())
+    {
+      this->Entries.shrink_to_fit();
+    }
   }
 
   /// Sequence numbers run out after 2^32 - 1 Set() calls: number the entries again in their

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <numeric>
 #include <sstream>
 
@@ -260,7 +261,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->HasHingeVertices = std::find(this->Classes.begin(), this->Classes.end(), VertexClass::Hinge) != this->Classes.end();
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
   this->Indexed.clear();
-  this->Places.clear();
+  this->Places.reset();
   for (std::int32_t v = 0; v < n; ++v)
   {
     this->IndexSpan(v);
@@ -273,33 +274,12 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->UndoneUndo.clear();
   this->Changes.clear();
   this->RemovedTriangles.clear();
-  this->AngleCosines.clear();
-  if (this->MinimumAngleCosine < 1.0)
-  {
-    this->MeasureAllAngles(context);
-  }
   mesh = CompactMesh();
-}
-
-void CollapseMesh::MeasureAllAngles(const ExecutionContext& context)
-{
-  const std::int64_t m = static_cast<std::int64_t>(this->Alive.size());
-  this->AngleCosines.resize(m);
-  context.For(m, [&](std::int64_t first, std::int64_t last) {
-    for (std::int64_t t = first; t < last; ++t)
-    {
-      this->MeasureAngles(static_cast<std::int32_t>(t));
-    }
-  }, 30 * m);
 }
 
 void CollapseMesh::SetPoint(std::int32_t v, const Eigen::Vector3d& x)
 {
   this->Points[v] = x;
-  if (!this->AngleCosines.empty())
-  {
-    this->ForEachTriangle(v, [this](std::int32_t t) { this->MeasureAngles(t); });
-  }
 }
 
 Eigen::Vector3d CollapseMesh::Normal(std::int32_t t) const
@@ -780,7 +760,7 @@ CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) cons
   for (int i = 0; i < plan.Count; ++i)
   {
     this->ForEachTriangle(
-      plan.Vertices[i], [&](std::int32_t t) { worstBefore = std::max(worstBefore, this->AngleCosines[t]); });
+      plan.Vertices[i], [&](std::int32_t t) { worstBefore = std::max(worstBefore, this->SmallestAngleCosineOf(t)); });
   }
   return worstAfter <= worstBefore ? CollapseCheck::Passed : CollapseCheck::AngleGuard;
 }
@@ -788,14 +768,6 @@ CollapseCheck CollapseMesh::ChangedTrianglesCheck(const CollapsePlan& plan) cons
 void CollapseMesh::SetMinimumAngle(double degrees)
 {
   this->MinimumAngleCosine = degrees > 0.0 ? std::cos(degrees * 3.14159265358979323846 / 180.0) : 1.0;
-  if (this->MinimumAngleCosine == 1.0)
-  {
-    std::vector<double>().swap(this->AngleCosines); // nothing reads them until a guard is set
-  }
-  else if (this->AngleCosines.empty())
-  {
-    this->MeasureAllAngles({});
-  }
 }
 
 CollapseCheck CollapseMesh::FirstFailedCheck(const CollapsePlan& plan, CheckScratch& scratch) const
@@ -915,8 +887,15 @@ void CollapseMesh::IndexSpan(std::int32_t v)
   }
   if (this->Indexed.empty())
   {
+    // Zeroed by calloc, whose large blocks are fresh pages of zeros never written: only the
+    // pages holding a fan's corners take memory, not 12 bytes for every triangle. A place read
+    // back is always checked against the span (a zero where none was written is a stale hint).
     this->Indexed.assign(this->Points.size(), 0);
-    this->Places.assign(this->Triangles.size(), -1);
+    this->Places.reset(static_cast<std::int32_t*>(std::calloc(this->Triangles.size(), sizeof(std::int32_t))));
+    if (!this->Places)
+    {
+      throw std::bad_alloc();
+    }
   }
   this->Indexed[v] = 1;
   const std::int32_t* ids = this->Refs.data() + this->Start[v];
@@ -1088,10 +1067,6 @@ int CollapseMesh::Merge(
     });
   }
   this->Points[kept] = plan.Position;
-  for (const std::int32_t t : span)
-  {
-    this->MeasureAngles(t); // its shape changed
-  }
   for (int i = 1; i < plan.Count; ++i)
   {
     const VertexClass c = this->Classes[plan.Vertices[i]];
@@ -1278,10 +1253,6 @@ void CollapseMesh::Undo()
   }
   this->Points[kept] = undo.KeptPosition;
   this->Classes[kept] = undo.KeptClass;
-  for (const std::int32_t t : candidates)
-  {
-    this->MeasureAngles(t);
-  }
 
   std::vector<std::int32_t> span;
   for (const std::int32_t v : { kept, record.Removed[0], record.Removed[1] })

@@ -65,6 +65,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -193,6 +195,12 @@ struct CollapsePlan
   /// Whether the angle guard (SetMinimumAngle) applies to this collapse; a policy may waive it
   /// for collapses that do not change the surface.
   bool GuardAngles = true;
+};
+
+/// Releases what std::calloc gave (the deleter of CollapseMesh's span places).
+struct FreeMemory
+{
+  void operator()(void* memory) const { std::free(memory); }
 };
 
 class CollapseMesh
@@ -451,17 +459,12 @@ private:
   std::int32_t& PlaceIn(std::int32_t v, std::int32_t t);
   /// Takes t out of w's span (see the top of the file).
   void DropFromSpan(std::int32_t w, std::int32_t t);
-  /// AngleCosines for every triangle (from Build, or when the guard is first turned on).
-  void MeasureAllAngles(const ExecutionContext& context);
-  /// AngleCosines[t] for t's current points, when AngleCosines is kept.
-  void MeasureAngles(std::int32_t t)
+  /// The cosine of t's smallest angle at its current points: measured when the angle guard
+  /// reads it (rarely: only where a new angle is below the minimum), not kept per triangle.
+  double SmallestAngleCosineOf(std::int32_t t) const
   {
-    if (!this->AngleCosines.empty())
-    {
-      const std::int32_t* tri = this->Triangle(t);
-      this->AngleCosines[t] =
-        SmallestAngleCosine(this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]);
-    }
+    const std::int32_t* tri = this->Triangle(t);
+    return SmallestAngleCosine(this->Points[tri[0]], this->Points[tri[1]], this->Points[tri[2]]);
   }
   /// Adds t at the end of w's indexed span (see the top of the file), unless it is there.
   void AddToIndexedSpan(std::int32_t w, std::int32_t t);
@@ -485,13 +488,10 @@ private:
   // Where spans are indexed (IndexSpan): per vertex whether its span is, and per triangle corner
   // its place in the span of the corner's vertex; both empty until a span needs it.
   std::vector<std::uint8_t> Indexed;
-  std::vector<std::int32_t> Places;
+  std::unique_ptr<std::int32_t[], FreeMemory> Places; // 3 per triangle, see IndexSpan
   std::vector<std::uint8_t> Shared; // ApplyIndependent: spans updated after the concurrent merges
 
   double MinimumAngleCosine = 1.0;
-  // Per triangle the cosine of its smallest angle, kept from the first SetMinimumAngle on (the
-  // angle guard compares a collapse's new angles with its neighbourhood's), else empty.
-  std::vector<double> AngleCosines;
   std::vector<std::int32_t> Regions;
 
   std::vector<CollapseRecord> History;

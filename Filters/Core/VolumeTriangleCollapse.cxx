@@ -240,7 +240,14 @@ private:
   Frame Normalised;                                      // the centred box of diagonal 1
   double Diagonal = 1.0;                                 // 1 / Normalised.Scale
   std::vector<Vec3> Normals;
-  std::vector<double> Areas;
+  /// A triangle's area from its points, as UpdateGeometry measures its normal: read only when
+  /// a triangle or a vertex's sums are updated, it is not kept (8 bytes a triangle).
+  double Area(std::int32_t t) const
+  {
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    const Vec3& p = this->Mesh.Point(tri[0]);
+    return 0.5 * (this->Mesh.Point(tri[1]) - p).cross(this->Mesh.Point(tri[2]) - p).norm();
+  }
   /// Q_i of eq. (4) is the plane of triangle i (its normal through its first corner) with a
   /// weight: the weight is kept (8 bytes a triangle, not the quadric's 80) and the quadric
   /// made when read. Its normal and corners are refreshed with it (UpdateGeometry and
@@ -308,7 +315,6 @@ void VolumeCollapser::UpdateGeometry(std::int32_t t)
   const Vec3 cross = (*p[1] - *p[0]).cross(*p[2] - *p[0]);
   const double length = cross.norm();
   this->Normals[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
-  this->Areas[t] = 0.5 * length;
   if (!this->TracksCurvature)
   {
     return;
@@ -345,7 +351,7 @@ void VolumeCollapser::UpdateVertex(std::int32_t v)
       const std::int32_t* tri = this->Mesh.Triangle(t);
       angles += this->Angles[3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2)];
     }
-    area += this->Areas[t];
+    area += this->Area(t);
     sum += this->TriangleQuadric(t);
   });
   this->VertexQuadrics[v] = sum;
@@ -394,7 +400,7 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
         {
           this->Deficit[c] -= sign * this->Angles[3 * t + k];
         }
-        this->VertexArea[c] += sign * this->Areas[t];
+        this->VertexArea[c] += sign * this->Area(t);
       }
     });
   }
@@ -402,7 +408,7 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
 
 void VolumeCollapser::UpdateQuadric(std::int32_t t)
 {
-  const double area = this->Areas[t];
+  const double area = this->Area(t);
   const Vec3& n = this->Normals[t];
   if (!(area > 0.0) || n == Vec3::Zero())
   {
@@ -1117,8 +1123,7 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   this->Normalised = prepared;
   this->Diagonal = prepared.Diagonal > 0.0 ? prepared.Diagonal : 1.0;
   // No triangle's smallest angle exceeds 60°: a larger guard (or an infinite one, which
-  // halving never lowers) would only refuse every collapse. Set before Build, which then
-  // measures every triangle's angles concurrently.
+  // halving never lowers) would only refuse every collapse.
   this->GuardAngle = std::min(60.0, std::max(0.0, this->Options.MinimumAngle));
   result.FinalMinimumAngle = this->GuardAngle;
   this->Mesh.SetMinimumAngle(this->GuardAngle);
@@ -1151,7 +1156,6 @@ void VolumeCollapser::MeasureAll()
   const std::int32_t n = this->Mesh.NumberOfPoints();
   const std::int32_t m = this->Mesh.NumberOfTriangles();
   this->Normals.resize(m);
-  this->Areas.resize(m);
   this->TracksCurvature = this->Options.FeatureCurvature > 0.0;
   this->Angles.resize(this->TracksCurvature ? 3 * static_cast<std::size_t>(m) : 0);
   this->TriangleWeights.resize(m);
@@ -1185,9 +1189,9 @@ void VolumeCollapser::MeasureAll()
   {
     this->HasFans = this->Mesh.NumberOfTrianglesAround(v) > FanLimit;
   }
-  for (const double a : this->Areas)
+  for (std::int32_t t = 0; t < m; ++t)
   {
-    this->TotalArea += a;
+    this->TotalArea += this->Area(t);
   }
   if (this->Options.SurfaceErrorWeight > 0.0)
   {
@@ -1206,11 +1210,12 @@ void VolumeCollapser::GatherInputPlanes()
   this->InputPlanes.assign(this->Mesh.NumberOfPoints(), Quadric());
   for (std::int32_t t = 0; t < m; ++t)
   {
-    if (this->Areas[t] > 0.0)
+    const double area = this->Area(t);
+    if (area > 0.0)
     {
       const Vec3& normal = this->Normals[t];
       const std::int32_t* tri = this->Mesh.Triangle(t);
-      const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), this->Areas[t]);
+      const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), area);
       for (int k = 0; k < 3; ++k)
       {
         this->InputPlanes[tri[k]] += plane;
@@ -1595,7 +1600,6 @@ void VolumeCollapser::ReleaseWorkspace()
 {
   const auto release = [](auto& list) { std::decay_t<decltype(list)>().swap(list); };
   release(this->Normals);
-  release(this->Areas);
   release(this->TriangleWeights);
   release(this->VertexQuadrics);
   release(this->InputPlanes);
