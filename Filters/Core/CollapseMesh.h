@@ -174,16 +174,43 @@ enum class CollapseCheck : std::uint8_t
 constexpr std::size_t NumberOfCollapseChecks = 10; // the values of CollapseCheck
 static_assert(static_cast<std::size_t>(CollapseCheck::AngleGuard) + 1 == NumberOfCollapseChecks,
   "NumberOfCollapseChecks counts CollapseCheck's values");
-/// How many plans failed each check first (indexed by CollapseCheck; Passed counts legal ones).
-using RefusalCounts = std::array<std::int64_t, NumberOfCollapseChecks>;
+/// Why a vertex is locked, or why a plan fails the locks check, as the user knows the rule.
+/// The values are CollapseMesh's lock bytes (0: not locked); SharedPoint is SharedPointLock.
+enum class LockReason : std::uint8_t
+{
+  Options = 1,                   // the caller's options (its locked points, PreserveBoundary)
+  SharedPoint = SharedPointLock, // a point shared with another piece of a distributed mesh
+  NonManifold,                   // a non-manifold vertex (always locked)
+  BorderCorner,                  // the filter's: the border turns there by more than BoundaryCornerAngle
+  OffHinge                       // a plan only: it moves a vertex off its hinge
+};
+constexpr std::size_t NumberOfLockReasons = 5;
+/// The place of a LockReason in per-reason tables.
+constexpr std::size_t LockIndex(LockReason reason)
+{
+  return static_cast<std::size_t>(reason) - 1;
+}
+
+/// How many plans failed each check first (Passed counts legal ones), and the locks check's
+/// refusals again by LockReason.
+struct RefusalCounts
+{
+  std::array<std::int64_t, NumberOfCollapseChecks> ByCheck{};
+  std::array<std::int64_t, NumberOfLockReasons> ByLock{};
+  std::int64_t Total() const;
+};
 
 /**
  * The two commonest refusals among counts, with their shares of all the plans counted, for a
- * report: "71 % would remove or move a locked vertex (...), 25 % would break ...". Plans that
+ * report: "71 % would remove or move a border corner (...), 25 % would break ...". Plans that
  * passed were refused by a rule of the caller's, which passedText says ("would ..."). Empty
  * when nothing was counted.
  */
 std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText);
+
+/// "140 non-manifold, 6 border corners" (or "all non-manifold", or "non-manifold" for one):
+/// locked vertices counted by LockReason, for a report.
+std::string DescribeLocked(const std::array<std::int64_t, NumberOfLockReasons>& counts);
 
 /// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
 struct CollapsePlan
@@ -246,11 +273,20 @@ public:
   /// vertices at their other ends go to ends in increasing order, the first two of them.
   int HingeEnds(std::int32_t v, std::int32_t ends[2]) const;
   bool IsLocked(std::int32_t v) const { return this->Locked[v] != 0; }
-  /// Locks v; shared: v is also in another piece of a distributed mesh (see IsLegal).
-  void Lock(std::int32_t v, bool shared = false)
+  /// Why the locked vertex v is locked (never OffHinge).
+  LockReason WhyLocked(std::int32_t v) const { return static_cast<LockReason>(this->Locked[v]); }
+  /// Counts plan's first failed check in counts, and for the locks check its LockReason: the
+  /// first locked vertex it removes, else the locked one it moves, else the hinge rule.
+  void CountRefusal(const CollapsePlan& plan, CollapseCheck failed, RefusalCounts& counts) const;
+  /// Locks v for reason; SharedPoint: v is also in another piece of a distributed mesh (see
+  /// IsLegal). A non-manifold vertex, locked by Build, keeps that reason unless it is shared.
+  void Lock(std::int32_t v, LockReason reason)
   {
-    this->Locked[v] = shared ? SharedPointLock : 1;
-    this->HasSharedLocks = this->HasSharedLocks || shared;
+    if (this->WhyLocked(v) != LockReason::NonManifold || reason == LockReason::SharedPoint)
+    {
+      this->Locked[v] = static_cast<std::uint8_t>(reason);
+    }
+    this->HasSharedLocks = this->HasSharedLocks || reason == LockReason::SharedPoint;
   }
 
   /**
@@ -477,7 +513,7 @@ private:
   std::vector<std::uint8_t> Alive;
   std::int64_t AliveCount = 0;
   std::vector<VertexClass> Classes;
-  std::vector<std::uint8_t> Locked; // 0, 1 or SharedPointLock
+  std::vector<std::uint8_t> Locked; // 0 or a LockReason
   bool HasSharedLocks = false;
   bool HasHingeVertices = false; // see HasHinges
   std::vector<std::int64_t> Start; // per vertex, into Refs (which grows past 2^31 entries on

@@ -892,7 +892,7 @@ std::int64_t Decimator::Prepare(const TriangleMeshView& input, ParallelDecimatio
   {
     if (prepared.Locks[v])
     {
-      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock);
+      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock ? LockReason::SharedPoint : LockReason::Options);
     }
   }
   this->Importance.assign(n, Never);
@@ -1152,7 +1152,8 @@ std::string Decimator::RefusalSummary() const
   // Why no vertex can be removed: the locked ones (non-manifold ones always are), and what
   // refuses every half-edge collapse of the others (measured once, where the rounds stop).
   std::int64_t left = 0, locked = 0;
-  RefusalCounts refused{};
+  std::array<std::int64_t, NumberOfLockReasons> lockedBy{};
+  RefusalCounts refused;
   std::vector<std::int32_t> neighbours;
   CollapsePlan plan;
   plan.Count = 2;
@@ -1166,6 +1167,7 @@ std::string Decimator::RefusalSummary() const
     if (this->Mesh.IsLocked(v))
     {
       ++locked;
+      ++lockedBy[LockIndex(this->Mesh.WhyLocked(v))];
       continue;
     }
     this->Mesh.Neighbours(v, neighbours);
@@ -1174,15 +1176,16 @@ std::string Decimator::RefusalSummary() const
       plan.Vertices[0] = u;
       plan.Vertices[1] = v;
       plan.Position = this->Mesh.Point(u);
-      ++refused[static_cast<std::size_t>(this->Mesh.FirstFailedCheck(plan))];
+      this->Mesh.CountRefusal(plan, this->Mesh.FirstFailedCheck(plan), refused);
     }
   }
-  const std::int64_t tried = std::accumulate(refused.begin(), refused.end(), std::int64_t(0));
+  const std::int64_t tried = refused.Total();
   std::string text = ": of the " + std::to_string(left) + " vertices left, " + std::to_string(locked) +
-    " are locked (non-manifold ones always are)";
+    (locked == 1 ? " is locked" : " are locked") + (locked > 0 ? " (" + DescribeLocked(lockedBy) + ")" : std::string());
   return tried == 0 ? text
                     : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " +
-      DescribeRefusals(refused, "are refused by the filter's own rules (corners, normal deviation)");
+      DescribeRefusals(refused, "are refused by the filter's own rules (a feature corner or edge above FeatureAngle, a "
+        "normal turned by more than MaximumNormalDeviation)");
 }
 
 void Decimator::Judge(ParallelDecimationResult& result) const
@@ -1388,8 +1391,9 @@ bool ParallelDecimation(const TriangleMeshView& input, const ParallelDecimationO
   {
     return false;
   }
-  result.Report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were left at their values: raised up to "
-    "180 degrees they removed features and still stopped at " + std::to_string(relaxed) + " triangles");
+  result.Report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were left at their values: raising them "
+    "up to 180 degrees removed features and reached only " + std::to_string(relaxed) +
+    " triangles, where this output has " + std::to_string(result.NumberOfTriangles()));
   return true;
 }
 

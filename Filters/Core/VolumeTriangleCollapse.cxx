@@ -1138,7 +1138,9 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   {
     if (prepared.Locks[v] || this->Mesh.Class(v) == VertexClass::Corner)
     {
-      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock);
+      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock ? LockReason::SharedPoint
+          : prepared.Locks[v]                                 ? LockReason::Options
+                                                              : LockReason::BorderCorner);
     }
   }
   this->MeasureAll();
@@ -1325,7 +1327,7 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
   }
   std::stable_sort(options.begin(), options.end(), [](const Option& a, const Option& b) { return a.Cost < b.Cost; });
   bool any = false;
-  this->RefusedBy.fill(0);
+  this->RefusedBy = RefusalCounts();
   // Until a collapse is made, what refused each option: the report of a pass that makes none.
   std::vector<std::tuple<std::int32_t, std::int32_t, CollapseCheck>> verdicts;
   for (const Option& option : options)
@@ -1359,9 +1361,14 @@ bool VolumeCollapser::CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult&
     // Nothing changed during the pass: each half-edge (listed from both its triangles) once.
     std::sort(verdicts.begin(), verdicts.end());
     verdicts.erase(std::unique(verdicts.begin(), verdicts.end()), verdicts.end());
+    CollapsePlan plan;
+    plan.Count = 2;
     for (const auto& verdict : verdicts)
     {
-      ++this->RefusedBy[static_cast<std::size_t>(std::get<2>(verdict))];
+      plan.Vertices[0] = std::get<0>(verdict);
+      plan.Vertices[1] = std::get<1>(verdict);
+      plan.Position = this->Mesh.Point(plan.Vertices[0]);
+      this->Mesh.CountRefusal(plan, std::get<2>(verdict), this->RefusedBy);
     }
   }
   return any;
@@ -1556,7 +1563,7 @@ std::string VolumeCollapser::RefusalSummary() const
 {
   // What refused the half-edge collapses left: on a mesh stuck at its non-manifold edges the
   // user reads that locks stop it, not that something is wrong.
-  const std::int64_t tried = std::accumulate(this->RefusedBy.begin(), this->RefusedBy.end(), std::int64_t(0));
+  const std::int64_t tried = this->RefusedBy.Total();
   return tried == 0 ? std::string()
                     : ": of the " + std::to_string(tried) + " half-edge collapses left, " +
       DescribeRefusals(this->RefusedBy, "would take the count below the target");
@@ -1573,9 +1580,18 @@ void VolumeCollapser::Judge(VolumeCollapseResult& result) const
   }
   if (this->GuardAngle < std::min(60.0, this->Options.MinimumAngle))
   {
+    // Lowered all the way and still short of the target, the guard is not what binds.
     std::ostringstream note;
-    note << "the angle guard refused every collapse left before the target: lowered from "
-         << this->Options.MinimumAngle << " to " << this->GuardAngle << " degrees";
+    if (report.Stop == StopReason::NothingRemovable)
+    {
+      note << "the angle guard was also lowered from " << this->Options.MinimumAngle << " to "
+           << this->GuardAngle << " degrees, which did not reach it either";
+    }
+    else
+    {
+      note << "the angle guard refused every collapse left before the target: lowered from "
+           << this->Options.MinimumAngle << " to " << this->GuardAngle << " degrees";
+    }
     report.Notes.push_back(note.str());
   }
 }
