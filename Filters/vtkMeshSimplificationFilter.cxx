@@ -370,6 +370,10 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   meshsimp::SimplifiedMesh mesh;
   this->PieceIndex = i;
   this->PieceInput = piece.Input;
+  // The deviation takes the last fifth of the piece's progress.
+  const double shift = this->GetProgressShift(), scale = this->GetProgressScale();
+  const double coreShare = this->ComputeDeviation ? 0.8 : 1.0;
+  this->SetProgressShiftScale(shift, coreShare * scale);
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, this->NumberOfThreads);
   const bool none = (this->TargetMode == TARGET_REDUCTION && this->TargetReduction == 1.0) ||
     (this->TargetMode == TARGET_TRIANGLE_COUNT && this->TargetTriangleCount == 0);
@@ -399,10 +403,15 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   {
     vtkSimplification::AddFieldValue(piece.Output, "JoinedPoints", static_cast<double>(mesh.Report.JoinedPoints));
   }
-  if (this->ComputeDeviation)
+  if (this->ComputeDeviation && !this->GetAbortExecute())
   {
-    this->AddDeviation(piece.Input, piece.Triangles, piece.Output, context);
+    this->SetProgressShiftScale(shift + coreShare * scale, (1.0 - coreShare) * scale);
+    if (!this->AddDeviation(piece.Triangles, mesh, piece.Output, context))
+    {
+      vtkWarningMacro(<< run.Name(i) << "Aborted: the output has no Deviation.");
+    }
   }
+  this->SetProgressShiftScale(shift, scale);
   this->PieceInput = nullptr;
   return true;
 }
@@ -413,10 +422,10 @@ void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimpli
   vtkSimplification::SetOutput(input, triangles, mesh, this->OutputPointsPrecision, output);
 }
 
-void vtkMeshSimplificationFilter::AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
-  vtkPolyData* output, const meshsimp::ExecutionContext& context)
+bool vtkMeshSimplificationFilter::AddDeviation(const vtkSimplification::TriangleInput& triangles,
+  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output, const meshsimp::ExecutionContext& context)
 {
-  vtkSimplification::AddDeviation(input->GetPoints(), triangles, output, context);
+  return vtkSimplification::AddDeviation(triangles.View, mesh, output, context);
 }
 
 void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)

@@ -158,8 +158,11 @@ public:
 
   ///@{
   /**
-   * Add the point array "Deviation": each output point's distance to the input surface, in
-   * input units, with its maximum and RMS in the field data (default off; on in ParaView).
+   * Add the point array "Deviation", in input units: at each output point the larger of its
+   * distance to the input surface and the largest distance to the output surface of the input
+   * points it stands for, so that the two meshes' differences show both ways; with its maximum
+   * (the two-sided, Hausdorff, distance) and RMS in the field data as "DeviationMaximum" and
+   * "DeviationRMS" (default off; on in ParaView). It takes the last fifth of the progress.
    */
   vtkSetMacro(ComputeDeviation, bool);
   vtkGetMacro(ComputeDeviation, bool);
@@ -233,9 +236,9 @@ protected:
   virtual void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
     const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
 
-  /// Adds the Deviation array with ComputeDeviation: each output point's distance to the input
-  /// surface (vtkSimplification::AddDeviation).
-  virtual void AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
+  /// Adds the Deviation array with ComputeDeviation from mesh, the core's result written to
+  /// output (vtkSimplification::AddDeviation); returns false when aborted.
+  virtual bool AddDeviation(const vtkSimplification::TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
     vtkPolyData* output, const meshsimp::ExecutionContext& context);
 
   /// The piece RunCore and WritePiece are called for: its index in the execution's pieces and

@@ -3,6 +3,7 @@
 
 #include "ProgressiveMesh.h"
 #include "vtkSimplificationAttributes.h"
+#include "vtkSimplificationDeviation.h"
 #include "vtkSimplificationInput.h"
 
 #include "vtkCellData.h"
@@ -11,7 +12,6 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
-#include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -442,16 +442,22 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
   output->GetCellData()->RemoveArray(RemovedAtName);
 }
 
-void vtkProgressiveMesh::AddDeviation(vtkPolyData*, const vtkSimplification::TriangleInput&, vtkPolyData* output,
-  const meshsimp::ExecutionContext&)
+bool vtkProgressiveMesh::AddDeviation(const vtkSimplification::TriangleInput& triangles,
+  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output, const meshsimp::ExecutionContext& context)
 {
-  vtkNew<vtkDoubleArray> deviation;
-  deviation->SetName("Deviation");
-  deviation->SetNumberOfValues(output->GetNumberOfPoints());
-  deviation->FillValue(0.0);
-  output->GetPointData()->AddArray(deviation);
-  vtkSimplification::AddFieldValue(output, "DeviationMaximum", 0.0);
-  vtkSimplification::AddFieldValue(output, "DeviationRMS", 0.0);
+  const Cache& cache = *this->Sequences;
+  const std::size_t i = this->PieceIndex;
+  if (i >= cache.Ready.size() || !cache.Ready[i])
+  {
+    return this->Superclass::AddDeviation(triangles, mesh, output, context);
+  }
+  const meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
+  const bool lean = i < cache.Levels.size() && cache.Levels[i] >= 0;
+  const std::int64_t points = lean ? cache.Levels[i] : mesh.NumberOfPoints();
+  meshsimp::SimplifiedMesh level;
+  meshsimp::ExtractLevel(sequence, points, triangles.View, level);
+  meshsimp::ListLevelSources(sequence, points, level);
+  return vtkSimplification::AddDeviation(triangles.View, level, output, context);
 }
 
 void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)

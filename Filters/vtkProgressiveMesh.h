@@ -28,8 +28,9 @@
  * Output points are input points, with their point data unchanged; cell data follows the
  * surviving triangles. Point array "CollapseLevel": the fraction of the sequence at which each
  * point disappears (0 the first removed, 1 never); field data "LevelTriangles" and "LevelPoints". With
- * ComputeDeviation, "Deviation" is 0 at every point (each is an input point; no cell locator is
- * built at each target change). Under an error
+ * ComputeDeviation, "Deviation" is two-sided as in the other filters: an output point is an
+ * input point, but the removed points it stands for lie off the level's surface; it is measured
+ * at each target change (off, a level switch costs only its extraction). Under an error
  * bound, the bound is on the quadric distance of the collapses (the RMS distance of a removed
  * point to the planes merged into it), the same measure as "MaximumError" in the field data.
  *
@@ -108,10 +109,10 @@ protected:
   void WriteSequences(vtkDataObject* levels, vtkDataObject* sequences);
   void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
     const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output) override;
-  /// Output points are input points: their Deviation is 0 without a cell locator over the input,
-  /// which would cost more than the level at every target change.
-  void AddDeviation(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles, vtkPolyData* output,
-    const meshsimp::ExecutionContext& context) override;
+  /// The level's deviation from the sequence: its points and the removed points each stands for
+  /// (meshsimp::ListLevelSources), also where WritePiece wrote the level without extracting it.
+  bool AddDeviation(const vtkSimplification::TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
+    vtkPolyData* output, const meshsimp::ExecutionContext& context) override;
 
   int NumberOfBuilds = 0;
 

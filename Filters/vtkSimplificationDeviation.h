@@ -1,28 +1,30 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file vtkSimplificationDeviation.h
- * @brief The error users colour by (private to the module): each output point's distance to
- * the input surface.
+ * @brief The error users colour by (private to the module): how far each output point's part
+ * of the surface is from the input, both ways.
  */
 #ifndef vtkSimplificationDeviation_h
 #define vtkSimplificationDeviation_h
 
 #include "Execution.h"
-#include "vtkSimplificationInput.h"
+#include "Simplification.h"
+#include "TriangleMesh.h"
 
-class vtkPoints;
 class vtkPolyData;
 
 namespace vtkSimplification
 {
 
 /**
- * Adds the point array "Deviation" to output: the distance of each of its points to the
- * nearest of the input's usable triangles (a cell locator over them), in input units, and its
- * maximum and root mean square over the points as the field values "DeviationMaximum" and
- * "DeviationRMS". The points are measured on the context's threads.
+ * Adds the point array "Deviation" to output, made of mesh from input: each point's two-sided
+ * deviation (meshsimp::TwoSidedDeviation: the larger of its distance to the input and the
+ * largest distance to the output of the input points it stands for), in input units, and its
+ * maximum (the two-sided distance of the meshes) and root mean square over the points as the
+ * field values "DeviationMaximum" and "DeviationRMS". Measured on the context's threads, with
+ * its progress; returns false, adding nothing, when aborted.
  */
-void AddDeviation(vtkPoints* inputPoints, const TriangleInput& triangles, vtkPolyData* output,
+bool AddDeviation(const meshsimp::TriangleMeshView& input, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output,
   const meshsimp::ExecutionContext& context);
 
 }

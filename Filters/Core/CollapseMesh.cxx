@@ -262,6 +262,7 @@ void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const Ex
   this->LiveRefs = static_cast<std::int64_t>(this->Refs.size());
   this->Indexed.clear();
   this->Places.reset();
+  this->MergedInto.clear();
   for (std::int32_t v = 0; v < n; ++v)
   {
     this->IndexSpan(v);
@@ -1002,6 +1003,10 @@ int CollapseMesh::Merge(
   const CollapsePlan& plan, std::vector<std::int32_t>& span, bool keepUndo, std::int64_t& droppedRefs)
 {
   const std::int32_t kept = plan.Vertices[0];
+  for (int i = 1; i < plan.Count && !this->MergedInto.empty(); ++i)
+  {
+    this->MergedInto[plan.Vertices[i]] = kept; // the plans of concurrent merges are disjoint
+  }
   span.clear();
   int removed = 0;
   // A removed triangle leaves the span of its corner outside the plan, so that walks around
@@ -1236,6 +1241,13 @@ void CollapseMesh::Undo()
   this->Undone.push_back(record);
   this->UndoneUndo.push_back(undo);
   const std::int32_t kept = record.Kept;
+  for (int i = 0; i < 2 && !this->MergedInto.empty(); ++i)
+  {
+    if (record.Removed[i] >= 0)
+    {
+      this->MergedInto[record.Removed[i]] = -1;
+    }
+  }
   // Candidates for the restored spans: the kept vertex's triangles and the revived ones.
   std::vector<std::int32_t> candidates;
   this->ForEachTriangle(kept, [&](std::int32_t t) { candidates.push_back(t); });

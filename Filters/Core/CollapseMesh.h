@@ -401,6 +401,11 @@ public:
   void SetRegions(std::vector<std::int32_t> regions) { this->Regions = std::move(regions); }
 
   /// Room for count records (a hint: the list grows past it as it must).
+  /// From now on, keeps for each removed vertex the vertex it was merged into (MergedInto), for
+  /// a caller that keeps no records (ApplyIndependent records none).
+  void TrackMerges() { this->MergedInto.assign(this->Points.size(), -1); }
+  /// Per vertex the one it was last merged into, or -1 (kept, or TrackMerges was not called).
+  const std::vector<std::int32_t>& MergeTargets() const { return this->MergedInto; }
   void ReserveRecords(std::int64_t count) { this->History.reserve(static_cast<std::size_t>(std::max<std::int64_t>(0, count))); }
 
   /**
@@ -529,6 +534,7 @@ private:
 
   double MinimumAngleCosine = 1.0;
   std::vector<std::int32_t> Regions;
+  std::vector<std::int32_t> MergedInto; // see TrackMerges
 
   std::vector<CollapseRecord> History;
   std::vector<CollapseUndo> HistoryUndo; // of the last HistoryUndo.size() records of History

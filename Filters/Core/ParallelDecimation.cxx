@@ -881,6 +881,7 @@ std::int64_t Decimator::Prepare(const TriangleMeshView& input, ParallelDecimatio
   this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
   this->Normalised = prepared;
   this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
+  this->Mesh.TrackMerges(); // for the output points' sources
   this->Mesh.SetRegions(std::move(prepared.Regions));
   if (prepared.Bound >= 0.0)
   {
@@ -1362,7 +1363,7 @@ void Decimator::Output(const TriangleMeshView& input, ParallelDecimationResult& 
   {
     result.AddPointArray("PlaneDistance", std::move(distance));
   }
-  AddSurvivorSources(used, this->InputVertex, result);
+  AddSurvivorSources(used, this->InputVertex, result, this->Mesh.MergeTargets());
   result.FieldValues.emplace_back("Rounds", static_cast<double>(result.Rounds));
   result.FieldValues.emplace_back("MovedPoints", static_cast<double>(result.MovedPoints));
 }

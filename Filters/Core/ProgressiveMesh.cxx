@@ -876,6 +876,31 @@ std::vector<std::int32_t> LevelAncestors(const ProgressiveMesh& sequence, std::i
   return ancestor;
 }
 
+void ListLevelSources(const ProgressiveMesh& sequence, std::int64_t points, SimplifiedMesh& level)
+{
+  const std::vector<std::int32_t> ancestor = LevelAncestors(sequence, points);
+  const std::int64_t n = sequence.NumberOfPoints(), k = n - static_cast<std::int64_t>(ancestor.size());
+  level.SourceOffsets.assign(k + 1, 0);
+  for (std::int64_t p = 0; p < k; ++p)
+  {
+    level.SourceOffsets[p + 1] = 1;
+  }
+  for (const std::int32_t a : ancestor)
+  {
+    ++level.SourceOffsets[a + 1];
+  }
+  std::partial_sum(level.SourceOffsets.begin(), level.SourceOffsets.end(), level.SourceOffsets.begin());
+  level.SourcePoints.resize(n);
+  level.SourceWeights.assign(n, 0.0);
+  std::vector<std::int32_t> next(level.SourceOffsets.begin(), level.SourceOffsets.end() - 1);
+  for (std::int64_t p = 0; p < n; ++p)
+  {
+    const std::int32_t owner = p < k ? static_cast<std::int32_t>(p) : ancestor[p - k];
+    level.SourceWeights[next[owner]] = p < k ? 1.0 : 0.0;
+    level.SourcePoints[next[owner]++] = sequence.InputPoint[p];
+  }
+}
+
 void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,
   SimplifiedMesh& level)
 {

@@ -129,6 +129,10 @@ void LevelCorners(const ProgressiveMesh& sequence, std::int64_t points, Index* c
 void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,
   SimplifiedMesh& level);
 
+/// The level's sources in full: each of its points (weight 1), then the removed points whose
+/// ancestor it is (weight 0), for what reads the correspondence (TwoSidedDeviation).
+void ListLevelSources(const ProgressiveMesh& sequence, std::int64_t points, SimplifiedMesh& level);
+
 /// Runs the target on the sequence: LevelFor, then ExtractLevel, with the sequence's Report.
 void ExtractTarget(const ProgressiveMesh& sequence, const Target& goal, const TriangleMeshView& input,
   SimplifiedMesh& level);

@@ -218,13 +218,54 @@ std::vector<std::int32_t> WriteSurvivors(const CollapseMesh& mesh, const std::ve
 }
 
 void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::vector<std::int32_t>& inputVertex,
-  SimplifiedMesh& mesh)
+  SimplifiedMesh& mesh, const std::vector<std::int32_t>& mergedInto)
 {
-  for (const std::int32_t survivor : survivors)
+  // Each survivor first (weight 1), then the vertices merged into it, directly or through others
+  // (weight 0: its own values stay), in vertex order.
+  const std::int64_t n = static_cast<std::int64_t>(inputVertex.size());
+  std::vector<std::int32_t> owner(mergedInto.empty() ? 0 : n, -1);
+  for (std::size_t i = 0; i < survivors.size() && !owner.empty(); ++i)
   {
-    mesh.SourcePoints.push_back(inputVertex[survivor]);
-    mesh.SourceWeights.push_back(1.0);
-    mesh.SourceOffsets.push_back(static_cast<std::int32_t>(mesh.SourcePoints.size()));
+    owner[survivors[i]] = static_cast<std::int32_t>(i);
+  }
+  std::vector<std::int32_t> members(survivors.size() + 1, 0);
+  for (std::int32_t v = 0; v < static_cast<std::int32_t>(owner.size()); ++v)
+  {
+    // Down the merges to a survivor (or a vertex already resolved), then the path gets its owner.
+    if (owner[v] >= 0 || mergedInto[v] < 0)
+    {
+      continue;
+    }
+    std::int32_t root = v;
+    while (owner[root] < 0 && mergedInto[root] >= 0)
+    {
+      root = mergedInto[root];
+    }
+    for (std::int32_t u = v; owner[root] >= 0 && owner[u] < 0; u = mergedInto[u])
+    {
+      owner[u] = owner[root];
+      ++members[owner[u] + 1];
+    }
+  }
+  std::partial_sum(members.begin(), members.end(), members.begin());
+  const std::size_t first = mesh.SourcePoints.size();
+  mesh.SourcePoints.resize(first + survivors.size() + static_cast<std::size_t>(members.back()));
+  mesh.SourceWeights.resize(mesh.SourcePoints.size(), 0.0);
+  std::vector<std::int32_t> next(survivors.size());
+  for (std::size_t i = 0; i < survivors.size(); ++i)
+  {
+    const std::size_t at = first + i + static_cast<std::size_t>(members[i]);
+    mesh.SourcePoints[at] = inputVertex[survivors[i]];
+    mesh.SourceWeights[at] = 1.0;
+    next[i] = static_cast<std::int32_t>(at + 1);
+    mesh.SourceOffsets.push_back(static_cast<std::int32_t>(first + i + 1 + static_cast<std::size_t>(members[i + 1])));
+  }
+  for (std::int64_t v = 0; v < static_cast<std::int64_t>(owner.size()); ++v)
+  {
+    if (owner[v] >= 0 && survivors[owner[v]] != v)
+    {
+      mesh.SourcePoints[next[owner[v]]++] = inputVertex[v];
+    }
   }
 }
 

@@ -207,9 +207,10 @@ std::vector<std::int32_t> WriteSurvivors(const CollapseMesh& mesh, const std::ve
   const Frame& frame, const TriangleMeshView& input, const std::vector<std::int32_t>& inputVertex,
   const std::vector<std::int32_t>& inputTriangle, SimplifiedMesh& output);
 
-/// The sources of output points that keep one input point each (weight 1).
+/// The sources of output points that keep one input point each (weight 1), and with mergedInto
+/// (CollapseMesh::MergeTargets) the vertices merged into them after it (weight 0).
 void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::vector<std::int32_t>& inputVertex,
-  SimplifiedMesh& mesh);
+  SimplifiedMesh& mesh, const std::vector<std::int32_t>& mergedInto = {});
 
 } // namespace meshsimp
 

@@ -231,15 +231,26 @@ void TestLevelsAsViews(vtkPolyData* decorated)
 
 void TestPointsAreInputPoints(vtkPolyData* cow)
 {
-  // Deviation, the distance of each point to the input surface, is 0: they are input points.
+  // The points are input points, but Deviation is two-sided: the removed points they stand for
+  // are off the level's surface (it was 0 everywhere, issue 45, §2), and a level switch with
+  // the sequence cached measures it again.
   {
     vtkNew<vtkProgressiveMesh> filter;
     filter->SetInputData(cow);
     filter->ComputeDeviationOn();
-    filter->Update();
-    vtkDataArray* deviation = filter->GetOutput()->GetPointData()->GetArray("Deviation");
-    CHECK(deviation && deviation->GetNumberOfTuples() == filter->GetOutput()->GetNumberOfPoints() &&
-      deviation->GetRange()[0] == 0.0 && deviation->GetRange()[1] == 0.0);
+    double previous = 0.0;
+    for (const double reduction : { 0.9, 0.5 })
+    {
+      filter->SetTargetReduction(reduction);
+      filter->Update();
+      vtkDataArray* deviation = filter->GetOutput()->GetPointData()->GetArray("Deviation");
+      vtkDataArray* maximum = filter->GetOutput()->GetFieldData()->GetArray("DeviationMaximum");
+      CHECK(deviation && deviation->GetNumberOfTuples() == filter->GetOutput()->GetNumberOfPoints() &&
+        deviation->GetRange()[0] >= 0.0 && deviation->GetRange()[1] > 0.0);
+      CHECK(maximum && maximum->GetTuple1(0) > 0.0 && maximum->GetTuple1(0) != previous);
+      previous = maximum ? maximum->GetTuple1(0) : 0.0;
+    }
+    CHECK(filter->GetNumberOfBuilds() == 1);
   }
   std::map<std::array<double, 3>, vtkIdType> ids;
   for (vtkIdType i = 0; i < cow->GetNumberOfPoints(); ++i)

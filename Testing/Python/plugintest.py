@@ -64,9 +64,30 @@ def check_unlocked_after_octree(simplifier_class, octree_class, source, toleranc
           "after the octree: %d triangles for 90 %% reduction (%d)" % (got, round(target)))
 
 
+def largest_distance(source, simplified):
+    """The largest distance from a point of source to the surface of simplified (a cell
+    locator), measured here independently of the filters."""
+    import math
+    from paraview import servermanager
+    from vtkmodules.vtkCommonDataModel import vtkCellLocator, vtkGenericCell
+    from vtkmodules.vtkCommonCore import mutable
+    surface = servermanager.Fetch(simplified)
+    points = servermanager.Fetch(source)
+    locator = vtkCellLocator()
+    locator.SetDataSet(surface)
+    locator.BuildLocator()
+    closest, cell, cell_id, sub_id, d2 = [0.0, 0.0, 0.0], vtkGenericCell(), mutable(0), mutable(0), mutable(0.0)
+    largest = 0.0
+    for i in range(points.GetNumberOfPoints()):
+        locator.FindClosestPoint(points.GetPoint(i), closest, cell, cell_id, sub_id, d2)
+        largest = max(largest, math.sqrt(float(d2)))
+    return largest
+
+
 def check_front_end(simplifier_class, source, tolerance):
     """What every filter's proxy shares (MeshSimplificationFilter.xml), on the cow: Deviation on
-    by default, the attribute-border properties; a reduction of 5 clamped to 1 (an empty
+    by default, two-sided (its maximum at least the largest distance of
+    an input point to the output), the attribute-border properties; a reduction of 5 clamped to 1 (an empty
     output); an unstructured grid of triangles (after Merge Blocks) simplified like the cow;
     ParaView's default Sphere (96 triangles, 10 asked for) not emptied; a triangle count shared
     out over the blocks of a multiblock."""
@@ -75,6 +96,9 @@ def check_front_end(simplifier_class, source, tolerance):
     simplified.UpdatePipeline()
     check(simplified.ComputeDeviation == 1 and "Deviation" in simplified.PointData.keys(),
           "the Deviation array by default")
+    largest = simplified.FieldData["DeviationMaximum"].GetRange()[1] if "DeviationMaximum" in simplified.FieldData.keys() else -1
+    check(largest >= largest_distance(source, simplified) - 1e-9,
+          "DeviationMaximum %g covers the input's points (two-sided)" % largest)
     check(simplified.PreserveAttributeBorders == 0 and list(simplified.AttributeBorders) == ["POINTS", "None"],
           "attribute borders off, no array by default")
     check(simplified.CloseCracks == 1, "cracks closed by default")
