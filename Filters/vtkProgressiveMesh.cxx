@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
@@ -52,6 +53,8 @@ struct vtkProgressiveMesh::Cache
   /// level is written into one that no level shows any more (reference count 1: the views hold
   /// it), so a switch writes into memory already mapped instead of fresh pages.
   std::vector<std::array<vtkSmartPointer<vtkCellArray::ArrayType64>, 2>> CornerBuffers;
+  /// Per piece, the input side of the deviation, made at the first level that measures it.
+  std::vector<std::unique_ptr<meshsimp::DeviationInput>> DeviationInputs;
 };
 
 namespace
@@ -445,7 +448,7 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
 bool vtkProgressiveMesh::AddDeviation(const vtkSimplification::TriangleInput& triangles,
   const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output, const meshsimp::ExecutionContext& context)
 {
-  const Cache& cache = *this->Sequences;
+  Cache& cache = *this->Sequences;
   const std::size_t i = this->PieceIndex;
   if (i >= cache.Ready.size() || !cache.Ready[i])
   {
@@ -457,7 +460,13 @@ bool vtkProgressiveMesh::AddDeviation(const vtkSimplification::TriangleInput& tr
   meshsimp::SimplifiedMesh level;
   meshsimp::ExtractLevel(sequence, points, triangles.View, level);
   meshsimp::ListLevelSources(sequence, points, level);
-  return vtkSimplification::AddDeviation(triangles.View, level, output, context);
+  cache.DeviationInputs.resize(std::max(cache.DeviationInputs.size(), i + 1));
+  std::unique_ptr<meshsimp::DeviationInput>& side = cache.DeviationInputs[i];
+  if (!side)
+  {
+    side = std::make_unique<meshsimp::DeviationInput>(triangles.View);
+  }
+  return vtkSimplification::AddDeviation(*side, level, output, context);
 }
 
 void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)

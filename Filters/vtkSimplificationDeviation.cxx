@@ -18,6 +18,12 @@ namespace vtkSimplification
 bool AddDeviation(const meshsimp::TriangleMeshView& input, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output,
   const meshsimp::ExecutionContext& context)
 {
+  return AddDeviation(meshsimp::DeviationInput(input), mesh, output, context);
+}
+
+bool AddDeviation(const meshsimp::DeviationInput& input, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output,
+  const meshsimp::ExecutionContext& context)
+{
   const std::vector<double> values = meshsimp::TwoSidedDeviation(input, mesh, context);
   const vtkIdType count = output->GetNumberOfPoints();
   if (static_cast<vtkIdType>(values.size()) != count)

@@ -7,6 +7,7 @@
 #ifndef vtkSimplificationDeviation_h
 #define vtkSimplificationDeviation_h
 
+#include "Deviation.h"
 #include "Execution.h"
 #include "Simplification.h"
 #include "TriangleMesh.h"
@@ -25,6 +26,9 @@ namespace vtkSimplification
  * its progress; returns false, adding nothing, when aborted.
  */
 bool AddDeviation(const meshsimp::TriangleMeshView& input, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output,
+  const meshsimp::ExecutionContext& context);
+/// The same with the input side made before (kept for several outputs of one input).
+bool AddDeviation(const meshsimp::DeviationInput& input, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output,
   const meshsimp::ExecutionContext& context);
 
 }

@@ -360,14 +360,30 @@ std::vector<Vec3> OutputPoints(const SimplifiedMesh& output)
   return points;
 }
 
+} // namespace
+
+/// The input side: its points, usable triangles and their adjacency, and its exact search.
+struct DeviationInput::Data
+{
+  explicit Data(const TriangleMeshView& input)
+    : Surface(InputPoints(input), UsableCorners(input, this->Usable))
+  {
+  }
+  std::vector<std::int32_t> Usable; // per input triangle, its place among Surface's, or -1
+  const meshsimp::Surface Surface;
+};
+
+namespace
+{
 /// The deviation's measurements, one stage each; see the top of Deviation.h. A measure by walks
 /// is an upper bound of the distance; an exact one searches a grid of the whole surface.
 class DeviationStages
 {
 public:
-  DeviationStages(const TriangleMeshView& input, const SimplifiedMesh& output)
+  DeviationStages(const DeviationInput::Data& input, const SimplifiedMesh& output)
     : Output(output)
-    , In(InputPoints(input), UsableCorners(input, this->Usable))
+    , Usable(input.Usable)
+    , In(input.Surface)
     , Out(OutputPoints(output), output.Triangles)
     , Own(output.NumberOfPoints(), 0.0)
     , OwnNearest(output.NumberOfPoints(), -1)
@@ -507,8 +523,9 @@ private:
   }
 
   const SimplifiedMesh& Output;
-  std::vector<std::int32_t> Usable; // per input triangle, its place among In's, or -1
-  const Surface In, Out;
+  const std::vector<std::int32_t>& Usable; // per input triangle, its place among In's, or -1
+  const Surface& In;
+  const Surface Out;
   std::vector<double> Own;
   std::vector<std::int32_t> OwnNearest;
   std::vector<double> Inside;
@@ -563,10 +580,23 @@ double PointTriangleDistance(const Vec3& x, const Vec3& a, const Vec3& b, const 
   return (x - (a + ab * (vb * scale) + ac * (vc * scale))).norm();
 }
 
+DeviationInput::DeviationInput(const TriangleMeshView& input)
+  : Impl(new Data(input))
+{
+}
+
+DeviationInput::~DeviationInput() = default;
+
 std::vector<double> TwoSidedDeviation(
   const TriangleMeshView& input, const SimplifiedMesh& output, const ExecutionContext& context)
 {
-  DeviationStages stages(input, output);
+  return TwoSidedDeviation(DeviationInput(input), output, context);
+}
+
+std::vector<double> TwoSidedDeviation(
+  const DeviationInput& input, const SimplifiedMesh& output, const ExecutionContext& context)
+{
+  DeviationStages stages(*input.Impl, output);
   const std::int64_t n = output.NumberOfPoints(), m = output.NumberOfTriangles();
   // 1. By walks, concurrently, in steps for the progress bar and Abort (80 % of it).
   struct Stage
@@ -575,7 +605,7 @@ std::vector<double> TwoSidedDeviation(
     std::int64_t Work; // nanoseconds per item, about
     std::function<void(std::int64_t)> Run;
   };
-  const std::int64_t perPoint = input.NumberOfPoints / std::max<std::int64_t>(1, n) + 1;
+  const std::int64_t perPoint = static_cast<std::int64_t>(input.Impl->Surface.Points.size()) / std::max<std::int64_t>(1, n) + 1;
   const Stage walks[] = { { n, 300 * perPoint, [&](std::int64_t p) { stages.MeasureOwn(p, false); } },
     { m, 1000, [&](std::int64_t t) { stages.MeasureInside(static_cast<std::int32_t>(t), false); } },
     { n, 300 * perPoint, [&](std::int64_t p) { stages.MeasureStood(p, false); } },

@@ -41,16 +41,33 @@
 #include "Simplification.h"
 #include "TriangleMesh.h"
 
+#include <memory>
 #include <vector>
 
 namespace meshsimp
 {
 
 /**
- * The deviation of each of output's points (in input units; see the top of the file). The
- * input's usable triangles are those of distinct points in range with finite coordinates.
+ * The input side of the deviation, made once for several outputs of one input (the levels of a
+ * progressive mesh): a copy of its points, its usable triangles (distinct points in range,
+ * finite coordinates) and their adjacency, and its exact search when first needed.
+ */
+class DeviationInput
+{
+public:
+  explicit DeviationInput(const TriangleMeshView& input);
+  ~DeviationInput();
+  struct Data;
+  std::unique_ptr<Data> Impl;
+};
+
+/**
+ * The deviation of each of output's points (in input units; see the top of the file).
  * Progress goes from 0 to 1 through context; returns an empty list when aborted.
  */
+std::vector<double> TwoSidedDeviation(
+  const DeviationInput& input, const SimplifiedMesh& output, const ExecutionContext& context);
+/// The same for one output of input.
 std::vector<double> TwoSidedDeviation(
   const TriangleMeshView& input, const SimplifiedMesh& output, const ExecutionContext& context);
 
