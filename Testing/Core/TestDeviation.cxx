@@ -143,6 +143,35 @@ void CountsDroppedParts()
   CHECK(std::abs(Largest(values) - 1.0) < 1e-12);
 }
 
+void MeasuresSoupsAsTheirJoinedMesh()
+{
+  // A soup (each triangle its own three points) of a grid with a peak, and an output that lists
+  // one point of each place, as the front end does after joining them: the copies no output
+  // point lists count with their listed twin, and the peak is seen.
+  Mesh grid = Grid(8);
+  grid.Points[3 * (4 * 9 + 4) + 2] = 0.2;
+  Mesh soup;
+  for (const std::int32_t v : grid.Triangles)
+  {
+    soup.Points.insert(soup.Points.end(), grid.Points.begin() + 3 * v, grid.Points.begin() + 3 * v + 3);
+    soup.Triangles.push_back(static_cast<std::int32_t>(soup.Triangles.size()));
+  }
+  std::vector<std::int32_t> owner(soup.Points.size() / 3, -1);
+  std::vector<bool> seen(grid.Points.size() / 3, false);
+  for (std::size_t c = 0; c < grid.Triangles.size(); ++c)
+  {
+    const std::int32_t v = grid.Triangles[c];
+    if (!seen[v] && (v != 4 * 9 + 4 || c > 0))
+    {
+      seen[v] = true;
+      const int x = static_cast<int>(std::lround(grid.Points[3 * v] * 2)), y = static_cast<int>(std::lround(grid.Points[3 * v + 1] * 2));
+      owner[c] = y * 3 + x;
+    }
+  }
+  const std::vector<double> values = meshsimp::TwoSidedDeviation(soup.View(), Output(Grid(2), owner), {});
+  CHECK(std::abs(Largest(values) - 0.2) < 1e-12);
+}
+
 void SameForAnyThreadCount()
 {
   Mesh input = Grid(30);
@@ -177,6 +206,7 @@ int main()
     { "SeesTheFlattenedPeak", SeesTheFlattenedPeak },
     { "SettlesWalksThatStopShort", SettlesWalksThatStopShort },
     { "CountsDroppedParts", CountsDroppedParts },
+    { "MeasuresSoupsAsTheirJoinedMesh", MeasuresSoupsAsTheirJoinedMesh },
     { "SameForAnyThreadCount", SameForAnyThreadCount },
     { "StopsWhenAborted", StopsWhenAborted },
   });
