@@ -34,16 +34,18 @@
  *   between two values of a label or colour array stays sharp;
  * - the link condition, collapse by collapse: the common neighbours of the two sides are exactly
  *   the far corners of their shared triangles (two, one on a boundary, k on a hinge), so no edge
- *   gains triangles and no "hidden cycle" (paper 004 Fig. 8) is closed, and on a hinge no two of
- *   the far corners span triangles with both sides; two vertices of a boundary or hinge are not
+ *   gains triangles and no "hidden cycle" (Zhou, Zhang and Cheng, "Mesh simplification by
+ *   volume variation with feature preserving", Fig. 8) is closed, and on a hinge no two of the
+ *   far corners span triangles with both sides; two vertices of a boundary or hinge are not
  *   joined across a sheet; no vertex falls below three neighbours;
  * - shared edges: no collapse joins two vertices locked as shared with another piece of a
  *   distributed mesh by an edge they did not have (the other piece might make the same edge,
  *   and the merged pieces would get an edge of four triangles);
  * - then, triangle by triangle of those the plan changes, the next three (so the first failure
  *   is that of the first such triangle to fail one):
- * - no fold-over, by the plane-side test of paper 001 §5.3: the new position stays on the inner
- *   side of the plane through every opposite edge perpendicular to its triangle;
+ * - no fold-over, by the plane-side test of Franc, "Methods for Polygonal Mesh Simplification",
+ *   §5.3: the new position stays on the inner side of the plane through every opposite edge
+ *   perpendicular to its triangle;
  * - no degenerate triangle: every changed triangle keeps a non-zero area (a merged vertex that
  *   stays where it is, the kept end of a half-edge, changes none of its own);
  * - no fold against a neighbour: a changed triangle that turns by over 30 degrees may not end
@@ -389,9 +391,7 @@ public:
     return this->FirstFailedCheck(plan, this->Scratch);
   }
 
-  /// The angle guard's minimum in degrees; 0 (default) turns it off. From the first positive
-  /// minimum on (also when set before Build) every triangle's smallest angle is kept, measured
-  /// here in one thread, or in Build with its context.
+  /// The angle guard's minimum in degrees; 0 (default) turns it off.
   void SetMinimumAngle(double degrees);
   /// The cosine of the smallest angle among the triangles the plan keeps but changes, at its
   /// position: the angle guard's measure (-1 when it changes none).

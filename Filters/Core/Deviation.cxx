@@ -11,7 +11,6 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
-#include <tuple>
 
 namespace meshsimp
 {
@@ -396,7 +395,7 @@ public:
     , Stood(In.Points.size(), 0.0)
     , Values(output.NumberOfPoints(), 0.0)
   {
-    this->GatherMembers();
+    this->GatherUnlisted();
   }
 
   /// Output point p to the input, from the input triangles around the points it stands for.
@@ -404,9 +403,9 @@ public:
   {
     const Vec3& x = this->Out.Points[p];
     Nearest near;
-    for (std::int64_t s = this->MemberOffsets[p]; s < this->MemberOffsets[p + 1] && !exact; ++s)
+    for (std::int32_t s = this->Output.SourceOffsets[p]; s < this->Output.SourceOffsets[p + 1] && !exact; ++s)
     {
-      this->In.AroundPoint(x, this->Members[s], near);
+      this->In.AroundPoint(x, this->Output.SourcePoints[s], near);
     }
     this->Settle(this->In, x, near, exact);
     this->OwnNearest[p] = near.Triangle;
@@ -446,9 +445,9 @@ public:
   /// The input points p stands for to the output, from p's triangles.
   void MeasureStood(std::int64_t p, bool exact)
   {
-    for (std::int64_t s = this->MemberOffsets[p]; s < this->MemberOffsets[p + 1]; ++s)
+    for (std::int32_t s = this->Output.SourceOffsets[p]; s < this->Output.SourceOffsets[p + 1]; ++s)
     {
-      const std::int32_t i = this->Members[s];
+      const std::int32_t i = this->Output.SourcePoints[s];
       const Vec3& y = this->In.Points[i];
       Nearest near;
       if (!exact)
@@ -468,9 +467,9 @@ public:
     {
       largest = std::max(largest, this->Inside[*t]);
     }
-    for (std::int64_t s = this->MemberOffsets[p]; s < this->MemberOffsets[p + 1]; ++s)
+    for (std::int32_t s = this->Output.SourceOffsets[p]; s < this->Output.SourceOffsets[p + 1]; ++s)
     {
-      largest = std::max(largest, this->Stood[this->Members[s]]);
+      largest = std::max(largest, this->Stood[this->Output.SourcePoints[s]]);
     }
     this->Values[p] = largest;
   }
@@ -487,19 +486,19 @@ public:
     this->Gather(p);
   }
 
-  /// Input points that no output point stands for, nor one at the same place (a part the
-  /// algorithm dropped): exactly, each counted at the output point nearest to where it lands.
-  void MeasureDropped(const ExecutionContext& context)
+  /// The unlisted input points: exactly, concurrently, each counted at the output point nearest
+  /// to where it lands.
+  void MeasureUnlisted(const ExecutionContext& context)
   {
     if (this->Out.NumberOfTriangles() == 0)
     {
       return;
     }
-    std::vector<std::pair<double, std::int32_t>> landed(this->Dropped.size());
-    context.For(static_cast<std::int64_t>(this->Dropped.size()), [&](std::int64_t begin, std::int64_t end) {
+    std::vector<std::pair<double, std::int32_t>> landed(this->Unlisted.size());
+    context.For(static_cast<std::int64_t>(this->Unlisted.size()), [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t d = begin; d < end; ++d)
       {
-        const Vec3& y = this->In.Points[this->Dropped[d]];
+        const Vec3& y = this->In.Points[this->Unlisted[d]];
         const Nearest near = this->Out.Exact(y);
         std::int32_t corner = this->Out.Corners[3 * static_cast<std::size_t>(near.Triangle)];
         for (int k = 1; k < 3; ++k)
@@ -509,7 +508,7 @@ public:
         }
         landed[d] = { near.Distance, corner };
       }
-    }, 5000 * static_cast<std::int64_t>(this->Dropped.size()));
+    }, 5000 * static_cast<std::int64_t>(this->Unlisted.size()));
     for (const auto& [distance, corner] : landed)
     {
       this->Values[corner] = std::max(this->Values[corner], distance);
@@ -531,92 +530,26 @@ private:
     surface.Walk(x, near);
   }
 
-  /// Each output point's input points: those it stands for, then the usable input points at
-  /// the same place as one of those (the front end joins the points of a crack, and lists one);
-  /// Dropped: the usable input points left.
-  void GatherMembers()
+  /// The usable input points that no output point stands for (a part the algorithm dropped, a
+  /// point the front end joined with another at its place).
+  void GatherUnlisted()
   {
-    const std::int64_t n = this->Output.NumberOfPoints();
-    std::vector<std::int32_t> owner(this->In.Points.size(), -1);
-    for (std::int64_t p = 0; p < n; ++p)
+    std::vector<bool> listed(this->In.Points.size(), false);
+    for (const std::int32_t source : this->Output.SourcePoints)
     {
-      for (std::int32_t s = this->Output.SourceOffsets[p]; s < this->Output.SourceOffsets[p + 1]; ++s)
-      {
-        owner[this->Output.SourcePoints[s]] = static_cast<std::int32_t>(p);
-      }
+      listed[source] = true;
     }
-    std::vector<std::int32_t> unlisted;
-    for (std::int32_t i = 0; i < static_cast<std::int32_t>(owner.size()); ++i)
+    for (std::int32_t i = 0; i < static_cast<std::int32_t>(listed.size()); ++i)
     {
-      if (owner[i] < 0 && this->In.Around.Begin(i) != this->In.Around.End(i))
+      if (!listed[i] && this->In.Around.Begin(i) != this->In.Around.End(i))
       {
-        unlisted.push_back(i);
-      }
-    }
-    // The listed points by place, for the unlisted ones to find a twin.
-    const auto place = [this](std::int32_t i) {
-      const Vec3& x = this->In.Points[i];
-      return std::make_tuple(x[0], x[1], x[2]);
-    };
-    std::vector<std::int32_t> listed;
-    for (std::int32_t i = 0; i < static_cast<std::int32_t>(owner.size()) && !unlisted.empty(); ++i)
-    {
-      if (owner[i] >= 0)
-      {
-        listed.push_back(i);
-      }
-    }
-    std::sort(listed.begin(), listed.end(), [&place](std::int32_t a, std::int32_t b) { return place(a) < place(b); });
-    std::vector<std::int32_t> twinOwner(unlisted.size(), -1);
-    for (std::size_t u = 0; u < unlisted.size(); ++u)
-    {
-      const auto found = std::lower_bound(listed.begin(), listed.end(), unlisted[u],
-        [&place](std::int32_t a, std::int32_t b) { return place(a) < place(b); });
-      if (found != listed.end() && place(*found) == place(unlisted[u]))
-      {
-        twinOwner[u] = owner[*found];
-      }
-      else
-      {
-        this->Dropped.push_back(unlisted[u]);
-      }
-    }
-    // The CSR: sources first, then twins, each in index order.
-    this->MemberOffsets.assign(n + 1, 0);
-    for (std::int64_t p = 0; p < n; ++p)
-    {
-      this->MemberOffsets[p + 1] = this->Output.SourceOffsets[p + 1] - this->Output.SourceOffsets[p];
-    }
-    for (const std::int32_t o : twinOwner)
-    {
-      if (o >= 0)
-      {
-        ++this->MemberOffsets[o + 1];
-      }
-    }
-    std::partial_sum(this->MemberOffsets.begin(), this->MemberOffsets.end(), this->MemberOffsets.begin());
-    this->Members.resize(static_cast<std::size_t>(this->MemberOffsets[n]));
-    std::vector<std::int64_t> next(this->MemberOffsets.begin(), this->MemberOffsets.end() - 1);
-    for (std::int64_t p = 0; p < n; ++p)
-    {
-      for (std::int32_t s = this->Output.SourceOffsets[p]; s < this->Output.SourceOffsets[p + 1]; ++s)
-      {
-        this->Members[next[p]++] = this->Output.SourcePoints[s];
-      }
-    }
-    for (std::size_t u = 0; u < unlisted.size(); ++u)
-    {
-      if (twinOwner[u] >= 0)
-      {
-        this->Members[next[twinOwner[u]]++] = unlisted[u];
+        this->Unlisted.push_back(i);
       }
     }
   }
 
   const SimplifiedMesh& Output;
-  std::vector<std::int64_t> MemberOffsets; // per output point, into Members
-  std::vector<std::int32_t> Members;
-  std::vector<std::int32_t> Dropped;
+  std::vector<std::int32_t> Unlisted;
   const std::vector<std::int32_t>& Usable; // per input triangle, its place among In's, or -1
   const Surface& In;
   const Surface Out;
@@ -742,8 +675,8 @@ std::vector<double> TwoSidedDeviation(
   {
     return {};
   }
-  // 3. The input points that no output point stands for, nor one at their place.
-  stages.MeasureDropped(context);
+  // 3. The input points that no output point stands for.
+  stages.MeasureUnlisted(context);
   return context.Report(1.0) ? values : std::vector<double>();
 }
 

@@ -25,10 +25,10 @@
  * A walk can stop short where a surface folds back (the other side of a thin plate), which
  * only overestimates; so the largest values are measured again exactly (a grid of each
  * surface's triangles), from the top, until the next cannot exceed the largest measured: the
- * maximum is exact for the samples, and no point shows more than it. An input point that no
- * output point stands for counts with the one that stands for an input point at its place (the
- * front end joins the two sides of a crack and lists one); the others (a part an algorithm
- * dropped) are measured exactly and counted at the output point nearest to where they land.
+ * maximum is exact for the samples, and no point shows more than it. Input points that no
+ * output point stands for (a part an algorithm dropped, a point the front end joined with
+ * another at its place) are measured exactly and counted at the output point nearest to where
+ * they land.
  *
  * Samples: the points of both meshes and the centres and edge middles of the output's
  * triangles; the input's triangles are sampled at their corners only, which a large input

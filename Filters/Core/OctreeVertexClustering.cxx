@@ -728,7 +728,8 @@ void Clusterer::PrepareGeometry()
 Plane Clusterer::BoundaryPlane(
   std::int32_t a, std::int32_t b, std::int32_t triangle, double& weight) const
 {
-  // Perpendicular to triangle through its boundary edge (a, b) (paper 000 §3), weighted by the
+  // Perpendicular to triangle through its boundary edge (a, b) (Zhou, Zhang, Shi and Pan, "A new
+  // simplification algorithm for colored or textured polygonal models", §3), weighted by the
   // squared edge length so that it scales like the area-weighted face planes.
   Plane plane;
   weight = 0.0;

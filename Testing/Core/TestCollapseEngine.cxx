@@ -1202,11 +1202,7 @@ void VolumeCollapseNamesTheRuleThatBinds()
   // them, not "a locked vertex (non-manifold, ...)" on a manifold mesh where nothing was asked
   // to be locked, and the angle guard lowered on the way is not given as what reached the
   // target (issue 45, §4, Wavelet iso-surface at 0.99).
-  const Mesh grid = Grid(20);
-  meshsimp::VolumeCollapseOptions options;
-  options.Goal.SetTriangleCount(1);
-  meshsimp::VolumeCollapseResult result;
-  CHECK(meshsimp::VolumeTriangleCollapse(grid.View(), options, result));
+  const meshsimp::VolumeCollapseResult result = Collapse(Grid(20), 1);
   CHECK(result.Report.Stop == meshsimp::StopReason::NothingRemovable);
   const std::string& reason = result.Report.Reason;
   CHECK(reason.find("would remove or move a border corner") != std::string::npos);

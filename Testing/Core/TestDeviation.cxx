@@ -147,7 +147,7 @@ void MeasuresSoupsAsTheirJoinedMesh()
 {
   // A soup (each triangle its own three points) of a grid with a peak, and an output that lists
   // one point of each place, as the front end does after joining them: the copies no output
-  // point lists count with their listed twin, and the peak is seen.
+  // point lists are measured too, and the peak is seen.
   Mesh grid = Grid(8);
   grid.Points[3 * (4 * 9 + 4) + 2] = 0.2;
   Mesh soup;
