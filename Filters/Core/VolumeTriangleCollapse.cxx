@@ -115,7 +115,8 @@ private:
     }
   }
 
-  void UpdateGeometry(std::int32_t t);
+  /// The corner angles of t, for the feature rule (only when it is on).
+  void UpdateAngles(std::int32_t t);
   /// SurfaceErrorWeight's term of the heap key: the new point's weighted squared distance to
   /// the input planes merged into the plan's vertices.
   double SurfaceError(const CollapsePlan& plan) const;
@@ -239,9 +240,18 @@ private:
   std::vector<std::int32_t> InputVertex, InputTriangle; // compact → input ids
   Frame Normalised;                                      // the centred box of diagonal 1
   double Diagonal = 1.0;                                 // 1 / Normalised.Scale
-  std::vector<Vec3> Normals;
-  /// A triangle's area from its points, as UpdateGeometry measures its normal: read only when
-  /// a triangle or a vertex's sums are updated, it is not kept (8 bytes a triangle).
+  /// A triangle's unit normal from its points (zero for a degenerate one): not kept (24 bytes a
+  /// triangle), as the plane it orients is computed from the same points wherever it is read.
+  Vec3 Normal(std::int32_t t) const
+  {
+    const std::int32_t* tri = this->Mesh.Triangle(t);
+    const Vec3& p = this->Mesh.Point(tri[0]);
+    const Vec3 cross = (this->Mesh.Point(tri[1]) - p).cross(this->Mesh.Point(tri[2]) - p);
+    const double length = cross.norm();
+    return length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
+  }
+  /// A triangle's area from its points, as Normal measures its normal: read only when a
+  /// triangle or a vertex's sums are updated, it is not kept (8 bytes a triangle).
   double Area(std::int32_t t) const
   {
     const std::int32_t* tri = this->Mesh.Triangle(t);
@@ -250,8 +260,7 @@ private:
   }
   /// Q_i of eq. (4) is the plane of triangle i (its normal through its first corner) with a
   /// weight: the weight is kept (8 bytes a triangle, not the quadric's 80) and the quadric
-  /// made when read. Its normal and corners are refreshed with it (UpdateGeometry and
-  /// UpdateQuadric together, around every collapse before any read), so it is the same.
+  /// made when read, from the triangle's points as they are then, which UpdateQuadric saw.
   std::vector<double> TriangleWeights;
   Quadric TriangleQuadric(std::int32_t t) const
   {
@@ -260,7 +269,7 @@ private:
     {
       return Quadric();
     }
-    const Vec3& n = this->Normals[t];
+    const Vec3 n = this->Normal(t);
     return Quadric::FromPlane(n, -n.dot(this->Mesh.Point(this->Mesh.Triangle(t)[0])), weight);
   }
   std::vector<Quadric> VertexQuadrics;   // the sum of Q_i around each vertex
@@ -308,17 +317,11 @@ private:
   std::vector<double> RefreshKeys;
 };
 
-void VolumeCollapser::UpdateGeometry(std::int32_t t)
+void VolumeCollapser::UpdateAngles(std::int32_t t)
 {
   const std::int32_t* tri = this->Mesh.Triangle(t);
   const Vec3* p[3] = { &this->Mesh.Point(tri[0]), &this->Mesh.Point(tri[1]), &this->Mesh.Point(tri[2]) };
-  const Vec3 cross = (*p[1] - *p[0]).cross(*p[2] - *p[0]);
-  const double length = cross.norm();
-  this->Normals[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
-  if (!this->TracksCurvature)
-  {
-    return;
-  }
+  const double length = (*p[1] - *p[0]).cross(*p[2] - *p[0]).norm();
   // Two corner angles measured, the third from their sum: atan2 of |e1 × e2| = 2S and e1 · e2.
   double* angles = this->Angles.data() + 3 * static_cast<std::size_t>(t);
   angles[0] = std::atan2(length, (*p[1] - *p[0]).dot(*p[2] - *p[0]));
@@ -409,7 +412,7 @@ void VolumeCollapser::UpdateFanSums(const std::int32_t* vertices, int count, dou
 void VolumeCollapser::UpdateQuadric(std::int32_t t)
 {
   const double area = this->Area(t);
-  const Vec3& n = this->Normals[t];
+  const Vec3 n = this->Normal(t);
   if (!(area > 0.0) || n == Vec3::Zero())
   {
     this->TriangleWeights[t] = 0.0;
@@ -432,7 +435,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
     this->ForEachAdjacent(t, [&](std::int32_t j) {
       if (j != t)
       {
-        sum += 0.5 * (1.0 - std::abs(n.dot(this->Normals[j])));
+        sum += 0.5 * (1.0 - std::abs(n.dot(this->Normal(j))));
         ++count;
       }
     });
@@ -456,17 +459,19 @@ void VolumeCollapser::ConstrictionMatrix(std::int32_t t, Quadric& q, EdgeNeighbo
   q = this->VertexQuadrics[tri[0]];
   q += this->VertexQuadrics[tri[1]];
   q += this->VertexQuadrics[tri[2]];
-  q -= this->TriangleQuadric(t);
-  q -= this->TriangleQuadric(t);
+  const Quadric own = this->TriangleQuadric(t);
+  q -= own;
+  q -= own;
   for (int k = 0; k < 3; ++k)
   {
     this->Mesh.ForEachTriangleOnEdge(tri[k], tri[(k + 1) % 3], [&](std::int32_t j) {
       if (j != t)
       {
-        q -= this->TriangleQuadric(j);
+        const Quadric neighbour = this->TriangleQuadric(j);
+        q -= neighbour;
         if (across)
         {
-          across->Quadrics[k] += this->TriangleQuadric(j);
+          across->Quadrics[k] += neighbour;
           ++across->Count[k];
         }
       }
@@ -775,11 +780,12 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
   double bestCost = EdgeErrorShare * candidate.Cost;
   Quadric bestQ;
   Vec3 bestX;
+  const Quadric own = this->TriangleQuadric(t);
   for (int k = 0; k < 3; ++k)
   {
     Quadric q = this->VertexQuadrics[tri[k]];
     q += this->VertexQuadrics[tri[(k + 1) % 3]];
-    q -= this->TriangleQuadric(t);
+    q -= own;
     q -= across.Quadrics[k];
     const Vec3& pa = this->Mesh.Point(tri[k]);
     const Vec3& pb = this->Mesh.Point(tri[(k + 1) % 3]);
@@ -954,7 +960,10 @@ void VolumeCollapser::RefreshAround(
   const std::uint32_t mark = ++scratch.Stamp;
   scratch.Ring.clear();
   this->Mesh.ForEachTriangle(kept, [&](std::int32_t t) {
-    this->UpdateGeometry(t);
+    if (this->TracksCurvature)
+    {
+      this->UpdateAngles(t);
+    }
     const std::int32_t* tri = this->Mesh.Triangle(t);
     for (int k = 0; k < 3; ++k)
     {
@@ -1157,7 +1166,6 @@ void VolumeCollapser::MeasureAll()
   // surface term: concurrently, with work estimates in nanoseconds (ExecutionContext), measured.
   const std::int32_t n = this->Mesh.NumberOfPoints();
   const std::int32_t m = this->Mesh.NumberOfTriangles();
-  this->Normals.resize(m);
   this->TracksCurvature = this->Options.FeatureCurvature > 0.0;
   this->Angles.resize(this->TracksCurvature ? 3 * static_cast<std::size_t>(m) : 0);
   this->TriangleWeights.resize(m);
@@ -1169,12 +1177,15 @@ void VolumeCollapser::MeasureAll()
   this->VertexMarks.assign(n, 0);
   this->BatchLimit =
     std::max<std::int64_t>(1, std::min<std::int64_t>(this->Options.BatchSize, m / BatchShare));
-  this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t t = b; t < e; ++t)
-    {
-      this->UpdateGeometry(static_cast<std::int32_t>(t));
-    }
-  }, 150 * static_cast<std::int64_t>(m));
+  if (this->TracksCurvature)
+  {
+    this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
+      for (std::int64_t t = b; t < e; ++t)
+      {
+        this->UpdateAngles(static_cast<std::int32_t>(t));
+      }
+    }, 150 * static_cast<std::int64_t>(m));
+  }
   this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
     for (std::int64_t t = b; t < e; ++t)
     {
@@ -1215,7 +1226,7 @@ void VolumeCollapser::GatherInputPlanes()
     const double area = this->Area(t);
     if (area > 0.0)
     {
-      const Vec3& normal = this->Normals[t];
+      const Vec3 normal = this->Normal(t);
       const std::int32_t* tri = this->Mesh.Triangle(t);
       const Quadric plane = Quadric::FromPlane(normal, -normal.dot(this->Mesh.Point(tri[0])), area);
       for (int k = 0; k < 3; ++k)
@@ -1243,7 +1254,7 @@ void VolumeCollapser::AddBorderPlanes(std::int32_t t)
     int sharing = 0;
     this->Mesh.ForEachTriangleOnEdge(a, b, [&sharing](std::int32_t) { ++sharing; });
     Quadric border;
-    if (sharing == 1 && Quadric::FromBorderEdge(this->Mesh.Point(a), this->Mesh.Point(b), this->Normals[t], border))
+    if (sharing == 1 && Quadric::FromBorderEdge(this->Mesh.Point(a), this->Mesh.Point(b), this->Normal(t), border))
     {
       this->InputPlanes[a] += border;
       this->InputPlanes[b] += border;
@@ -1615,7 +1626,6 @@ bool VolumeCollapser::Run(const TriangleMeshView& input, VolumeCollapseResult& r
 void VolumeCollapser::ReleaseWorkspace()
 {
   const auto release = [](auto& list) { std::decay_t<decltype(list)>().swap(list); };
-  release(this->Normals);
   release(this->TriangleWeights);
   release(this->VertexQuadrics);
   release(this->InputPlanes);
