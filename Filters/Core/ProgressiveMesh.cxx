@@ -44,6 +44,7 @@ struct VertexState
   std::int32_t Slot = 0;      // its entry in the ring of that gather
   std::uint8_t Kind = Interior;
   std::uint8_t Fan = Interior; // the kind of the fan alone: closed fans keep three triangles, locked or not
+  bool Shared = false;         // also in another piece of a distributed mesh (and so Fixed)
 };
 
 /// (k + 1) % 3 at k and (k + 2) % 3 at k + 1, for the corners after corner k of a triangle.
@@ -218,6 +219,7 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
     const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, fanWork);
     this->Vertices[v].Fan = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
     this->Vertices[v].Kind = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Vertices[v].Fan;
+    this->Vertices[v].Shared = prepared.Locks[v] == SharedPointLock;
   }
   mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
   this->ExtraDimension = this->Options.ExtraCoordinates ? std::max(0, this->Options.ExtraDimension) : 0;
@@ -505,13 +507,25 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
       this->Vertices[this->Corners[3 * t + k]].Stamp = mark;
     }
   });
+  // x's other neighbours become y's: none may be one already (the link condition), nor, where y
+  // is shared with another piece, shared too (a new edge between two shared points, which the
+  // other piece could make as well).
+  bool joinsShared = false;
   for (const RingEntry& other : this->Ring)
   {
     const std::int32_t w = other.Vertex;
-    if (w != y && w != opposite[0] && w != opposite[1] && this->Vertices[w].Stamp == mark)
+    if (w != y && w != opposite[0] && w != opposite[1])
     {
-      return Refusal::Link;
+      if (this->Vertices[w].Stamp == mark)
+      {
+        return Refusal::Link;
+      }
+      joinsShared = joinsShared || (this->Vertices[y].Shared && this->Vertices[w].Shared);
     }
+  }
+  if (joinsShared)
+  {
+    return Refusal::SharedEdges;
   }
   const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Vertices[v].Fan == Interior ? 3 : 1); };
   if (!keeps(y, this->Vertices[y].Triangles + this->Vertices[x].Triangles - 2 * entry.Count) ||

@@ -61,6 +61,7 @@ enum class Refusal : std::uint8_t
   AcrossBorder,  // a border vertex along an edge that is not a border edge
   Link,          // the link condition: the ends share a neighbour off the edge's triangles, or the
                  // edge's two triangles share all three points
+  SharedEdges,   // a new edge between two points shared with another piece (under MPI)
   LastTriangles, // a point would keep no triangle (a closed fan, locked or not, fewer than three)
   Flip           // a remaining triangle would turn over or degenerate
 };

@@ -63,7 +63,7 @@ endif ()
 # An error bound for the collapse methods: the largest distance reached, in the bound's units (a
 # fraction of the bounding-box diagonal with --relative-error), within 1 %, and far fewer
 # triangles; in input units without it (1 % of the cow's diagonal, 1.2171, is 0.012171).
-foreach (method IN ITEMS volume parallel)
+foreach (method IN ITEMS volume parallel progressive)
   run_tool(--method ${method} --max-error 0.01 --relative-error --json "${INPUT}" "${OUTPUT}")
   string(JSON output_triangles GET "${out}" output_triangles)
   string(JSON max_error GET "${out}" max_error)

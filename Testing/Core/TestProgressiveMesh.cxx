@@ -202,6 +202,49 @@ void BordersAndLocksStay()
   }
 }
 
+void SharedPointsGainNoEdge()
+{
+  // Under MPI the points a piece shares with another are locked; a collapse onto one of them
+  // must not join it to another shared point by a new edge, which the other piece could make
+  // too (an edge of four triangles). On a grid whose even columns are shared, no level has an
+  // edge between two shared points that the input does not have.
+  const int n = 12;
+  const Mesh mesh = Grid(n);
+  std::vector<std::uint8_t> locks(mesh.Points.size() / 3, 0);
+  for (std::size_t v = 0; v < locks.size(); ++v)
+  {
+    locks[v] = (v % (n + 1)) % 2 == 0 ? meshsimp::SharedPointLock : 0;
+  }
+  const auto sharedEdges = [&](const std::vector<std::int32_t>& triangles, const auto& id) {
+    std::set<std::pair<std::int32_t, std::int32_t>> edges;
+    for (std::size_t t = 0; t < triangles.size(); t += 3)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const std::int32_t a = id(triangles[t + c]), b = id(triangles[t + (c + 1) % 3]);
+        if (locks[a] == meshsimp::SharedPointLock && locks[b] == meshsimp::SharedPointLock)
+        {
+          edges.insert({ std::min(a, b), std::max(a, b) });
+        }
+      }
+    }
+    return edges;
+  };
+  const auto inputEdges = sharedEdges(mesh.Triangles, [](std::int32_t v) { return v; });
+  meshsimp::ProgressiveMeshOptions options;
+  options.LockedPoints = locks.data();
+  const meshsimp::ProgressiveMesh sequence = Build(mesh, options);
+  CHECK(sequence.BasePoints < sequence.NumberOfPoints()); // the odd columns still simplify
+  for (std::int64_t k = sequence.BasePoints; k <= sequence.NumberOfPoints(); ++k)
+  {
+    const meshsimp::SimplifiedMesh level = Level(sequence, mesh, k);
+    for (const auto& edge : sharedEdges(level.Triangles, [&](std::int32_t p) { return level.Representative(p); }))
+    {
+      CHECK(inputEdges.count(edge) == 1);
+    }
+  }
+}
+
 void LockedClosedFansKeepThree()
 {
   // A closed fan keeps three triangles whether its point is locked or not: tetrahedra and closed
@@ -314,6 +357,7 @@ int main()
     { "LevelsEqualAReplay", LevelsEqualAReplay },
     { "TargetsPickLevels", TargetsPickLevels },
     { "BordersAndLocksStay", BordersAndLocksStay },
+    { "SharedPointsGainNoEdge", SharedPointsGainNoEdge },
     { "LockedClosedFansKeepThree", LockedClosedFansKeepThree },
     { "RegionsNeverMerge", RegionsNeverMerge },
     { "ColoursAreExtraCoordinates", ColoursAreExtraCoordinates },

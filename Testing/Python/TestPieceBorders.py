@@ -4,10 +4,11 @@
 Every process reads the closed cow and keeps its share of the triangles (split at the median of
 the triangles' x), so the pieces meet along a cut that merges back into a closed surface. The
 simplified pieces are written in parallel, read back here and merged: with the cut's points
-locked on both sides (LockSharedPoints) the collapse filters' pieces close up, with no boundary
-or non-manifold edge (unlocked: 48 and 23 open edges), and no open edge of the octree's lies
-along the cut (vertex clustering leaves some elsewhere, 38 on the whole cow in one process;
-unlocked: 126 in all).
+locked on both sides (LockSharedPoints) the collapse filters' pieces (Volume Triangle
+Collapse, Parallel Decimation, Progressive Mesh) close up, with no boundary or non-manifold
+edge (unlocked: 48 and 23 open edges), and no open edge of the octree's lies along the cut
+(vertex clustering leaves some elsewhere, 38 on the whole cow in one process; unlocked: 126 in
+all).
 
 The cow is then dealt out in seven oblique stripes, alternately to the processes, so that each
 piece is several strips whose two borders a collapse could join: the collapse filters join no two
@@ -123,8 +124,9 @@ check(written == 2, "two pieces written (run under mpiexec -n 2), got %d" % writ
 check(cells == 5804 and not open_edges, "the input pieces make the closed cow (%d, %d)" % (cells, len(open_edges)))
 cut = piece_points("input", 0) & piece_points("input", 1)
 check(len(cut) > 50, "the pieces share a cut, %d points" % len(cut))
-for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation),
-                ("octree", OctreeVertexClustering)):
+COLLAPSE_FILTERS = (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation),
+                    ("progressive", ProgressiveMesh))
+for name, F in COLLAPSE_FILTERS + (("octree", OctreeVertexClustering),):
     written, cells, open_edges = merged(name, F(Input=pieces))
     check(written == 2 and abs(cells - 580) <= 12, "%s: 2 pieces, 580 +- 2 %% triangles, got %d" % (name, cells))
     on_cut = [e for e in open_edges if e[0] in cut and e[1] in cut]
@@ -146,7 +148,7 @@ stripes = cow_pieces("int((x(f) * 0.738 + y(f)) * 7) % count == piece")
 # With a layer of ghost cells (the neighbour's triangles, flagged in vtkGhostType) the filters
 # simplify each piece's own triangles only: the same closed result.
 ghosted = GhostCellsGenerator(Input=stripes, MinimumNumberOfGhosts=1, BuildIfRequired=0)
-for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation)):
+for name, F in COLLAPSE_FILTERS:
     written, cells, open_edges = merged("stripes_" + name, F(Input=stripes))
     check(written == 2 and 0 < cells < 5804, "%s on stripes: 2 pieces, simplified, got %d" % (name, cells))
     check(not open_edges, "%s on stripes: the simplified pieces close up, %d open or shared edges" % (name, len(open_edges)))
@@ -159,7 +161,7 @@ for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimat
 moved = Transform(Input=stripes)
 moved.Transform.Translate = [10.0, 0.0, 0.0]
 group = GroupDatasets(Input=[stripes, moved])
-for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation)):
+for name, F in COLLAPSE_FILTERS:
     one_cow = merged("stripes_" + name, F(Input=stripes))[1]
     surface = ExtractSurface(Input=MergeBlocks(Input=F(Input=group)))
     written, cells, open_edges = merged("blocks_" + name, surface)
@@ -171,7 +173,7 @@ for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimat
 # meet too. One exchange locks the points every partition shares with another, here or on the
 # other process, and the pieces close up as before.
 partitioned = cow_pieces("int((x(f) * 0.738 + y(f)) * 7) % count == piece", "(int((x(f) * 0.738 + y(f)) * 7), x(f) < 0)")
-for name, F in (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation)):
+for name, F in COLLAPSE_FILTERS:
     surface = ExtractSurface(Input=MergeBlocks(Input=F(Input=partitioned)))
     written, cells, open_edges = merged("partitions_" + name, surface)
     check(0 < cells < 5804 and not open_edges,
