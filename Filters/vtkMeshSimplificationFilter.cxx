@@ -419,7 +419,7 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
 void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
-  vtkSimplification::SetOutput(input, triangles, mesh, this->OutputPointsPrecision, output);
+  vtkSimplification::SetOutput(input, triangles, mesh, this->OutputPointsPrecision, this->GenerateOriginalIds, output);
 }
 
 bool vtkMeshSimplificationFilter::AddDeviation(const vtkSimplification::TriangleInput& triangles,
@@ -476,5 +476,6 @@ void vtkMeshSimplificationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeDeviation: " << this->ComputeDeviation << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "GenerateOriginalIds: " << this->GenerateOriginalIds << "\n";
   os << indent << "AchievedMaximumError: " << this->AchievedMaximumError << "\n";
 }

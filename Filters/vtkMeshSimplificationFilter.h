@@ -186,6 +186,21 @@ public:
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
+  ///@{
+  /**
+   * Add the point array "vtkOriginalPointIds" (each output point's representative: the input
+   * point whose labels and ids it carries, see the point-data rule above) and the cell array
+   * "vtkOriginalCellIds" (the input cell each output triangle comes from), the names and
+   * meaning of vtkGeometryFilter's: the correspondence a later filter reads to map values
+   * between the input and the output. Ids are those of the filter's polygonal input (of each
+   * block of a composite input, of each piece under MPI; for a dataset made into a surface,
+   * of that surface); arrays of those names in the input are replaced. Default off.
+   */
+  vtkSetMacro(GenerateOriginalIds, bool);
+  vtkGetMacro(GenerateOriginalIds, bool);
+  vtkBooleanMacro(GenerateOriginalIds, bool);
+  ///@}
+
   /**
    * The largest error the algorithm bounds, after the last execution, in MaximumError's units
    * (a fraction of the diagonal when RelativeError is on); 0 when the algorithm does not
@@ -263,6 +278,7 @@ protected:
   bool ComputeDeviation = false;
   int NumberOfThreads = 0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
+  bool GenerateOriginalIds = false;
   double AchievedMaximumError = 0.0;
 
 private:

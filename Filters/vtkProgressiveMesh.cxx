@@ -38,7 +38,8 @@ vtkStandardNewMacro(vtkProgressiveMesh);
 struct vtkProgressiveMesh::Cache
 {
   std::string Key; // the input's modification time and the properties the build depends on
-  int Precision = -1; // the OutputPointsPrecision Wholes were written with
+  int Precision = -1;       // the OutputPointsPrecision Wholes were written with
+  bool OriginalIds = false; // and GenerateOriginalIds
   std::vector<meshsimp::ProgressiveMesh> Pieces;
   std::vector<bool> Ready;
   /// Per piece, the whole sequence as a mesh (made once, at the first level written): levels are
@@ -276,7 +277,8 @@ int vtkProgressiveMesh::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // The cached sequences serve while the input and every property the build depends on are
-  // unchanged; another OutputPointsPrecision only writes the whole sequences' meshes again.
+  // unchanged; another OutputPointsPrecision or GenerateOriginalIds only writes the whole
+  // sequences' meshes again.
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   std::ostringstream key;
   key.precision(17);
@@ -294,10 +296,12 @@ int vtkProgressiveMesh::RequestData(
     *this->Sequences = Cache();
     this->Sequences->Key = key.str();
   }
-  if (this->Sequences->Precision != this->OutputPointsPrecision)
+  if (this->Sequences->Precision != this->OutputPointsPrecision ||
+    this->Sequences->OriginalIds != this->GenerateOriginalIds)
   {
     this->Sequences->Wholes.clear();
     this->Sequences->Precision = this->OutputPointsPrecision;
+    this->Sequences->OriginalIds = this->GenerateOriginalIds;
   }
   this->Sequences->Levels.clear();
   this->Sequences->Outputs.clear();
@@ -423,7 +427,8 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
   if (!whole)
   {
     whole = vtkSmartPointer<vtkPolyData>::New();
-    vtkSimplification::SetOutput(input, triangles, WholeSequence(sequence, triangles.View), this->OutputPointsPrecision, whole);
+    vtkSimplification::SetOutput(input, triangles, WholeSequence(sequence, triangles.View), this->OutputPointsPrecision,
+      this->GenerateOriginalIds, whole);
     vtkNew<vtkIntArray> removedAt;
     removedAt->SetName(RemovedAtName);
     removedAt->SetNumberOfValues(static_cast<vtkIdType>(sequence.RemovedBy.size()));

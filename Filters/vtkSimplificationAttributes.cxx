@@ -295,6 +295,28 @@ void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const mesh
   AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
 }
 
+/// vtkOriginalPointIds and vtkOriginalCellIds, vtkGeometryFilter's names: each output point's
+/// representative input point, each output triangle's input cell.
+void AddOriginalIds(const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+{
+  vtkNew<vtkIdTypeArray> points;
+  points->SetName("vtkOriginalPointIds");
+  points->SetNumberOfValues(static_cast<vtkIdType>(mesh.NumberOfPoints()));
+  for (std::int64_t p = 0; p < mesh.NumberOfPoints(); ++p)
+  {
+    points->SetValue(static_cast<vtkIdType>(p), mesh.Representative(p));
+  }
+  output->GetPointData()->AddArray(points);
+  vtkNew<vtkIdTypeArray> cells;
+  cells->SetName("vtkOriginalCellIds");
+  cells->SetNumberOfValues(static_cast<vtkIdType>(mesh.NumberOfTriangles()));
+  for (std::int64_t t = 0; t < mesh.NumberOfTriangles(); ++t)
+  {
+    cells->SetValue(static_cast<vtkIdType>(t), triangles.SourceCell(mesh.TriangleSource[t]));
+  }
+  output->GetCellData()->AddArray(cells);
+}
+
 /// Held in a view's information: the array whose memory it shows, kept alive with the view. A
 /// deep copy owns its values, so the key does not follow it (the whole would stay alive).
 class vtkPrefixOwnerKey : public vtkInformationObjectBaseKey
@@ -348,7 +370,7 @@ void PrefixArrays(vtkDataSetAttributes* whole, vtkIdType tuples, vtkDataSetAttri
 }
 
 void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
-  int outputPointsPrecision, vtkPolyData* output)
+  int outputPointsPrecision, bool originalIds, vtkPolyData* output)
 {
   output->SetPoints(MakePoints(mesh.Points, outputPointsPrecision, input->GetPoints()));
   output->SetPolys(MakeTriangles(mesh.Triangles));
@@ -369,6 +391,10 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
     outCD->CopyData(inCD, sources.GetPointer(), vtkIdType{ 0 });
   }
   MapPointData(input->GetPointData(), mesh, output->GetPointData());
+  if (originalIds)
+  {
+    AddOriginalIds(triangles, mesh, output);
+  }
   FinishOutput(input, triangles, mesh, true, output);
 }
 

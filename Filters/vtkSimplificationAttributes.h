@@ -34,9 +34,11 @@ namespace vtkSimplification
 
 /// The output of a piece: points (OutputPointsPrecision: vtkAlgorithm's precisions, DEFAULT as
 /// the input's points), triangles, cell data, point data by the rule above, the core's point
-/// arrays and field values, the input's field data, and AchievedReduction.
+/// arrays and field values, the input's field data, and AchievedReduction; with originalIds,
+/// vtkOriginalPointIds (each point's representative) and vtkOriginalCellIds (each triangle's
+/// input cell), replacing input arrays of those names.
 void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
-  int outputPointsPrecision, vtkPolyData* output);
+  int outputPointsPrecision, bool originalIds, vtkPolyData* output);
 
 /// A view of the first tuples of array (no copy), which keeps array alive (see SetPrefixOutput).
 vtkSmartPointer<vtkDataArray> PrefixView(vtkDataArray* array, vtkIdType tuples);

@@ -75,6 +75,7 @@ Setters CommonSetters(vtkMeshSimplificationFilter* f)
     { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
     { "CloseCracks", [f](double v) { f->SetCloseCracks(v != 0.0); } },
     { "ComputeDeviation", [f](double v) { f->SetComputeDeviation(v != 0.0); } },
+    { "GenerateOriginalIds", [f](double v) { f->SetGenerateOriginalIds(v != 0.0); } },
     { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
   };
 }

@@ -2,7 +2,8 @@
 // The front end every filter shares (vtkMeshSimplificationFilter), checked on all four: sharp
 // attribute borders, a count shared out over composite blocks, blocks that are not polygonal
 // passed through, surfaces of other datasets, 3-D cells refused, the Deviation array, the
-// error reported in the bound's units, and zero-width cracks closed unless point data differ.
+// error reported in the bound's units, zero-width cracks closed unless point data differ, and
+// the original ids.
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
 #include "vtkProgressiveMesh.h"
@@ -365,8 +366,65 @@ void CheckErrorUnits(const Factory& make)
   }
 }
 
+/// With GenerateOriginalIds, vtkOriginalPointIds and vtkOriginalCellIds name each output point's
+/// representative and each triangle's input cell: the same ids the point-data rule and the
+/// cell-data copy use (an integer point array of ids and a cell array of ids come out equal to
+/// them), each point's distinct and in range; at a second target too (Progressive Mesh then
+/// writes its level from the cached sequence); without it, neither array is there.
+void CheckOriginalIds(const Factory& make)
+{
+  vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+  vtkNew<vtkIdTypeArray> pointIds, cellIds;
+  pointIds->SetName("PointIds");
+  cellIds->SetName("CellIds");
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    pointIds->InsertNextValue(i);
+  }
+  for (vtkIdType i = 0; i < sphere->GetNumberOfCells(); ++i)
+  {
+    cellIds->InsertNextValue(i);
+  }
+  sphere->GetPointData()->AddArray(pointIds);
+  sphere->GetCellData()->AddArray(cellIds);
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+  filter->SetInputData(sphere);
+  filter->SetTargetReduction(0.8);
+  filter->Update();
+  CHECK(!filter->GetOutput()->GetPointData()->GetArray("vtkOriginalPointIds") &&
+    !filter->GetOutput()->GetCellData()->GetArray("vtkOriginalCellIds"));
+  filter->GenerateOriginalIdsOn();
+  for (const double reduction : { 0.8, 0.5 })
+  {
+    filter->SetTargetReduction(reduction);
+    filter->Update();
+    vtkPolyData* output = filter->GetOutput();
+    vtkDataArray* original = output->GetPointData()->GetArray("vtkOriginalPointIds");
+    vtkDataArray* originalCells = output->GetCellData()->GetArray("vtkOriginalCellIds");
+    CHECK(original && originalCells && output->GetNumberOfCells() > 0);
+    if (!original || !originalCells)
+    {
+      return;
+    }
+    vtkDataArray* carried = output->GetPointData()->GetArray("PointIds");
+    std::vector<bool> seen(static_cast<std::size_t>(sphere->GetNumberOfPoints()), false);
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(original->GetTuple1(i));
+      CHECK(id >= 0 && id < sphere->GetNumberOfPoints() && !seen[id] && carried->GetTuple1(i) == id);
+      seen[id] = id >= 0 && id < sphere->GetNumberOfPoints();
+    }
+    vtkDataArray* copied = output->GetCellData()->GetArray("CellIds");
+    for (vtkIdType t = 0; t < output->GetNumberOfCells(); ++t)
+    {
+      CHECK(originalCells->GetTuple1(t) == copied->GetTuple1(t));
+    }
+  }
+}
+
 void CheckFilter(const Factory& make, double tolerance, bool blends)
 {
+  CheckOriginalIds(make);
   CheckAttributeBorders(make, tolerance, blends);
   CheckCracks(make);
   CheckCompositeCount(make, tolerance);

@@ -87,7 +87,7 @@ def largest_distance(source, simplified):
 def check_front_end(simplifier_class, source, tolerance):
     """What every filter's proxy shares (MeshSimplificationFilter.xml), on the cow: Deviation on
     by default, two-sided (its maximum at least the largest distance of
-    an input point to the output), the attribute-border properties; a reduction of 5 clamped to 1 (an empty
+    an input point to the output), the attribute-border properties, the original ids on request; a reduction of 5 clamped to 1 (an empty
     output); an unstructured grid of triangles (after Merge Blocks) simplified like the cow;
     ParaView's default Sphere (96 triangles, 10 asked for) not emptied; a triangle count shared
     out over the blocks of a multiblock."""
@@ -102,6 +102,20 @@ def check_front_end(simplifier_class, source, tolerance):
     check(simplified.PreserveAttributeBorders == 0 and list(simplified.AttributeBorders) == ["POINTS", "None"],
           "attribute borders off, no array by default")
     check(simplified.CloseCracks == 1, "cracks closed by default")
+    # ParaView's data information lists no array named vtkOriginal...: the data is fetched.
+    from paraview import servermanager
+    plain = servermanager.Fetch(simplified)
+    check(simplified.GenerateOriginalIds == 0 and not plain.GetPointData().GetArray("vtkOriginalPointIds"),
+          "no original ids by default")
+    simplified.GenerateOriginalIds = 1
+    output = servermanager.Fetch(simplified)
+    ids = output.GetPointData().GetArray("vtkOriginalPointIds")
+    cells = output.GetCellData().GetArray("vtkOriginalCellIds")
+    ids, cells = (ids.GetRange() if ids else (-1, -1)), (cells.GetRange() if cells else (-1, -1))
+    points_in = source.GetDataInformation().GetNumberOfPoints()
+    cells_in = source.GetDataInformation().GetNumberOfCells()
+    check(0 <= ids[0] <= ids[1] < points_in and 0 <= cells[0] <= cells[1] < cells_in,
+          "GenerateOriginalIds: input point ids %s of %d, cell ids %s of %d" % (ids, points_in, cells, cells_in))
     clamped = simplifier_class(Input=source, TargetReduction=5)
     clamped.UpdatePipeline()
     check(clamped.GetDataInformation().GetNumberOfCells() == 0, "TargetReduction 5 gives an empty output")
