@@ -4,7 +4,8 @@
  * @brief Symmetric 4x4 error quadrics (Garland–Heckbert) and their robust minimiser.
  *
  * A quadric Q measures a weighted sum of squared distances to planes:
- * Q(v) = vᵀ A v + 2 bᵀ v + c, the expanded form of paper 000 eq. (1) and (6)–(7).
+ * Q(v) = vᵀ A v + 2 bᵀ v + c, the expanded form of eq. (1) and (6)–(7) of Zhou, Zhang, Shi and
+ * Pan, "A new simplification algorithm for colored or textured polygonal models".
  * It is stored as 10 doubles (upper triangle of A, b, c) so arrays of quadrics stay flat.
  * The collapse- and clustering-based filters of this project share it.
  */

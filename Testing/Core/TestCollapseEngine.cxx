@@ -116,7 +116,7 @@ void HeapOrderAndTieRule()
   heap.Set(3, 0.0);
   heap.Set(4, 0.0);
   heap.Set(5, 3.0);
-  heap.Set(1, 0.0); // cost set again: behind the zero-cost ones waiting (paper 004 §3.5)
+  heap.Set(1, 0.0); // cost set again: behind the zero-cost ones waiting (Zhou, Zhang and Cheng §3.5)
   heap.Set(5, 0.5); // decrease-key
   heap.Set(0, 4.0); // increase-key
   heap.Remove(2);
@@ -245,7 +245,7 @@ void FanClassesFromCorners()
 void LinkConditionRejectsHiddenCycle()
 {
   // On the bipyramid the equator vertices e0, e1 share T and B (their triangles' far corners)
-  // and e2, which is not: collapsing e0-e1 would close the cycle e0 e1 e2 (paper 004 Fig. 8).
+  // and e2, which is not: collapsing e0-e1 would close the cycle e0 e1 e2 (Zhou, Zhang and Cheng, Fig. 8).
   Engine e(Bipyramid());
   const Eigen::Vector3d mid = 0.5 * (e.Point(2) + e.Point(3));
   CHECK(e.Mesh.FirstFailedCheck(e.Plan({ 2, 3 }, mid)) == CollapseCheck::LinkCondition);
