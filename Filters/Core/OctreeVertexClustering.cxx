@@ -556,7 +556,8 @@ private:
   /// With a count target that clustering without tears overshoots, joins whole output points
   /// by half-edge collapses of the clustered mesh down to the target (see the body); owner and
   /// survivors as CommitPieces and SurvivingTriangles give them.
-  void FinishByCollapses(std::int64_t target, std::vector<Survivor>& survivors, std::vector<std::int32_t>& owner) const;
+  /// Returns false when aborted (the context's progress, from 0.85 to 0.95 of the whole).
+  bool FinishByCollapses(std::int64_t target, std::vector<Survivor>& survivors, std::vector<std::int32_t>& owner) const;
   /// The leaves to split next, best first (see Refine); empty when refinement is done.
   std::vector<HeapEntry>& NextBatch(std::int64_t target, double bound, double wanted);
   /// How many leaves to split together now (see Refine).
@@ -2346,7 +2347,7 @@ bool Clusterer::CommitPieces(const Mending& mending, const std::vector<Survivor>
   return false;
 }
 
-void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& survivors,
+bool Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& survivors,
   std::vector<std::int32_t>& owner) const
 {
   // Clustering that mends every tear can overshoot a count target on steep or thin input: there
@@ -2383,8 +2384,14 @@ void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& su
   options.Regions = regions.data();
   options.StopTriangles = target;
   options.CloseCracks = false; // clusters at one position stay apart, as their triangles have them
+  // With the caller's threads and abort, its progress going on from where clustering left it.
+  ExecutionContext collapses = this->Context;
+  collapses.Progress = [this](double progress) { return this->Context.Report(0.85 + 0.1 * progress); };
   ProgressiveMesh sequence;
-  BuildProgressiveMesh(clustered, options, sequence);
+  if (!BuildProgressiveMesh(clustered, options, sequence, collapses))
+  {
+    return false;
+  }
   Outcome outcome;
   Target goal;
   goal.SetTriangleCount(target);
@@ -2415,6 +2422,7 @@ void Clusterer::FinishByCollapses(std::int64_t target, std::vector<Survivor>& su
     left += removed[t] ? 0 : 1;
   }
   survivors.resize(left);
+  return true;
 }
 
 std::vector<std::int32_t> Clusterer::JoinStrandedCaps(std::vector<std::int32_t> owner) const
@@ -2976,7 +2984,10 @@ bool Clusterer::Run(OctreeClusteringResult& result)
   }
   if (target >= 0 && !this->CellLimits() && static_cast<std::int64_t>(survivors.size()) > target + this->Options.Goal.Slack(target))
   {
-    this->FinishByCollapses(target, survivors, owner);
+    if (!this->FinishByCollapses(target, survivors, owner))
+    {
+      return false;
+    }
   }
   this->Finalize(survivors, owner, result);
   this->JudgeCount(result);

@@ -1154,6 +1154,19 @@ void AbortStopsEarly()
   OctreeClusteringResult result;
   CHECK(!meshsimp::OctreeVertexClustering(grid.View(), Target(100), result, context));
   CHECK(result.Report.Stop == meshsimp::StopReason::Aborted);
+  // The finishing collapses (the steep terrain at 98 % needs them) report their progress past
+  // the clustering's 0.85 and stop at an abort there too.
+  const Mesh terrain = SteepTerrain(100);
+  double finishing = 0.0;
+  context.Progress = [&finishing](double progress) {
+    finishing = progress > 0.85 && progress < 0.95 ? progress : finishing;
+    return finishing == 0.0;
+  };
+  OctreeClusteringOptions steep;
+  steep.Goal.SetReduction(0.98);
+  OctreeClusteringResult stopped;
+  CHECK(!meshsimp::OctreeVertexClustering(terrain.View(), steep, stopped, context));
+  CHECK(finishing > 0.85 && stopped.Report.Stop == meshsimp::StopReason::Aborted);
 }
 
 void SurvivesDamagedMeshes()
