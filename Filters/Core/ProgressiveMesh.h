@@ -21,16 +21,13 @@
  *   the top of the heap, on its candidates in cost order; the first legal one is collapsed.
  * - It runs down to the coarsest mesh the checks allow. Flat arrays, no allocation per collapse.
  *
- * The sequence (ProgressiveMesh): points renumbered so that those removed last come first, so a
- * level of k points is the prefix [0, k); each removed point's Parent (a smaller index);
- * triangles ordered by the point whose collapse removes them (RemovedBy, those never removed
- * first), so a level's triangles are a prefix too. ExtractLevel maps each corner to its first
- * ancestor below k. A count, a reduction or an error bound picks the level (LevelFor).
+ * The sequence and its queries are in ProgressiveSequence.h.
  */
 #ifndef MeshSimplification_ProgressiveMesh_h
 #define MeshSimplification_ProgressiveMesh_h
 
 #include "ProgressiveMeshParameters.h"
+#include "ProgressiveSequence.h"
 #include "Simplification.h"
 
 #include <cstdint>
@@ -66,77 +63,9 @@ enum class Refusal : std::uint8_t
   Flip           // a remaining triangle would turn over or degenerate
 };
 
-/// The whole collapse sequence of a mesh: every level of detail at once.
-struct ProgressiveMesh
-{
-  /// Per point, in collapse order (the last removed first): its input point, and the point it
-  /// collapses into (a smaller index), -1 for the BasePoints points never removed.
-  std::vector<std::int32_t> InputPoint;
-  std::vector<std::int32_t> Parent;
-  /// Per point, the largest collapse error (input units) up to and including its own collapse
-  /// (0 for base points): it falls with the index, so a bound picks a level by bisection.
-  std::vector<double> Error;
-  /// 3 per triangle, point indices; those never removed first, then by RemovedBy ascending.
-  std::vector<std::int32_t> Triangles;
-  std::vector<std::int32_t> InputTriangle;
-  /// Per triangle, the point whose collapse removes it, -1 when none does.
-  std::vector<std::int32_t> RemovedBy;
-  std::int64_t BasePoints = 0;
-  /// The prepared input's counts (usable triangles and points, diagonal, locks).
-  Outcome Report;
-
-  std::int64_t NumberOfPoints() const { return static_cast<std::int64_t>(this->Parent.size()); }
-  std::int64_t NumberOfCollapses() const { return this->NumberOfPoints() - this->BasePoints; }
-  /// The triangles of the level with the first points points.
-  std::int64_t TrianglesAt(std::int64_t points) const;
-  /// For the first points points, the fraction of the sequence done before each disappears
-  /// (the first removed 0, the last (collapses - 1) / collapses, one never removed 1).
-  std::vector<double> CollapseLevel(std::int64_t points) const;
-  /// Empty when the arrays form a sequence as described above, else what is wrong.
-  std::string Validate(std::int64_t inputPoints) const;
-};
-
 /// Builds the sequence of the usable input; returns false when aborted.
 bool BuildProgressiveMesh(const TriangleMeshView& input, const ProgressiveMeshOptions& options,
   ProgressiveMesh& sequence, const ExecutionContext& context = {});
-
-/// The level (its number of points) a target picks: the count nearest the target's count, or
-/// the most collapses whose error stays within its bound (bound in input units). outcome gets
-/// the stop reason when the target lies beyond the coarsest level.
-std::int64_t LevelFor(const ProgressiveMesh& sequence, const Target& goal, Outcome& outcome);
-
-/// For the level with the first points points: each removed point's first ancestor below
-/// points (entry p - points for point p).
-std::vector<std::int32_t> LevelAncestors(const ProgressiveMesh& sequence, std::int64_t points);
-
-/// The corners of the level's TrianglesAt(points) triangles, each point mapped to its first
-/// ancestor below points, 3 per triangle into corners (Index: the caller's index type, such as a
-/// cell array's, so a level needs no second copy).
-template <class Index>
-void LevelCorners(const ProgressiveMesh& sequence, std::int64_t points, Index* corners)
-{
-  const std::vector<std::int32_t> ancestor = LevelAncestors(sequence, points);
-  const std::int64_t k = sequence.NumberOfPoints() - static_cast<std::int64_t>(ancestor.size());
-  const std::int64_t count = 3 * sequence.TrianglesAt(k);
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    const std::int32_t p = sequence.Triangles[i];
-    corners[i] = static_cast<Index>(p < k ? p : ancestor[p - k]);
-  }
-}
-
-/// The level with the first points points, in input coordinates, each point its own source;
-/// point array "CollapseLevel" and field values "LevelTriangles" and "LevelPoints".
-void ExtractLevel(const ProgressiveMesh& sequence, std::int64_t points, const TriangleMeshView& input,
-  SimplifiedMesh& level);
-
-/// The level's sources in full: each of its points (weight 1), then the removed points whose
-/// ancestor it is (weight 0), for what reads the correspondence (TwoSidedDeviation).
-void ListLevelSources(const ProgressiveMesh& sequence, std::int64_t points, SimplifiedMesh& level);
-
-/// Runs the target on the sequence: LevelFor, then ExtractLevel, with the sequence's Report.
-void ExtractTarget(const ProgressiveMesh& sequence, const Target& goal, const TriangleMeshView& input,
-  SimplifiedMesh& level);
 
 } // namespace meshsimp
 
