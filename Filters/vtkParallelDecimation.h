@@ -7,8 +7,8 @@
  * Polygonal Mesh Simplification" (ch. 5–6). Vertices are removed: each removal collapses one of
  * the vertex's edges into a neighbour, which keeps its point data. With the QUADRIC measure the
  * survivors then move to the point of least error of the planes they stand for (MoveSurvivors,
- * default on; about 30 % less RMS distance on the benchmark meshes); without it the output points
- * are a subset of the input points, coordinates included.
+ * default on: it lowers the distance to the input; see ParallelDecimation.md for the figures);
+ * without it the output points are a subset of the input points, coordinates included.
  *
  * - Vertex types: simple, boundary, interior-edge (two sharp edges), corner and complex
  *   (non-manifold). An edge is sharp where its triangles' normals differ by more than
@@ -20,7 +20,7 @@
  *   boundary or feature neighbours (eq. 5.1–5.4), plus, with AccumulateError, the importance of
  *   the vertices already collapsed into it; with QUADRIC (default) the least accumulated
  *   plane-distance error (Garland–Heckbert quadrics) of the vertex's allowed collapses, which
- *   remembers every removed vertex's planes and gives about half the RMS distance.
+ *   remembers every removed vertex's planes and so keeps the output closer to the input.
  * - Ordering without sorting (§5.6): vertices go into buckets by a function of their importance
  *   that spreads the least important ones (BucketImportance a, BucketShare α; the paper's 2 %
  *   and 80 %).

@@ -22,9 +22,9 @@
  *   best point of the segment between them; sharp boundary corners never move, and
  *   PreserveBoundary keeps the whole boundary in place;
  * - beyond the paper, a triangle collapses its cheapest edge instead when that costs much less
- *   (EdgeCollapses, default on): mean distances drop by 18–46 % on the shared meshes, to a
- *   third on the CAD fandisk; a triangle with two boundary corners may collapse its boundary
- *   edge alone, which lets a triangulated polygon (a fan) be simplified at all;
+ *   (EdgeCollapses, default on), which lowers the mean distance to the input on curved
+ *   surfaces; a triangle with two boundary corners may collapse its boundary edge alone,
+ *   which lets a triangulated polygon (a fan) be simplified at all;
  * - beyond the paper, the order also weighs how far a collapse moves the surface from the input
  *   triangles merged into it (SurfaceErrorWeight), which keeps the Hausdorff distance down;
  * - every collapse keeps the mesh manifold (link condition), never folds a triangle over and
@@ -71,12 +71,11 @@ public:
   /**
    * Gauss-curvature threshold of strong features (eq. 6–7), dimensionless: a triangle's
    * curvature times the current mean triangle area. A cube's corner scores about 0.1 (its face
-   * planes keep it anyway). Default 0: the rule is off. Over the benchmark corpus it costs more
-   * than it keeps: at 0.3 the mean distance is 1.06x vtkQuadricDecimation's against 0.97x
-   * without it, because the sliver fans of CAD and building models score as spikes (their
-   * corners' areas are tiny) and snap collapses across thin slabs; it does keep a subdivided
-   * cow's horn tips (Hausdorff 0.043 % against 0.075 % of the diagonal at 70 %). 0.3 keeps only
-   * sharper spikes than a cube's corner.
+   * planes keep it anyway); 0.3 keeps only sharper spikes than a cube's corner. Default 0: the
+   * rule is off, because it costs more than it keeps: the sliver fans of CAD and building
+   * models score as spikes (their corners' areas are tiny) and snap collapses across thin slabs,
+   * which raises the mean distance to the input; it does keep sharp tips, such as a subdivided
+   * cow's horns, closer to the input. VolumeTriangleCollapse.md gives the figures.
    */
   vtkSetClampMacro(FeatureCurvature, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(FeatureCurvature, double);
@@ -114,10 +113,10 @@ public:
    * terms over the triangles around its two ends) is under a quarter of the triangle's
    * (default on; beyond the paper). A triangle collapse always changes a curved surface, while
    * an edge along a cylinder's ruling line or a gently curved direction merges at almost no
-   * error: on the shared meshes this lowers the mean distance by 18–46 % (to a third on the CAD
-   * fandisk), and most collapses become edge collapses. Off gives the paper's triangle
-   * collapses only, about 1.5× as fast; on terrain the angle guard then often has to be
-   * lowered to reach the target (see MinimumAngle).
+   * error: this lowers the mean distance to the input, and most collapses become edge
+   * collapses. Off gives the paper's triangle collapses only, which is faster but farther from
+   * the input; on terrain the angle guard then often has to be lowered to reach the target (see
+   * MinimumAngle). VolumeTriangleCollapse.md gives the figures.
    */
   vtkSetMacro(EdgeCollapses, bool);
   vtkGetMacro(EdgeCollapses, bool);
@@ -133,11 +132,10 @@ public:
    * their triangles (weighted by the squared edge length), times the squared mean input
    * triangle area, which gives the term the volume error's units. The placement stays the
    * paper's. The border planes see what volume does not: a chord cut across a hole's rim in the
-   * surface's own plane sweeps no volume (the engine at 70 %: Hausdorff 5.0x the peer's without
-   * them, 1.6x with; the corpus's Hausdorff 1.09x -> 1.02x). Ordered by volume alone, a few collapses on gently
-   * curved surfaces move the surface far: the Hausdorff distance on the CAD fandisk at 70 % was
-   * 1.9× vtkQuadricDecimation's; with the default the largest over the benchmark is 1.2×, at a
-   * similar volume change (0.2× vtkQuadricDecimation's, geometric mean).
+   * surface's own plane sweeps no volume, so without them holes get triangles across them.
+   * Ordered by volume alone, a few collapses on gently curved surfaces, where the normal factor
+   * makes volume cheap, move the surface far from the input; the term keeps the Hausdorff
+   * distance down at a similar volume change. VolumeTriangleCollapse.md gives the figures.
    */
   vtkSetClampMacro(SurfaceErrorWeight, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SurfaceErrorWeight, double);

@@ -38,11 +38,10 @@ constexpr std::size_t MaximumBatch = 32;
 /// edges are tested: a vertex whose normal lies between the faces (on a rounded rim) joins
 /// both. The creases of CAD parts (90 degrees) and all but the sharpest ridges of a steep
 /// terrain are not cut; a vertex whose normals nearly cancel (a folded fan, by the measure
-/// Folded uses) faces no way: none of its edges is cut, so it too may join both faces. On the
-/// corpus's building (walls 0.2-0.3 thick that meet in non-manifold edges, where the tear
-/// rules do not part the faces) the RMS distance at 98 % falls from 1.03 % to 0.32 % of the
-/// diagonal; at 120 degrees as far, but 9 more corpus cases change, the Klein bottle's and the
-/// gyroid's for the worse.
+/// Folded uses) faces no way: none of its edges is cut, so it too may join both faces. Where
+/// thin walls meet in non-manifold edges, the tear rules do not part the faces and this rule
+/// does; 120 degrees parts them as well but changes more outputs, some for the worse
+/// (measured on the corpus; OctreeVertexClustering.md gives the figures).
 constexpr float FacingAwayCosine = -0.766f;
 
 struct Plane
@@ -1704,8 +1703,8 @@ bool Clusterer::QueueFlippedLeaves()
   // the leaf is made and tests only triangles with one corner in it. A neighbour split later,
   // or one that cannot be split (a lone vertex, kept where it is), can still leave a triangle
   // turned over: the largest of its corners' leaves is queued to be split (one is enough to
-  // move a corner; splitting all three cost 0.8 % more triangles over the corpus at 0.5 and
-  // 2 % bounds). Each triangle of three clusters is read at its lowest corner.
+  // move a corner; splitting all three spends more triangles, see OctreeVertexClustering.md).
+  // Each triangle of three clusters is read at its lowest corner.
   // With a count target these splits pass the target, and quadric collapses take the clustered
   // mesh back to it (FinishByCollapses, multiphase simplification): so not where the input is no
   // surface at a corner (collapses are refused there, the splits would only add triangles), and
@@ -2276,8 +2275,8 @@ bool Clusterer::CommitPieces(const Mending& mending, const std::vector<Survivor>
   // triangles. What is left of a cluster may fold where the whole did not (Folded), and so be
   // farther than the bound from both points: then, if its leaf can still be split, the commit
   // is undone and the leaf queued, to be refined and mended again. (Triangles that mending turns
-  // over are left: mending again for them cost 46 % more instructions on the gyroid at 0.5 %,
-  // for 0.05 % of the corpus's triangles.)
+  // over are left: they are very few, and mending again for them costs far more instructions;
+  // see OctreeVertexClustering.md.)
   const std::int32_t clusters = static_cast<std::int32_t>(this->ClusterPositions.size());
   const std::int32_t count = clusters + static_cast<std::int32_t>(mending.PieceNodes.size());
   this->ClusterPositions.resize(count, Vec3::Zero());

@@ -30,13 +30,15 @@ enum class ImportanceMeasure : std::uint8_t
 struct ParallelDecimationParameters
 {
   /// An edge whose two triangles' normals differ by more than this (degrees) is sharp. 75 by
-  /// default: at 60 the benchmark's RMS distance is 4 % (Quadric) and 3 % (AveragePlane) larger,
-  /// at 90 the CAD fandisk loses creases under AveragePlane.
+  /// default: a lower angle marks more edges sharp, and the more constrained decimation ends
+  /// farther from the input; a higher one lets AveragePlane wear away the creases of CAD parts
+  /// (ParallelDecimation.md gives the figures).
   double FeatureAngle = 75.0;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;
-  /// Quadric by default: over the benchmark meshes its RMS distance is about half of
-  /// AveragePlane's (which forgets the error of removed vertices, even accumulated).
+  /// Quadric by default: it remembers the planes of every removed vertex, where AveragePlane
+  /// forgets the error of removed vertices (even accumulated), so its output stays closer to
+  /// the input (ParallelDecimation.md gives the figures).
   ImportanceMeasure Measure = ImportanceMeasure::Quadric;
   /// Quadric: move each survivor to the point of least error of its accumulated quadric after
   /// the last round, within half its shortest edge (MinimizeQuadricWithin). Off: survivors keep
@@ -48,8 +50,9 @@ struct ParallelDecimationParameters
   /// The half-edge of an AveragePlane vertex (Quadric picks the half-edge of least error).
   HalfEdgeChoice Choice = HalfEdgeChoice::LeastAreaChange;
   /// §5.3: the largest turn (degrees) of a remaining triangle's normal a collapse may cause.
-  /// 90 by default: at 45 the benchmark's RMS distance under Quadric is 10 % larger (fold-overs
-  /// are the engine's plane-side test's job).
+  /// 90 by default: a lower limit refuses collapses the quadric would choose, which leaves the
+  /// output farther from the input (ParallelDecimation.md gives the figures); fold-overs are the
+  /// engine's plane-side test's job.
   double MaximumNormalDeviation = 90.0;
   /// The bucketing function's a (a fraction of the largest importance) and α (the share of the
   /// buckets it fills), eq. (5.13); the paper's 2 % and 80 %.

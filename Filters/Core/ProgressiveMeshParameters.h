@@ -13,8 +13,8 @@ namespace meshsimp
 {
 
 /// The weights of the cost of a half-edge collapse x -> y (see ProgressiveMesh.h). The defaults
-/// (the quadric error alone) are the combination that measured closest to the input over the
-/// benchmark corpus (ProgressiveMesh.md gives the figures).
+/// (the quadric error alone) are the combination of these weights that keeps the levels
+/// closest to the input (ProgressiveMesh.md gives the figures).
 struct ProgressiveMeshParameters
 {
   /// Weight of the L1 length |x - y|_1 (Wu and Fei, §4), in units of the input's mean L1 edge

@@ -16,7 +16,8 @@ namespace meshsimp
 struct VolumeCollapseParameters
 {
   /// Threshold of the dimensionless Gauss curvature K_t · (mean triangle area); <= 0 (the
-  /// default: the corpus measures better without the rule) disables the feature rule.
+  /// default: the rule costs more distance to the input than it keeps, see
+  /// VolumeTriangleCollapse.h) disables the feature rule.
   double FeatureCurvature = 0.0;
   /// A boundary vertex where the boundary turns by more than this is a corner.
   double BoundaryCornerAngle = 60.0;

@@ -34,8 +34,8 @@ constexpr double EdgeErrorShare = 0.25;
 /// corners (ForEachAdjacent), and keep their sums (UpdateVertex) by differences.
 constexpr std::int32_t FanLimit = 256;
 /// A batch takes at most one collapse per this many input triangles: on a small mesh a batch of
-/// BatchSize would relax the heap order over much of the surface (measured: Hausdorff distance
-/// up to 1.3x the strict order's on the 5 000-triangle meshes at 70 %), and gain little time.
+/// BatchSize would relax the heap order over much of the surface (measured: a larger Hausdorff
+/// distance than the strict order's; see VolumeTriangleCollapse.md), and gain little time.
 constexpr std::int64_t BatchShare = 1000;
 /// A collapse is flat when its error is below this fraction of Σ (plane weights) · (longest
 /// edge)²: its point lies within about 3·10⁻⁴ edge lengths of the planes (RMS).
@@ -928,8 +928,8 @@ VolumeCollapser::Verdict VolumeCollapser::Examine(std::int32_t t, double queuedK
     return Verdict::Legal;
   }
   // A free placement that fails may still collapse onto a corner; a flat collapse that fails
-  // only the angle guard may make its slivers (a plane or a crease line loses nothing:
-  // vtkQuadricDecimation keeps 24 % slivers on the CAD fandisk at 95 %).
+  // only the angle guard may make its slivers (a plane or a crease line loses nothing, and CAD
+  // meshes need slivers along their creases: see VolumeTriangleCollapse.md).
   const Candidate original = candidate;
   if (candidate.FreePlacement && this->OntoCheapestCorner(candidate, scratch))
   {

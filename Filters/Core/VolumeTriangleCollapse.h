@@ -25,8 +25,9 @@
  * - Gauss curvature (eq. 6–7): K_t = Σ |angle deficit| / Σ adjacent areas over the triangle's
  *   corners. A triangle whose K_t, measured in units of the current mean triangle area (so the
  *   threshold does not depend on the mesh's scale or resolution), exceeds FeatureCurvature is a
- *   strong feature and collapses onto its corner of largest |K_v|. Off by default (0): over the
- *   benchmark corpus the rule costs more distance than it keeps (vtkVolumeTriangleCollapse.h).
+ *   strong feature and collapses onto its corner of largest |K_v|. Off by default (0): the sliver
+ *   fans of CAD and building models score as spikes, so the rule costs more distance than it
+ *   keeps (vtkVolumeTriangleCollapse.h; VolumeTriangleCollapse.md gives the figures).
  * - Boundaries (§3.5): a triangle with one boundary corner collapses onto it; one with two onto
  *   the point ω v_i + (1 − ω) v_j of least error on that pair; one with three is kept. Boundary
  *   corners (a sharp turn of the boundary) never move. PreserveBoundary locks every boundary
@@ -50,9 +51,9 @@
  *   next key is queued again); then the updates around the new vertices run on the threads, each
  *   writing its own neighbourhood's data only. Triangles passed over for their neighbourhoods
  *   wait for the next batch; near the target a batch is one collapse. The result depends on
- *   BatchSize, never on the thread count; 1 is the strict heap order. Measured with two
- *   threads on the shared meshes of 50 000–280 000 triangles: 1.35–1.6x faster than the strict
- *   order (one thread: up to 10 % slower), every quality target of the benchmark still met.
+ *   BatchSize, never on the thread count; 1 is the strict heap order. Batches let a second
+ *   thread shorten the run on large meshes without moving the output farther from the input;
+ *   on one thread they cost a little time (VolumeTriangleCollapse.md gives the figures).
  * - Constriction matrices are assembled from per-vertex sums of Q_i (a triangle across an edge
  *   is in two of the three sums, the triangle itself in all three).
  * - Beyond the paper (EdgeCollapses, default on): each triangle also prices its three edges,
@@ -60,12 +61,13 @@
  *   hold both, once) and its point minimising it as above. When the cheapest edge's error is
  *   under a quarter of the triangle's, the triangle's plan is that edge collapse instead. A
  *   triangle collapse always cuts into a curved surface, an edge along a cylinder's ruling line
- *   or a gently curved direction hardly does: on the shared meshes the mean distance drops by
- *   18–46 % (to a third on the CAD fandisk). The heap key is the error per nominally removed
- *   triangle (four for a triangle, two for an edge). An edge-boundary triangle likewise prices
- *   its boundary edge alone, at its point of least error on the segment: without that a disk
- *   fanned around one vertex (a triangulated polygon) cannot be simplified at all, since every
- *   triangle is edge-boundary and §3.5's collapse leaves a rim vertex with two neighbours.
+ *   or a gently curved direction hardly does, so edge collapses lower the mean distance to the
+ *   input (VolumeTriangleCollapse.md gives the figures). The heap key is the error per
+ *   nominally removed triangle (four for a triangle, two for an edge). An edge-boundary
+ *   triangle likewise prices its boundary edge alone, at its point of least error on the
+ *   segment: without that a disk fanned around one vertex (a triangulated polygon) cannot be
+ *   simplified at all, since every triangle is edge-boundary and §3.5's collapse leaves a rim
+ *   vertex with two neighbours.
  * - Beyond the paper (SurfaceErrorWeight, default 3000; 0 gives the paper's order): the heap
  *   key adds the new point's squared distances to the planes of the input triangles merged
  *   into the collapsing vertices (Garland–Heckbert quadrics, area-weighted, summed through the
@@ -73,14 +75,13 @@
  *   triangles (edge² weights: moving a rim within the surface's plane sweeps no volume), times
  *   the weight and the squared mean input triangle area (so the term has the volume error's
  *   units, length⁸). Placement is unchanged. By volume alone a few collapses on
- *   gently curved surfaces, where the normal factor makes volume cheap, moved the surface far:
- *   the CAD fandisk's Hausdorff distance at 70 % was 1.9× vtkQuadricDecimation's.
+ *   gently curved surfaces, where the normal factor makes volume cheap, move the surface far
+ *   from the input; the term keeps the Hausdorff distance down (VolumeTriangleCollapse.md).
  * - The engine's angle guard (MinimumAngle, default 10°) is a price, not a wall: a collapse it
  *   alone refuses waits in the heap at its priority times (MinimumAngle / a)², a its smallest
  *   new angle, and is made when every collapse that makes no sliver costs more. As a wall it
  *   made the order skip the right collapses on steep terrain, where thin triangles are the
- *   shape: terrain_fractal_steep at 95 % had 4.0× vtkQuadricDecimation's mean distance, now
- *   1.6×; the corpus's terrain class 1.28× -> 1.10× at 70/95 % (see VolumeTriangleCollapse.md). A flat
+ *   shape, and left the output far from the input there (VolumeTriangleCollapse.md). A flat
  *   collapse — its error under 10⁻⁷ · Σ weights · (longest edge)², the point within about
  *   3·10⁻⁴ edge lengths of its planes — that fails only the guard, and for which no corner
  *   placement passes, is still made: on a plane or a straight crease it loses nothing,
