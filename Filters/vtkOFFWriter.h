@@ -3,7 +3,7 @@
  * @class   vtkOFFWriter
  * @brief   write the polygons of a vtkPolyData as an ASCII Object File Format (.off) mesh
  *
- * The counterpart of vtkOFFReader, so that ParaView and meshsimplify can save what they read:
+ * The counterpart of vtkOFFMeshReader, so that ParaView and meshsimplify can save what they read:
  * writes the points and the polygons (triangles and larger faces) through the core's
  * meshsimp::WriteOFF, coordinates with 17 significant digits so that reading the file back
  * gives the same doubles. OFF holds faces only: vertex, line and strip cells are left out with
@@ -14,7 +14,7 @@
  *
  * A file that cannot be written gives one error, an error code, and Write() returns 0.
  *
- * @sa vtkOFFReader
+ * @sa vtkOFFMeshReader
  */
 #ifndef vtkOFFWriter_h
 #define vtkOFFWriter_h

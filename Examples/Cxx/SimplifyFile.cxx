@@ -2,7 +2,7 @@
 // The VTK filters in a C++ program: a mesh file simplified by Volume Triangle Collapse to a
 // triangle count, with the two-sided Deviation array, written as .vtp.
 //   SimplifyFile input.(off|vtp) output.vtp [triangles, default 1000]
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkAlgorithm.h"
@@ -30,7 +30,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkAlgorithm> reader;
   if (path.size() > 4 && path.substr(path.size() - 4) == ".off")
   {
-    auto off = vtkSmartPointer<vtkOFFReader>::New();
+    auto off = vtkSmartPointer<vtkOFFMeshReader>::New();
     off->SetFileName(path.c_str());
     reader = off;
   }

@@ -2,7 +2,7 @@
 #include "MeshFiles.h"
 
 #include "MeshFileChecks.h"
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkOFFWriter.h"
 
 #include "vtkCellArray.h"
@@ -182,7 +182,7 @@ struct MeshFormat
 };
 
 const MeshFormat Formats[] = {
-  { "off", nullptr, NewReader<vtkOFFReader>, Write<vtkOFFWriter>, true },
+  { "off", nullptr, NewReader<vtkOFFMeshReader>, Write<vtkOFFWriter>, true },
   { "ply", CheckPLY, NewReader<vtkPLYReader>, Write<vtkPLYWriter, BinaryPLY>, false },
   { "stl", CheckSTL, NewReader<vtkSTLReader>, Write<vtkSTLWriter, BinarySTL>, false },
   { "obj", CheckOBJ, NewReader<vtkOBJReader>, Write<vtkOBJWriter>, false },

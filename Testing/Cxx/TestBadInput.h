@@ -10,7 +10,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkMeshSimplificationFilter.h"
 #include "vtkNew.h"
@@ -167,7 +167,7 @@ inline void CheckWithinInputBox(const FilterFactory& make)
 {
   vtkNew<vtkXMLPolyDataReader> terrain;
   terrain->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/jacksboro_dem_half.vtp");
-  vtkNew<vtkOFFReader> cow;
+  vtkNew<vtkOFFMeshReader> cow;
   cow->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
   for (vtkAlgorithm* reader : { static_cast<vtkAlgorithm*>(terrain), static_cast<vtkAlgorithm*>(cow) })
   {

@@ -2,7 +2,7 @@
 // Baseline images of the filters: the cow at 90 % reduction (flat shading with edges) and the
 // Jacksboro terrain at 95 % coloured by the carried elevation array.
 //   TestFilterImage Octree|Volume|Parallel|Progressive Cow|Terrain -V baseline.png -T temporary/
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
 #include "vtkProgressiveMesh.h"
@@ -48,7 +48,7 @@ int TestFilterImage(int argc, char* argv[])
     octree->SetTargetReduction(terrain ? 0.95 : 0.9);
     filter = octree;
   }
-  vtkNew<vtkOFFReader> cow;
+  vtkNew<vtkOFFMeshReader> cow;
   vtkNew<vtkXMLPolyDataReader> dem;
   if (terrain)
   {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkOFFWriter: vtkOFFReader reads back what it writes (points bit for bit, polygons of any
+// vtkOFFWriter: vtkOFFMeshReader reads back what it writes (points bit for bit, polygons of any
 // size, the cow's counts); vertex and line cells are left out with a warning; a file that
-// cannot be written is an error and Write() returns 0. vtkOFFReader: COFF's colours become RGBA
+// cannot be written is an error and Write() returns 0. vtkOFFMeshReader: COFF's colours become RGBA
 // point scalars (0-255, or 0-1 scaled); a damaged file is one error, without the executive's
 // dump of the request that followed it (issue 45).
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkOFFWriter.h"
 
 #include "vtkCellArray.h"
@@ -58,7 +58,7 @@ vtkSmartPointer<vtkPolyData> MixedCells()
 
 vtkSmartPointer<vtkPolyData> ReadOFF(const std::string& path)
 {
-  vtkNew<vtkOFFReader> reader;
+  vtkNew<vtkOFFMeshReader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
   return reader->GetOutput();
@@ -180,7 +180,7 @@ void ColouredOFFIsRead(const std::string& path)
 void DamagedOFFIsOneError(const std::string& path)
 {
   WriteText(path, "OFF\n4 9 0\n0 0 0\n");
-  vtkNew<vtkOFFReader> reader;
+  vtkNew<vtkOFFMeshReader> reader;
   vtkNew<vtkTest::ErrorObserver> observer, executive;
   reader->AddObserver(vtkCommand::ErrorEvent, observer);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);

@@ -2,7 +2,7 @@
 // vtkOctreeVertexClustering on a real mesh: targets met, every point-data array carried,
 // cell data copied, error arrays, the error bound, thread independence, input untouched, locked
 // points kept, no new open or non-manifold edge on a Wavelet iso-surface.
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkOctreeVertexClustering.h"
 
 #include "vtkCallbackCommand.h"

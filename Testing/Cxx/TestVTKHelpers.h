@@ -18,7 +18,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
@@ -57,7 +57,7 @@ inline void CheckInputUntouched(vtkPolyData* input, vtkPolyData* copy)
 /// coordinates, constants of several types, labels) and a cell-id array.
 inline vtkSmartPointer<vtkPolyData> DecoratedCow()
 {
-  vtkNew<vtkOFFReader> reader;
+  vtkNew<vtkOFFMeshReader> reader;
   reader->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputConnection(reader->GetOutputPort());

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @class   vtkOFFReader
+ * @class   vtkOFFMeshReader
  * @brief   read an ASCII Object File Format (.off) mesh into vtkPolyData
  *
  * OFF files (Geomview, CGAL, many mesh repositories) hold points and polygons of any size.
@@ -8,19 +8,19 @@
  * per-point colours become the unsigned-char point scalars "RGBA" (as vtkPLYReader names
  * them). A file that cannot be read gives one error line and an empty output.
  */
-#ifndef vtkOFFReader_h
-#define vtkOFFReader_h
+#ifndef vtkOFFMeshReader_h
+#define vtkOFFMeshReader_h
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string>
 
-class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOFFReader : public vtkPolyDataAlgorithm
+class MESHSIMPLIFICATIONFILTERS_EXPORT vtkOFFMeshReader : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkOFFReader* New();
-  vtkTypeMacro(vtkOFFReader, vtkPolyDataAlgorithm);
+  static vtkOFFMeshReader* New();
+  vtkTypeMacro(vtkOFFMeshReader, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -37,16 +37,16 @@ public:
   static int CanReadFile(const char* fileName);
 
 protected:
-  vtkOFFReader();
-  ~vtkOFFReader() override = default;
+  vtkOFFMeshReader();
+  ~vtkOFFMeshReader() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::string FileName;
 
 private:
-  vtkOFFReader(const vtkOFFReader&) = delete;
-  void operator=(const vtkOFFReader&) = delete;
+  vtkOFFMeshReader(const vtkOFFMeshReader&) = delete;
+  void operator=(const vtkOFFMeshReader&) = delete;
 };
 
 #endif

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkOFFReader.h"
+#include "vtkOFFMeshReader.h"
 
 #include "OFFFile.h"
 
@@ -17,21 +17,21 @@
 #include <algorithm>
 #include <fstream>
 
-vtkStandardNewMacro(vtkOFFReader);
+vtkStandardNewMacro(vtkOFFMeshReader);
 
-vtkOFFReader::vtkOFFReader()
+vtkOFFMeshReader::vtkOFFMeshReader()
 {
   this->SetNumberOfInputPorts(0);
 }
 
-int vtkOFFReader::CanReadFile(const char* fileName)
+int vtkOFFMeshReader::CanReadFile(const char* fileName)
 {
   std::ifstream in(fileName ? fileName : "");
   std::string keyword;
   return (in >> keyword) && keyword == "OFF" ? 1 : 0;
 }
 
-int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkOFFMeshReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   meshsimp::PolygonMesh mesh;
@@ -77,7 +77,7 @@ int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   return 1;
 }
 
-void vtkOFFReader::PrintSelf(ostream& os, vtkIndent indent)
+void vtkOFFMeshReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << this->FileName << "\n";
