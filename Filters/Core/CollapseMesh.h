@@ -59,7 +59,9 @@
 #ifndef MeshSimplification_CollapseMesh_h
 #define MeshSimplification_CollapseMesh_h
 
+#include "CollapseReport.h"
 #include "Execution.h"
+#include "FanTopology.h"
 #include "TriangleMesh.h"
 
 #include <Eigen/Core>
@@ -102,42 +104,6 @@ MESHSIMP_PREFETCH_HELPER void Prefetch(const void* p)
 #endif
 }
 
-enum class VertexClass : std::uint8_t
-{
-  Interior,   // a closed fan of triangles
-  Boundary,   // an open fan: two boundary edges
-  Corner,     // a boundary vertex where the boundary turns sharply (see Build)
-  Hinge,      // inside a hinge: a chain of edges of k >= 3 triangles each (see IsHinge)
-  NonManifold // anything else: several fans, a hinge's end or turn, inconsistent orientation
-};
-
-/// ClassifyFan's working memory: reuse one per thread, it keeps its allocations.
-struct FanWorkspace
-{
-  FanLookup ByPrevious;
-  std::vector<std::int32_t> Successor;
-  std::vector<std::uint8_t> Reached;
-  std::vector<std::pair<std::int32_t, std::int32_t>> Ends; // IsHinge: (far vertex, corner)
-};
-
-/**
- * The class of a vertex from its corners {triangle, next, previous}: one closed fan (Interior),
- * one open fan (Boundary, with fanFirst and fanLast its first and last corner) or anything else
- * (NonManifold); never Corner, which Build decides from the boundary's turn. A corner's
- * successor is the corner whose previous vertex is its next one.
- */
-VertexClass ClassifyFan(
-  const Corner* first, const Corner* last, std::int32_t& fanFirst, std::int32_t& fanLast, FanWorkspace& work);
-
-/**
- * Whether a vertex whose fan is not one (ClassifyFan: NonManifold) lies inside a hinge, where k
- * >= 3 sheets meet along a chain of edges like the pages of a book at its spine (the walls and
- * slabs of a building model): it has exactly two edges of more than two triangles, to ends[0]
- * and ends[1], with k triangles each, and its triangles are k fans, each from one of those edges
- * to the other (its link is k paths from ends[0] to ends[1]). No edge of one triangle is allowed.
- */
-bool IsHinge(const Corner* first, const Corner* last, std::int32_t ends[2], FanWorkspace& work);
-
 /// One collapse: the kept vertex, the one or two merged into it, and the attribute weights
 /// (40 bytes: a decimation to 1 % keeps about one per input vertex).
 struct CollapseRecord
@@ -157,62 +123,6 @@ struct CollapseUndo
   std::int32_t FirstChange = 0, ChangeCount = 0;
   std::int32_t FirstRemovedTriangle = 0, RemovedTriangleCount = 0;
 };
-
-/// The checks of IsLegal in the order it runs them (listed at the top of this file); the first
-/// that fails names the refusal, so a caller that reacts to it never runs the checks again.
-enum class CollapseCheck : std::uint8_t
-{
-  Passed,        // every check passed
-  Plan,          // not two or three distinct vertices, or a position that is not finite
-  Locks,         // removes or moves a locked vertex, or moves a hinge vertex off its hinge
-  Regions,       // merges vertices of different regions
-  LinkCondition, // an edge of three triangles, a hidden cycle, a pinch, a vertex left too few neighbours
-  SharedEdges,   // a new edge between two vertices shared with another piece
-  PlaneSide,     // a changed triangle turns over (the plane-side test)
-  Degenerate,    // a changed triangle of (almost) zero area
-  FoldAcross,    // a changed triangle ends back to back with its unchanged neighbour
-  AngleGuard     // a new angle below the minimum (SetMinimumAngle); every other check passed
-};
-constexpr std::size_t NumberOfCollapseChecks = 10; // the values of CollapseCheck
-static_assert(static_cast<std::size_t>(CollapseCheck::AngleGuard) + 1 == NumberOfCollapseChecks,
-  "NumberOfCollapseChecks counts CollapseCheck's values");
-/// Why a vertex is locked, or why a plan fails the locks check, as the user knows the rule.
-/// The values are CollapseMesh's lock bytes (0: not locked); SharedPoint is SharedPointLock.
-enum class LockReason : std::uint8_t
-{
-  Options = 1,                   // the caller's options (its locked points, PreserveBoundary)
-  SharedPoint = SharedPointLock, // a point shared with another piece of a distributed mesh
-  NonManifold,                   // a non-manifold vertex (always locked)
-  BorderCorner,                  // the filter's: the border turns there by more than BoundaryCornerAngle
-  OffHinge                       // a plan only: it moves a vertex off its hinge
-};
-constexpr std::size_t NumberOfLockReasons = 5;
-/// The place of a LockReason in per-reason tables.
-constexpr std::size_t LockIndex(LockReason reason)
-{
-  return static_cast<std::size_t>(reason) - 1;
-}
-
-/// How many plans failed each check first (Passed counts legal ones), and the locks check's
-/// refusals again by LockReason.
-struct RefusalCounts
-{
-  std::array<std::int64_t, NumberOfCollapseChecks> ByCheck{};
-  std::array<std::int64_t, NumberOfLockReasons> ByLock{};
-  std::int64_t Total() const;
-};
-
-/**
- * The two commonest refusals among counts, with their shares of all the plans counted, for a
- * report: "71 % would remove or move a border corner (...), 25 % would break ...". Plans that
- * passed were refused by a rule of the caller's, which passedText says ("would ..."). Empty
- * when nothing was counted.
- */
-std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText);
-
-/// "140 non-manifold, 6 border corners" (or "all non-manifold", or "non-manifold" for one):
-/// locked vertices counted by LockReason, for a report.
-std::string DescribeLocked(const std::array<std::int64_t, NumberOfLockReasons>& counts);
 
 /// A proposed collapse: Vertices[0] is kept, Vertices[1 .. Count) are merged into it.
 struct CollapsePlan
