@@ -416,6 +416,44 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   return true;
 }
 
+namespace
+{
+/// The common settings SetSettingByName takes, with the ranges their setters clamp to.
+template <class Visit>
+void ForEachCommonSetting(vtkMeshSimplificationFilter* filter, Visit&& visit)
+{
+  visit("PreserveBoundary", [filter](double v) { filter->SetPreserveBoundary(v != 0.0); });
+  visit("CloseCracks", [filter](double v) { filter->SetCloseCracks(v != 0.0); });
+  visit("ComputeDeviation", [filter](double v) { filter->SetComputeDeviation(v != 0.0); });
+  visit("GenerateOriginalIds", [filter](double v) { filter->SetGenerateOriginalIds(v != 0.0); });
+  visit("OutputPointsPrecision", [filter](double v) { filter->SetOutputPointsPrecision(static_cast<int>(v)); });
+  visit("NumberOfThreads", [filter](double v) { filter->SetNumberOfThreads(static_cast<int>(v)); });
+}
+}
+
+bool vtkMeshSimplificationFilter::SetSettingByName(const std::string& name, double value)
+{
+  bool found = false;
+  ForEachCommonSetting(this, [&](const char* entry, const auto& set) {
+    if (!found && name == entry)
+    {
+      set(value);
+      found = true;
+    }
+  });
+  if (!found && this->SetOwnSetting(name, value))
+  {
+    this->Modified();
+    found = true;
+  }
+  return found;
+}
+
+bool vtkMeshSimplificationFilter::SetOwnSetting(const std::string&, double)
+{
+  return false;
+}
+
 void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {

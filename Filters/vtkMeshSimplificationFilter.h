@@ -48,6 +48,7 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory>  // for std::unique_ptr
+#include <string>  // for SetSettingByName
 #include <utility> // for std::move
 
 namespace meshsimp
@@ -202,6 +203,16 @@ public:
   ///@}
 
   /**
+   * Sets a setting by the name its setter and the plugin give it: the common ones
+   * (PreserveBoundary, CloseCracks, ComputeDeviation, GenerateOriginalIds,
+   * OutputPointsPrecision, NumberOfThreads) or the filter's own (its parameters' table, e.g.
+   * "FeatureAngle"), as a number (a flag: nonzero is on; an enumeration: its value), clamped to
+   * the range its setter clamps to. Returns false, changing nothing, for a name the filter does
+   * not have. The command-line tool's --set goes through it.
+   */
+  bool SetSettingByName(const std::string& name, double value);
+
+  /**
    * The largest error the algorithm bounds, after the last execution, in MaximumError's units
    * (a fraction of the diagonal when RelativeError is on); 0 when the algorithm does not
    * measure it in the mode used.
@@ -212,6 +223,10 @@ public:
   struct Run;
 
 protected:
+  /// The filter's own settings by name (see SetSettingByName): false where it has none of that
+  /// name. Filters with a parameters table set it through meshsimp::SetParameterByName.
+  virtual bool SetOwnSetting(const std::string& name, double value);
+
   vtkMeshSimplificationFilter();
   ~vtkMeshSimplificationFilter() override;
 

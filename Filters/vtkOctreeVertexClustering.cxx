@@ -23,10 +23,10 @@ bool vtkOctreeVertexClustering::RunCore(const meshsimp::TriangleMeshView& mesh,
 void vtkOctreeVertexClustering::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "MaximumCellSize: " << this->MaximumCellSize << "\n";
-  os << indent << "MaximumVerticesPerCell: " << this->MaximumVerticesPerCell << "\n";
-  os << indent << "ErrorIterations: " << this->ErrorIterations << "\n";
-  os << indent << "BoundaryPlanes: " << this->BoundaryPlanes << "\n";
-  os << indent << "BoundaryWeight: " << this->BoundaryWeight << "\n";
-  os << indent << "PreventFlips: " << this->PreventFlips << "\n";
+  meshsimp::PrintParameters<meshsimp::OctreeClusteringParameters>(*this, os, indent);
+}
+
+bool vtkOctreeVertexClustering::SetOwnSetting(const std::string& name, double value)
+{
+  return meshsimp::SetParameterByName<meshsimp::OctreeClusteringParameters>(*this, name, value);
 }

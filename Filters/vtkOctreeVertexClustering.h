@@ -104,12 +104,12 @@ public:
   ///@{
   /**
    * Add planes perpendicular to boundary edges so that open borders keep their shape
-   * (default on), with this weight relative to the face planes (default 10).
+   * (default on), with this weight relative to the face planes (default 10, from 0 to 1000).
    */
   vtkSetMacro(BoundaryPlanes, bool);
   vtkGetMacro(BoundaryPlanes, bool);
   vtkBooleanMacro(BoundaryPlanes, bool);
-  vtkSetClampMacro(BoundaryWeight, double, 0.0, 1e6);
+  vtkSetClampMacro(BoundaryWeight, double, 0.0, 1000.0);
   vtkGetMacro(BoundaryWeight, double);
   ///@}
 
@@ -130,6 +130,7 @@ public:
 protected:
   vtkOctreeVertexClustering();
   ~vtkOctreeVertexClustering() override = default;
+  bool SetOwnSetting(const std::string& name, double value) override;
 
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;

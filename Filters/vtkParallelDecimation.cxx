@@ -71,14 +71,10 @@ int vtkParallelDecimation::GetHalfEdgeChoice() const
 void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
-  os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";
-  os << indent << "ImportanceMeasure: " << this->GetImportanceMeasure() << "\n";
-  os << indent << "AccumulateError: " << this->AccumulateError << "\n";
-  os << indent << "MoveSurvivors: " << this->MoveSurvivors << "\n";
-  os << indent << "HalfEdgeChoice: " << this->GetHalfEdgeChoice() << "\n";
-  os << indent << "MaximumNormalDeviation: " << this->MaximumNormalDeviation << "\n";
-  os << indent << "BucketImportance: " << this->BucketImportance << "\n";
-  os << indent << "BucketShare: " << this->BucketShare << "\n";
-  os << indent << "RoundFraction: " << this->RoundFraction << "\n";
+  meshsimp::PrintParameters<meshsimp::ParallelDecimationParameters>(*this, os, indent);
+}
+
+bool vtkParallelDecimation::SetOwnSetting(const std::string& name, double value)
+{
+  return meshsimp::SetParameterByName<meshsimp::ParallelDecimationParameters>(*this, name, value);
 }

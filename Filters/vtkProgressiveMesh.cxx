@@ -282,9 +282,10 @@ int vtkProgressiveMesh::RequestData(
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   std::ostringstream key;
   key.precision(17);
-  key << InputStamp(input) << ' ' << this->LengthWeight << ' ' << this->CurvatureWeight << ' '
-      << this->QuadricWeight << ' ' << this->AttributeWeight << ' ' << this->PreserveBoundary << ' '
-      << this->PreserveAttributeBorders << ' ' << this->CloseCracks;
+  key << InputStamp(input) << ' ' << this->PreserveBoundary << ' ' << this->PreserveAttributeBorders << ' '
+      << this->CloseCracks;
+  meshsimp::ProgressiveMeshParameters::ForEach(static_cast<const meshsimp::ProgressiveMeshParameters&>(*this),
+    [&key](const char*, const auto& value, double, double) { key << ' ' << meshsimp::AsNumber(value); });
   for (int index = 0; index < 3; ++index)
   {
     vtkInformation* selection = this->GetInputArrayInformation(index);
@@ -477,9 +478,11 @@ bool vtkProgressiveMesh::AddDeviation(const vtkSimplification::TriangleInput& tr
 void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "LengthWeight: " << this->LengthWeight << "\n";
-  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
-  os << indent << "QuadricWeight: " << this->QuadricWeight << "\n";
-  os << indent << "AttributeWeight: " << this->AttributeWeight << "\n";
+  meshsimp::PrintParameters<meshsimp::ProgressiveMeshParameters>(*this, os, indent);
   os << indent << "NumberOfBuilds: " << this->NumberOfBuilds << "\n";
+}
+
+bool vtkProgressiveMesh::SetOwnSetting(const std::string& name, double value)
+{
+  return meshsimp::SetParameterByName<meshsimp::ProgressiveMeshParameters>(*this, name, value);
 }

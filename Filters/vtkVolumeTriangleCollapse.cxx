@@ -23,13 +23,10 @@ bool vtkVolumeTriangleCollapse::RunCore(const meshsimp::TriangleMeshView& mesh,
 void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FeatureCurvature: " << this->FeatureCurvature << "\n";
-  os << indent << "BoundaryCornerAngle: " << this->BoundaryCornerAngle << "\n";
-  os << indent << "UseNormalFactor: " << this->UseNormalFactor << "\n";
-  os << indent << "UseShapeFactor: " << this->UseShapeFactor << "\n";
-  os << indent << "UseVolumeWeights: " << this->UseVolumeWeights << "\n";
-  os << indent << "EdgeCollapses: " << this->EdgeCollapses << "\n";
-  os << indent << "SurfaceErrorWeight: " << this->SurfaceErrorWeight << "\n";
-  os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
-  os << indent << "BatchSize: " << this->BatchSize << "\n";
+  meshsimp::PrintParameters<meshsimp::VolumeCollapseParameters>(*this, os, indent);
+}
+
+bool vtkVolumeTriangleCollapse::SetOwnSetting(const std::string& name, double value)
+{
+  return meshsimp::SetParameterByName<meshsimp::VolumeCollapseParameters>(*this, name, value);
 }

@@ -66,73 +66,6 @@ double ParseNumber(const std::string& option, const std::string& text)
   Fail("option " + option + " needs a finite number, not '" + text + "'");
 }
 
-/// The --set names of each method's filter, and of every filter.
-using Setters = std::map<std::string, std::function<void(double)>>;
-
-Setters CommonSetters(vtkMeshSimplificationFilter* f)
-{
-  return {
-    { "PreserveBoundary", [f](double v) { f->SetPreserveBoundary(v != 0.0); } },
-    { "CloseCracks", [f](double v) { f->SetCloseCracks(v != 0.0); } },
-    { "ComputeDeviation", [f](double v) { f->SetComputeDeviation(v != 0.0); } },
-    { "GenerateOriginalIds", [f](double v) { f->SetGenerateOriginalIds(v != 0.0); } },
-    { "OutputPointsPrecision", [f](double v) { f->SetOutputPointsPrecision(static_cast<int>(v)); } },
-  };
-}
-
-Setters OctreeSetters(vtkOctreeVertexClustering* f)
-{
-  return {
-    { "MaximumCellSize", [f](double v) { f->SetMaximumCellSize(v); } },
-    { "MaximumVerticesPerCell", [f](double v) { f->SetMaximumVerticesPerCell(static_cast<int>(v)); } },
-    { "ErrorIterations", [f](double v) { f->SetErrorIterations(static_cast<int>(v)); } },
-    { "BoundaryPlanes", [f](double v) { f->SetBoundaryPlanes(v != 0.0); } },
-    { "BoundaryWeight", [f](double v) { f->SetBoundaryWeight(v); } },
-    { "PreventFlips", [f](double v) { f->SetPreventFlips(v != 0.0); } },
-  };
-}
-
-Setters VolumeSetters(vtkVolumeTriangleCollapse* f)
-{
-  return {
-    { "FeatureCurvature", [f](double v) { f->SetFeatureCurvature(v); } },
-    { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
-    { "UseNormalFactor", [f](double v) { f->SetUseNormalFactor(v != 0.0); } },
-    { "UseShapeFactor", [f](double v) { f->SetUseShapeFactor(v != 0.0); } },
-    { "UseVolumeWeights", [f](double v) { f->SetUseVolumeWeights(v != 0.0); } },
-    { "EdgeCollapses", [f](double v) { f->SetEdgeCollapses(v != 0.0); } },
-    { "SurfaceErrorWeight", [f](double v) { f->SetSurfaceErrorWeight(v); } },
-    { "MinimumAngle", [f](double v) { f->SetMinimumAngle(v); } },
-    { "BatchSize", [f](double v) { f->SetBatchSize(static_cast<int>(v)); } },
-  };
-}
-
-Setters ParallelSetters(vtkParallelDecimation* f)
-{
-  return {
-    { "FeatureAngle", [f](double v) { f->SetFeatureAngle(v); } },
-    { "BoundaryCornerAngle", [f](double v) { f->SetBoundaryCornerAngle(v); } },
-    { "ImportanceMeasure", [f](double v) { f->SetImportanceMeasure(static_cast<int>(v)); } },
-    { "AccumulateError", [f](double v) { f->SetAccumulateError(v != 0.0); } },
-    { "MoveSurvivors", [f](double v) { f->SetMoveSurvivors(v != 0.0); } },
-    { "HalfEdgeChoice", [f](double v) { f->SetHalfEdgeChoice(static_cast<int>(v)); } },
-    { "MaximumNormalDeviation", [f](double v) { f->SetMaximumNormalDeviation(v); } },
-    { "BucketImportance", [f](double v) { f->SetBucketImportance(v); } },
-    { "BucketShare", [f](double v) { f->SetBucketShare(v); } },
-    { "RoundFraction", [f](double v) { f->SetRoundFraction(v); } },
-  };
-}
-
-Setters ProgressiveSetters(vtkProgressiveMesh* f)
-{
-  return {
-    { "LengthWeight", [f](double v) { f->SetLengthWeight(v); } },
-    { "CurvatureWeight", [f](double v) { f->SetCurvatureWeight(v); } },
-    { "QuadricWeight", [f](double v) { f->SetQuadricWeight(v); } },
-    { "AttributeWeight", [f](double v) { f->SetAttributeWeight(v); } },
-  };
-}
-
 const char* Usage =
   "usage: meshsimplify --method octree|volume|parallel|progressive [--reduction R |\n"
   "         --target-triangles N | --max-error E [--relative-error]] [--threads T]\n"
@@ -259,32 +192,22 @@ Arguments ParseArguments(int argc, char* argv[])
 vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
 {
   vtkSmartPointer<vtkMeshSimplificationFilter> filter;
-  Setters setters;
   if (a.Method == "octree")
   {
-    auto octree = vtkSmartPointer<vtkOctreeVertexClustering>::New();
-    setters = OctreeSetters(octree);
-    filter = octree;
+    filter = vtkSmartPointer<vtkOctreeVertexClustering>::New();
   }
   else if (a.Method == "parallel")
   {
-    auto parallel = vtkSmartPointer<vtkParallelDecimation>::New();
-    setters = ParallelSetters(parallel);
-    filter = parallel;
+    filter = vtkSmartPointer<vtkParallelDecimation>::New();
   }
   else if (a.Method == "progressive")
   {
-    auto progressive = vtkSmartPointer<vtkProgressiveMesh>::New();
-    setters = ProgressiveSetters(progressive);
-    filter = progressive;
+    filter = vtkSmartPointer<vtkProgressiveMesh>::New();
   }
   else
   {
-    auto volume = vtkSmartPointer<vtkVolumeTriangleCollapse>::New();
-    setters = VolumeSetters(volume);
-    filter = volume;
+    filter = vtkSmartPointer<vtkVolumeTriangleCollapse>::New();
   }
-  setters.merge(CommonSetters(filter));
   filter->SetNumberOfThreads(a.Threads);
   filter->SetRelativeError(a.RelativeError);
   if (a.TargetTriangles)
@@ -304,12 +227,10 @@ vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
   }
   for (const auto& [name, value] : a.Settings)
   {
-    const auto setter = setters.find(name);
-    if (setter == setters.end())
+    if (!filter->SetSettingByName(name, value))
     {
       Fail("unknown --set name '" + name + "' for --method " + a.Method);
     }
-    setter->second(value);
   }
   return filter;
 }

@@ -9,6 +9,8 @@
 #ifndef meshsimp_OctreeClusteringParameters_h
 #define meshsimp_OctreeClusteringParameters_h
 
+#include "ParameterTable.h"
+
 namespace meshsimp
 {
 
@@ -31,6 +33,18 @@ struct OctreeClusteringParameters
   /// flip a few); with a count target even past the target, and quadric collapses finish at
   /// it (not at non-surface vertices, nor with cell limits, where collapses cannot finish).
   bool PreventFlips = true;
+
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  template <class Self, class Visit>
+  static void ForEach(Self& self, Visit&& visit)
+  {
+    visit("MaximumCellSize", self.MaximumCellSize, 1e-6, 1.0);
+    visit("MaximumVerticesPerCell", self.MaximumVerticesPerCell, 0.0, double(std::numeric_limits<int>::max()));
+    visit("ErrorIterations", self.ErrorIterations, 0.0, 20.0);
+    visit("BoundaryPlanes", self.BoundaryPlanes, 0.0, 1.0);
+    visit("BoundaryWeight", self.BoundaryWeight, 0.0, 1000.0);
+    visit("PreventFlips", self.PreventFlips, 0.0, 1.0);
+  }
 };
 
 } // namespace meshsimp

@@ -9,6 +9,8 @@
 #ifndef meshsimp_ParallelDecimationParameters_h
 #define meshsimp_ParallelDecimationParameters_h
 
+#include "ParameterTable.h"
+
 #include <cstdint>
 
 namespace meshsimp
@@ -60,6 +62,22 @@ struct ParallelDecimationParameters
   double BucketShare = 0.8;
   /// The share of the candidates, least important first, that one round considers.
   double RoundFraction = 0.1;
+
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  template <class Self, class Visit>
+  static void ForEach(Self& self, Visit&& visit)
+  {
+    visit("FeatureAngle", self.FeatureAngle, 0.0, 180.0);
+    visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0);
+    visit("ImportanceMeasure", self.Measure, 0.0, 1.0);
+    visit("MoveSurvivors", self.MoveSurvivors, 0.0, 1.0);
+    visit("AccumulateError", self.AccumulateError, 0.0, 1.0);
+    visit("HalfEdgeChoice", self.Choice, 0.0, 1.0);
+    visit("MaximumNormalDeviation", self.MaximumNormalDeviation, 0.0, 180.0);
+    visit("BucketImportance", self.BucketImportance, 1e-6, 1.0);
+    visit("BucketShare", self.BucketShare, 1e-6, 1.0);
+    visit("RoundFraction", self.RoundFraction, 0.001, 1.0);
+  }
 };
 
 } // namespace meshsimp

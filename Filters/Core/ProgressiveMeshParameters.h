@@ -9,6 +9,8 @@
 #ifndef meshsimp_ProgressiveMeshParameters_h
 #define meshsimp_ProgressiveMeshParameters_h
 
+#include "ParameterTable.h"
+
 namespace meshsimp
 {
 
@@ -30,6 +32,16 @@ struct ProgressiveMeshParameters
   /// Weight of the L1 distance of the extra coordinates (colours, texture coordinates: §7),
   /// which the caller scales to [0, 1]: a change from black to white costs AttributeWeight.
   double AttributeWeight = 1.0;
+
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  template <class Self, class Visit>
+  static void ForEach(Self& self, Visit&& visit)
+  {
+    visit("LengthWeight", self.LengthWeight, 0.0, Unbounded);
+    visit("CurvatureWeight", self.CurvatureWeight, 0.0, Unbounded);
+    visit("QuadricWeight", self.QuadricWeight, 0.0, Unbounded);
+    visit("AttributeWeight", self.AttributeWeight, 0.0, Unbounded);
+  }
 };
 
 } // namespace meshsimp

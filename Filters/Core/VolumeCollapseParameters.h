@@ -9,6 +9,8 @@
 #ifndef meshsimp_VolumeCollapseParameters_h
 #define meshsimp_VolumeCollapseParameters_h
 
+#include "ParameterTable.h"
+
 namespace meshsimp
 {
 
@@ -39,6 +41,21 @@ struct VolumeCollapseParameters
   /// and, once collapsed in key order, updated on the context's threads. 1 keeps the strict heap
   /// order. The result depends on this, never on the thread count.
   int BatchSize = 64;
+
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  template <class Self, class Visit>
+  static void ForEach(Self& self, Visit&& visit)
+  {
+    visit("FeatureCurvature", self.FeatureCurvature, 0.0, Unbounded);
+    visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0);
+    visit("MinimumAngle", self.MinimumAngle, 0.0, 30.0);
+    visit("EdgeCollapses", self.EdgeCollapses, 0.0, 1.0);
+    visit("SurfaceErrorWeight", self.SurfaceErrorWeight, 0.0, Unbounded);
+    visit("UseShapeFactor", self.UseShapeFactor, 0.0, 1.0);
+    visit("UseNormalFactor", self.UseNormalFactor, 0.0, 1.0);
+    visit("UseVolumeWeights", self.UseVolumeWeights, 0.0, 1.0);
+    visit("BatchSize", self.BatchSize, 1.0, 4096.0);
+  }
 };
 
 } // namespace meshsimp

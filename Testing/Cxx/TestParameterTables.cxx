@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Each filter's settings are listed once, in its core parameters' table (ForEach): the plugin's
+// XML gives each of them as a property of the filter's proxy with the core's default and, where
+// it has a range, the table's range; SetSettingByName knows each name, and no other.
+#include "OctreeClusteringParameters.h"
+#include "ParallelDecimationParameters.h"
+#include "ProgressiveMeshParameters.h"
+#include "VolumeCollapseParameters.h"
+#include "vtkOctreeVertexClustering.h"
+#include "vtkParallelDecimation.h"
+#include "vtkProgressiveMesh.h"
+#include "vtkVolumeTriangleCollapse.h"
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLDataElement.h"
+#include "vtkXMLDataParser.h"
+
+#include "TestBadInput.h"
+
+#include <cstdlib>
+#include <string>
+
+namespace
+{
+/// The element of the proxy's property of that name, or nullptr.
+vtkXMLDataElement* Property(vtkXMLDataElement* proxy, const char* name)
+{
+  for (int i = 0; proxy && i < proxy->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* element = proxy->GetNestedElement(i);
+    const char* property = element->GetAttribute("name");
+    if (property && std::string(property) == name && std::string(element->GetName()).find("Property") != std::string::npos)
+    {
+      return element;
+    }
+  }
+  return nullptr;
+}
+
+/// The range a property's domain allows: [min, max] of a range domain (a missing bound stays
+/// as it is), [0, 1] of a boolean, the smallest and largest value of an enumeration.
+void DomainRange(vtkXMLDataElement* property, double& minimum, double& maximum)
+{
+  for (int i = 0; i < property->GetNumberOfNestedElements(); ++i)
+  {
+    vtkXMLDataElement* domain = property->GetNestedElement(i);
+    const std::string kind = domain->GetName();
+    if (kind == "DoubleRangeDomain" || kind == "IntRangeDomain")
+    {
+      domain->GetScalarAttribute("min", minimum);
+      domain->GetScalarAttribute("max", maximum);
+    }
+    else if (kind == "BooleanDomain")
+    {
+      minimum = 0.0;
+      maximum = 1.0;
+    }
+    else if (kind == "EnumerationDomain")
+    {
+      minimum = 1e300;
+      maximum = -1e300;
+      for (int e = 0; e < domain->GetNumberOfNestedElements(); ++e)
+      {
+        double value = 0.0;
+        domain->GetNestedElement(e)->GetScalarAttribute("value", value);
+        minimum = std::min(minimum, value);
+        maximum = std::max(maximum, value);
+      }
+    }
+  }
+}
+
+template <class Table>
+void CheckTable(const char* file, const char* proxyName, vtkMeshSimplificationFilter* filter)
+{
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName((std::string(MESHSIMPLIFICATION_PLUGIN_XML) + "/" + file).c_str());
+  CHECK(parser->Parse() == 1);
+  vtkXMLDataElement* group = parser->GetRootElement() ? parser->GetRootElement()->FindNestedElementWithName("ProxyGroup") : nullptr;
+  vtkXMLDataElement* proxy = group ? group->FindNestedElementWithNameAndAttribute("SourceProxy", "name", proxyName) : nullptr;
+  CHECK(proxy != nullptr);
+  const Table defaults{};
+  Table::ForEach(defaults, [&](const char* name, const auto& member, double minimum, double maximum) {
+    vtkXMLDataElement* property = Property(proxy, name);
+    double xmlDefault = -1e300;
+    if (!property || !property->GetScalarAttribute("default_values", xmlDefault) ||
+      xmlDefault != meshsimp::AsNumber(member))
+    {
+      std::printf("%s %s: the plugin's default %g, the core's %g\n", proxyName, name, xmlDefault, meshsimp::AsNumber(member));
+      CHECK(false);
+      return;
+    }
+    double xmlMinimum = minimum, xmlMaximum = maximum;
+    DomainRange(property, xmlMinimum, xmlMaximum);
+    if (xmlMinimum != minimum || xmlMaximum != maximum)
+    {
+      std::printf("%s %s: the plugin's range [%g, %g], the table's [%g, %g]\n", proxyName, name, xmlMinimum,
+        xmlMaximum, minimum, maximum);
+      CHECK(false);
+    }
+    CHECK(filter->SetSettingByName(name, meshsimp::AsNumber(member)));
+  });
+  CHECK(!filter->SetSettingByName("NoSuchSetting", 1.0));
+}
+}
+
+int TestParameterTables(int, char*[])
+{
+  CheckTable<meshsimp::OctreeClusteringParameters>(
+    "OctreeVertexClustering.xml", "OctreeVertexClustering", vtkSmartPointer<vtkOctreeVertexClustering>::New());
+  CheckTable<meshsimp::VolumeCollapseParameters>(
+    "VolumeTriangleCollapse.xml", "VolumeTriangleCollapse", vtkSmartPointer<vtkVolumeTriangleCollapse>::New());
+  CheckTable<meshsimp::ParallelDecimationParameters>(
+    "ParallelDecimation.xml", "ParallelDecimation", vtkSmartPointer<vtkParallelDecimation>::New());
+  CheckTable<meshsimp::ProgressiveMeshParameters>(
+    "ProgressiveMesh.xml", "ProgressiveMesh", vtkSmartPointer<vtkProgressiveMesh>::New());
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
