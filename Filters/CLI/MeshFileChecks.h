@@ -17,6 +17,10 @@
  * Each function returns "" when the reader may be given the file, else the reason, one line.
  * They take files that passed the common checks (an existing, readable, non-empty regular
  * file). Our OFF reader checks its files itself and needs none.
+ *
+ * Each format's checks live in a file of their own: CheckPLY.cxx, CheckSTL.cxx, CheckOBJ.cxx,
+ * CheckVTP.cxx (with XmlMarkupScan.h's markup pass) and CheckLegacyVTK.cxx; the helpers they
+ * share (file size, words, numbers, quoting) in MeshFileCheckText.h.
  */
 #ifndef MeshSimplification_MeshFileChecks_h
 #define MeshSimplification_MeshFileChecks_h
