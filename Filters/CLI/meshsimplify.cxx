@@ -11,6 +11,7 @@
 // only) builds the sequence once and writes the level of each reduction to OUTPUT with %l
 // replaced by the reduction; the JSON then has build_ms and each level's extract_ms.
 #include "MeshFiles.h"
+#include "MeshSimplificationFilterList.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
 #include "vtkProgressiveMesh.h"
@@ -66,13 +67,52 @@ double ParseNumber(const std::string& option, const std::string& text)
   Fail("option " + option + " needs a finite number, not '" + text + "'");
 }
 
-const char* Usage =
-  "usage: meshsimplify --method octree|volume|parallel|progressive [--reduction R |\n"
-  "         --target-triangles N | --max-error E [--relative-error]] [--threads T]\n"
-  "         [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT\n"
-  "  --repeat N  run the filter N times; time_ms is the median\n"
-  "  --levels    progressive: one build, the level of each reduction written to OUTPUT with\n"
-  "              %l replaced by the reduction\n";
+/// Each registered filter's --method and how to make it (MeshSimplificationFilterList.h).
+struct Method
+{
+  const char* Name;
+  vtkSmartPointer<vtkMeshSimplificationFilter> (*Make)();
+};
+#define MESHSIMPLIFICATION_METHOD(name, method, parameters, tolerance, blends, alias)               \
+  { #method, [] { return vtkSmartPointer<vtkMeshSimplificationFilter>(vtkSmartPointer<vtk##name>::New()); } },
+const Method Methods[] = { MESHSIMPLIFICATION_FILTERS(MESHSIMPLIFICATION_METHOD) };
+#undef MESHSIMPLIFICATION_METHOD
+
+/// The method of that name, or nullptr.
+const Method* FindMethod(const std::string& name)
+{
+  for (const Method& method : Methods)
+  {
+    if (name == method.Name)
+    {
+      return &method;
+    }
+  }
+  return nullptr;
+}
+
+/// "octree, volume, ...": the methods for a message.
+std::string MethodNames(const char* separator)
+{
+  std::string names;
+  for (const Method& method : Methods)
+  {
+    names += (names.empty() ? "" : separator) + std::string(method.Name);
+  }
+  return names;
+}
+
+/// The usage text, with the registered methods.
+std::string Usage()
+{
+  return "usage: meshsimplify --method " + MethodNames("|") +
+    " [--reduction R |\n"
+    "         --target-triangles N | --max-error E [--relative-error]] [--threads T]\n"
+    "         [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT\n"
+    "  --repeat N  run the filter N times; time_ms is the median\n"
+    "  --levels    progressive: one build, the level of each reduction written to OUTPUT with\n"
+    "              %l replaced by the reduction\n";
+}
 
 /// The command line.
 struct Arguments
@@ -141,7 +181,7 @@ Arguments ParseArguments(int argc, char* argv[])
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h")
     {
-      std::fputs(Usage, stdout);
+      std::fputs(Usage().c_str(), stdout);
       std::exit(0);
     }
     const auto value = [&]() -> std::string {
@@ -163,10 +203,9 @@ Arguments ParseArguments(int argc, char* argv[])
     else
       Fail("unexpected argument " + arg);
   }
-  const std::pair<bool, const char*> checks[] = {
+  const std::pair<bool, std::string> checks[] = {
     { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },
-    { a.Method != "octree" && a.Method != "volume" && a.Method != "parallel" && a.Method != "progressive",
-      "unknown --method (available: octree, volume, parallel, progressive)" },
+    { !FindMethod(a.Method), "unknown --method (available: " + MethodNames(", ") + ")" },
     { !a.Levels.empty() && a.Method != "progressive", "--levels needs --method progressive" },
     { !a.Levels.empty() && a.Output.find("%l") == std::string::npos, "--levels needs %l in OUTPUT" },
     { !a.Levels.empty() && (reductionGiven || a.TargetTriangles || a.MaximumError || a.Repeat != 1),
@@ -191,23 +230,7 @@ Arguments ParseArguments(int argc, char* argv[])
 /// The method's filter with the command line's target, threads and --set values.
 vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
 {
-  vtkSmartPointer<vtkMeshSimplificationFilter> filter;
-  if (a.Method == "octree")
-  {
-    filter = vtkSmartPointer<vtkOctreeVertexClustering>::New();
-  }
-  else if (a.Method == "parallel")
-  {
-    filter = vtkSmartPointer<vtkParallelDecimation>::New();
-  }
-  else if (a.Method == "progressive")
-  {
-    filter = vtkSmartPointer<vtkProgressiveMesh>::New();
-  }
-  else
-  {
-    filter = vtkSmartPointer<vtkVolumeTriangleCollapse>::New();
-  }
+  const vtkSmartPointer<vtkMeshSimplificationFilter> filter = FindMethod(a.Method)->Make();
   filter->SetNumberOfThreads(a.Threads);
   filter->SetRelativeError(a.RelativeError);
   if (a.TargetTriangles)

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Baseline images of the filters: the cow at 90 % reduction (flat shading with edges) and the
 // Jacksboro terrain at 95 % coloured by the carried elevation array.
-//   TestFilterImage Octree|Volume|Parallel|Progressive Cow|Terrain -V baseline.png -T temporary/
+//   TestFilterImage <a registered filter's Name> Cow|Terrain -V baseline.png -T temporary/
+#include "MeshSimplificationFilterList.h"
 #include "vtkOFFMeshReader.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
@@ -19,35 +20,24 @@ int TestFilterImage(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::cerr << "usage: TestFilterImage Octree|Volume|Parallel|Progressive Cow|Terrain -V baseline -T dir\n";
+    std::cerr << "usage: TestFilterImage <filter name> Cow|Terrain -V baseline -T dir\n";
     return EXIT_FAILURE;
   }
   const bool terrain = std::strcmp(argv[2], "Terrain") == 0;
-  vtkSmartPointer<vtkPolyDataAlgorithm> filter;
-  if (std::strcmp(argv[1], "Volume") == 0)
-  {
-    auto volume = vtkSmartPointer<vtkVolumeTriangleCollapse>::New();
-    volume->SetTargetReduction(terrain ? 0.95 : 0.9);
-    filter = volume;
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter;
+#define MESHSIMPLIFICATION_MAKE(name, method, parameters, tolerance, blends, alias)                 \
+  if (std::strcmp(argv[1], #name) == 0)                                                           \
+  {                                                                                                \
+    filter = vtkSmartPointer<vtk##name>::New();                                                    \
   }
-  else if (std::strcmp(argv[1], "Parallel") == 0)
+  MESHSIMPLIFICATION_FILTERS(MESHSIMPLIFICATION_MAKE)
+#undef MESHSIMPLIFICATION_MAKE
+  if (!filter)
   {
-    auto parallel = vtkSmartPointer<vtkParallelDecimation>::New();
-    parallel->SetTargetReduction(terrain ? 0.95 : 0.9);
-    filter = parallel;
+    std::cerr << "TestFilterImage: no filter named " << argv[1] << "\n";
+    return EXIT_FAILURE;
   }
-  else if (std::strcmp(argv[1], "Progressive") == 0)
-  {
-    auto progressive = vtkSmartPointer<vtkProgressiveMesh>::New();
-    progressive->SetTargetReduction(terrain ? 0.95 : 0.9);
-    filter = progressive;
-  }
-  else
-  {
-    auto octree = vtkSmartPointer<vtkOctreeVertexClustering>::New();
-    octree->SetTargetReduction(terrain ? 0.95 : 0.9);
-    filter = octree;
-  }
+  filter->SetTargetReduction(terrain ? 0.95 : 0.9);
   vtkNew<vtkOFFMeshReader> cow;
   vtkNew<vtkXMLPolyDataReader> dem;
   if (terrain)

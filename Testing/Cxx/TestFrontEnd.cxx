@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The front end every filter shares (vtkMeshSimplificationFilter), checked on all four: sharp
-// attribute borders, a count shared out over composite blocks, blocks that are not polygonal
-// passed through, surfaces of other datasets, 3-D cells refused, the Deviation array, the
-// error reported in the bound's units, zero-width cracks closed unless point data differ, and
-// the original ids.
+// The front end every filter shares (vtkMeshSimplificationFilter), checked on each registered
+// filter (MeshSimplificationFilterList.h): sharp attribute borders, a count shared out over
+// composite blocks, blocks that are not polygonal passed through, surfaces of other datasets, 3-D
+// cells refused, the Deviation array, the error reported in the bound's units, zero-width cracks
+// closed unless point data differ, and the original ids.
+#include "MeshSimplificationFilterList.h"
 #include "vtkOctreeVertexClustering.h"
 #include "vtkParallelDecimation.h"
 #include "vtkProgressiveMesh.h"
@@ -436,9 +437,9 @@ void CheckFilter(const Factory& make, double tolerance, bool blends)
 
 int TestFrontEnd(int, char*[])
 {
-  CheckFilter([] { return vtkSmartPointer<vtkOctreeVertexClustering>::New(); }, 0.03, true);
-  CheckFilter([] { return vtkSmartPointer<vtkVolumeTriangleCollapse>::New(); }, 0.01, true);
-  CheckFilter([] { return vtkSmartPointer<vtkParallelDecimation>::New(); }, 0.02, false);
-  CheckFilter([] { return vtkSmartPointer<vtkProgressiveMesh>::New(); }, 0.01, false);
+#define MESHSIMPLIFICATION_CHECK(name, method, parameters, tolerance, blends, alias)                \
+  CheckFilter([] { return vtkSmartPointer<vtk##name>::New(); }, tolerance, blends);
+  MESHSIMPLIFICATION_FILTERS(MESHSIMPLIFICATION_CHECK)
+#undef MESHSIMPLIFICATION_CHECK
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Each filter's settings are listed once, in its core parameters' table (ForEach): the plugin's
-// XML gives each of them as a property of the filter's proxy with the core's default and, where
-// it has a range, the table's range; SetSettingByName knows each name, and no other.
+// Each registered filter's settings are listed once, in its core parameters' table (ForEach): the
+// plugin's XML gives each of them as a property of the filter's proxy with the core's default and,
+// where it has a range, the table's range; SetSettingByName knows each name, and no other.
+#include "MeshSimplificationFilterList.h"
 #include "OctreeClusteringParameters.h"
 #include "ParallelDecimationParameters.h"
 #include "ProgressiveMeshParameters.h"
@@ -107,13 +108,9 @@ void CheckTable(const char* file, const char* proxyName, vtkMeshSimplificationFi
 
 int TestParameterTables(int, char*[])
 {
-  CheckTable<meshsimp::OctreeClusteringParameters>(
-    "OctreeVertexClustering.xml", "OctreeVertexClustering", vtkSmartPointer<vtkOctreeVertexClustering>::New());
-  CheckTable<meshsimp::VolumeCollapseParameters>(
-    "VolumeTriangleCollapse.xml", "VolumeTriangleCollapse", vtkSmartPointer<vtkVolumeTriangleCollapse>::New());
-  CheckTable<meshsimp::ParallelDecimationParameters>(
-    "ParallelDecimation.xml", "ParallelDecimation", vtkSmartPointer<vtkParallelDecimation>::New());
-  CheckTable<meshsimp::ProgressiveMeshParameters>(
-    "ProgressiveMesh.xml", "ProgressiveMesh", vtkSmartPointer<vtkProgressiveMesh>::New());
+#define MESHSIMPLIFICATION_CHECK(name, method, parameters, tolerance, blends, alias)                \
+  CheckTable<meshsimp::parameters>(#name ".xml", #name, vtkSmartPointer<vtk##name>::New());
+  MESHSIMPLIFICATION_FILTERS(MESHSIMPLIFICATION_CHECK)
+#undef MESHSIMPLIFICATION_CHECK
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
