@@ -193,9 +193,10 @@ public:
    * point whose labels and ids it carries, see the point-data rule above) and the cell array
    * "vtkOriginalCellIds" (the input cell each output triangle comes from), the names and
    * meaning of vtkGeometryFilter's: the correspondence a later filter reads to map values
-   * between the input and the output. Ids are those of the filter's polygonal input (of each
-   * block of a composite input, of each piece under MPI; for a dataset made into a surface,
-   * of that surface); arrays of those names in the input are replaced. Default off.
+   * between the input and the output. Ids are those of the filter's input (of each block of a
+   * composite input, of each piece under MPI; for an unstructured grid, the grid's own, not
+   * those of the surface made from it); arrays of those names in the input are replaced.
+   * Default off.
    */
   vtkSetMacro(GenerateOriginalIds, bool);
   vtkGetMacro(GenerateOriginalIds, bool);

@@ -244,7 +244,9 @@ bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b)
   for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
   {
     vtkAbstractArray* array = pd->GetAbstractArray(i);
-    if (array == pd->GetGlobalIds() || array == pd->GetPedigreeIds())
+    const char* name = array->GetName();
+    if (array == pd->GetGlobalIds() || array == pd->GetPedigreeIds() ||
+      (name && std::strcmp(name, SurfacePointIdsName) == 0))
     {
       continue; // one per point by definition: they name the copies, not what they carry
     }
@@ -315,6 +317,34 @@ void AddOriginalIds(const TriangleInput& triangles, const meshsimp::SimplifiedMe
     cells->SetValue(static_cast<vtkIdType>(t), triangles.SourceCell(mesh.TriangleSource[t]));
   }
   output->GetCellData()->AddArray(cells);
+}
+
+/// A surface AsSurface made carries its dataset's ids, mapped as labels (each output point the
+/// value of its representative, each triangle its cell's): with originalIds they replace the
+/// ids AddOriginalIds gave, which number the surface's points and cells; else they go.
+void ResolveSurfaceIds(bool originalIds, vtkPolyData* output)
+{
+  const std::pair<vtkDataSetAttributes*, const char*> sides[] = {
+    { output->GetPointData(), "vtkOriginalPointIds" }, { output->GetCellData(), "vtkOriginalCellIds" }
+  };
+  const char* surfaceNames[] = { SurfacePointIdsName, SurfaceCellIdsName };
+  for (int side = 0; side < 2; ++side)
+  {
+    vtkDataSetAttributes* data = sides[side].first;
+    vtkAbstractArray* ids = data->GetAbstractArray(surfaceNames[side]);
+    if (!ids)
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> kept = ids;
+    data->RemoveArray(surfaceNames[side]);
+    if (originalIds)
+    {
+      data->RemoveArray(sides[side].second);
+      kept->SetName(sides[side].second);
+      data->AddArray(kept);
+    }
+  }
 }
 
 /// Held in a view's information: the array whose memory it shows, kept alive with the view. A
@@ -395,6 +425,7 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
   {
     AddOriginalIds(triangles, mesh, output);
   }
+  ResolveSurfaceIds(originalIds, output);
   FinishOutput(input, triangles, mesh, true, output);
 }
 

@@ -263,6 +263,10 @@ vtkSmartPointer<vtkPolyData> AsSurface(vtkDataObject* data, std::string& problem
   }
   vtkNew<vtkGeometryFilter> surface;
   surface->SetInputData(dataSet);
+  surface->PassThroughPointIdsOn();
+  surface->PassThroughCellIdsOn();
+  surface->SetOriginalPointIdsName(SurfacePointIdsName);
+  surface->SetOriginalCellIdsName(SurfaceCellIdsName);
   surface->Update();
   return vtkSmartPointer<vtkPolyData>(surface->GetOutput());
 }

@@ -55,6 +55,13 @@ bool ExtractTriangles(vtkPolyData* input, TriangleInput& triangles, std::string&
  */
 vtkSmartPointer<vtkPolyData> AsSurface(vtkDataObject* data, std::string& problem);
 
+/// The arrays a surface made by AsSurface carries: each of its points' and cells' ids in the
+/// dataset it was made from (vtkGeometryFilter's pass-through ids, under names of ours so that
+/// they are not mistaken for arrays the user gave). The output mapping turns them into
+/// vtkOriginalPointIds and vtkOriginalCellIds, or drops them (SetOutput).
+constexpr const char* SurfacePointIdsName = "vtkSimplificationSurfacePointIds";
+constexpr const char* SurfaceCellIdsName = "vtkSimplificationSurfaceCellIds";
+
 /**
  * ExtractTriangles as every filter starts: false with a one-line error for an input it cannot
  * process. Point and cell data arrays shorter than the input's points or cells (copying them

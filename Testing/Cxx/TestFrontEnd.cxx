@@ -367,58 +367,98 @@ void CheckErrorUnits(const Factory& make)
   }
 }
 
+/// The sphere with an id array of its points and one of its cells; as an unstructured grid, with
+/// an unused point first and a line cell before each triangle, so that the ids of the surface
+/// the filters make from it are not the grid's.
+vtkSmartPointer<vtkDataSet> SphereWithIds(bool grid)
+{
+  vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
+  vtkSmartPointer<vtkDataSet> data = sphere;
+  if (grid)
+  {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(9.0, 9.0, 9.0);
+    for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+    {
+      points->InsertNextPoint(sphere->GetPoint(i));
+    }
+    auto unstructured = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    unstructured->SetPoints(points);
+    vtkNew<vtkIdList> cell;
+    for (vtkIdType t = 0; t < sphere->GetNumberOfCells(); ++t)
+    {
+      sphere->GetCellPoints(t, cell);
+      const vtkIdType line[2] = { cell->GetId(0) + 1, cell->GetId(1) + 1 };
+      unstructured->InsertNextCell(VTK_LINE, 2, line);
+      const vtkIdType triangle[3] = { cell->GetId(0) + 1, cell->GetId(1) + 1, cell->GetId(2) + 1 };
+      unstructured->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+    }
+    data = unstructured;
+  }
+  vtkNew<vtkIdTypeArray> pointIds, cellIds;
+  pointIds->SetName("PointIds");
+  cellIds->SetName("CellIds");
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    pointIds->InsertNextValue(i);
+  }
+  for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+  {
+    cellIds->InsertNextValue(i);
+  }
+  data->GetPointData()->AddArray(pointIds);
+  data->GetCellData()->AddArray(cellIds);
+  return data;
+}
+
 /// With GenerateOriginalIds, vtkOriginalPointIds and vtkOriginalCellIds name each output point's
 /// representative and each triangle's input cell: the same ids the point-data rule and the
 /// cell-data copy use (an integer point array of ids and a cell array of ids come out equal to
 /// them), each point's distinct and in range; at a second target too (Progressive Mesh then
-/// writes its level from the cached sequence); without it, neither array is there.
+/// writes its level from the cached sequence), and for an unstructured grid, whose ids are the
+/// grid's, not those of the surface made from it; without it, neither array is there, nor any
+/// array of the front end's own.
 void CheckOriginalIds(const Factory& make)
 {
-  vtkSmartPointer<vtkPolyData> sphere = meshsimp_test::Sphere();
-  vtkNew<vtkIdTypeArray> pointIds, cellIds;
-  pointIds->SetName("PointIds");
-  cellIds->SetName("CellIds");
-  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  for (const bool grid : { false, true })
   {
-    pointIds->InsertNextValue(i);
-  }
-  for (vtkIdType i = 0; i < sphere->GetNumberOfCells(); ++i)
-  {
-    cellIds->InsertNextValue(i);
-  }
-  sphere->GetPointData()->AddArray(pointIds);
-  sphere->GetCellData()->AddArray(cellIds);
-  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
-  filter->SetInputData(sphere);
-  filter->SetTargetReduction(0.8);
-  filter->Update();
-  CHECK(!filter->GetOutput()->GetPointData()->GetArray("vtkOriginalPointIds") &&
-    !filter->GetOutput()->GetCellData()->GetArray("vtkOriginalCellIds"));
-  filter->GenerateOriginalIdsOn();
-  for (const double reduction : { 0.8, 0.5 })
-  {
-    filter->SetTargetReduction(reduction);
+    vtkSmartPointer<vtkDataSet> input = SphereWithIds(grid);
+    vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+    filter->SetInputData(input);
+    filter->SetTargetReduction(0.8);
     filter->Update();
-    vtkPolyData* output = filter->GetOutput();
-    vtkDataArray* original = output->GetPointData()->GetArray("vtkOriginalPointIds");
-    vtkDataArray* originalCells = output->GetCellData()->GetArray("vtkOriginalCellIds");
-    CHECK(original && originalCells && output->GetNumberOfCells() > 0);
-    if (!original || !originalCells)
+    vtkPolyData* plain = filter->GetOutput();
+    CHECK(!plain->GetPointData()->GetArray("vtkOriginalPointIds") && !plain->GetCellData()->GetArray("vtkOriginalCellIds"));
+    CHECK(!plain->GetPointData()->GetArray("vtkSimplificationSurfacePointIds") &&
+      !plain->GetCellData()->GetArray("vtkSimplificationSurfaceCellIds"));
+    filter->GenerateOriginalIdsOn();
+    for (const double reduction : { 0.8, 0.5 })
     {
-      return;
-    }
-    vtkDataArray* carried = output->GetPointData()->GetArray("PointIds");
-    std::vector<bool> seen(static_cast<std::size_t>(sphere->GetNumberOfPoints()), false);
-    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-    {
-      const vtkIdType id = static_cast<vtkIdType>(original->GetTuple1(i));
-      CHECK(id >= 0 && id < sphere->GetNumberOfPoints() && !seen[id] && carried->GetTuple1(i) == id);
-      seen[id] = id >= 0 && id < sphere->GetNumberOfPoints();
-    }
-    vtkDataArray* copied = output->GetCellData()->GetArray("CellIds");
-    for (vtkIdType t = 0; t < output->GetNumberOfCells(); ++t)
-    {
-      CHECK(originalCells->GetTuple1(t) == copied->GetTuple1(t));
+      filter->SetTargetReduction(reduction);
+      filter->Update();
+      vtkPolyData* output = filter->GetOutput();
+      vtkDataArray* original = output->GetPointData()->GetArray("vtkOriginalPointIds");
+      vtkDataArray* originalCells = output->GetCellData()->GetArray("vtkOriginalCellIds");
+      CHECK(original && originalCells && output->GetNumberOfCells() > 0);
+      CHECK(!output->GetPointData()->GetArray("vtkSimplificationSurfacePointIds"));
+      if (!original || !originalCells)
+      {
+        return;
+      }
+      vtkDataArray* carried = output->GetPointData()->GetArray("PointIds");
+      std::vector<bool> seen(static_cast<std::size_t>(input->GetNumberOfPoints()), false);
+      for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+      {
+        const vtkIdType id = static_cast<vtkIdType>(original->GetTuple1(i));
+        const bool inRange = id >= 0 && id < input->GetNumberOfPoints();
+        CHECK(inRange && !seen[id] && carried->GetTuple1(i) == id);
+        seen[id] = inRange;
+      }
+      vtkDataArray* copied = output->GetCellData()->GetArray("CellIds");
+      for (vtkIdType t = 0; t < output->GetNumberOfCells(); ++t)
+      {
+        CHECK(originalCells->GetTuple1(t) == copied->GetTuple1(t));
+      }
     }
   }
 }
