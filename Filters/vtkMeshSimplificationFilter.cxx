@@ -418,40 +418,50 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
 
 namespace
 {
-/// The common settings SetSettingByName takes, with the ranges their setters clamp to.
+/// The common settings SetSettingByName takes, each with its setter's range (a flag: 0 or 1).
 template <class Visit>
 void ForEachCommonSetting(vtkMeshSimplificationFilter* filter, Visit&& visit)
 {
-  visit("PreserveBoundary", [filter](double v) { filter->SetPreserveBoundary(v != 0.0); });
-  visit("CloseCracks", [filter](double v) { filter->SetCloseCracks(v != 0.0); });
-  visit("ComputeDeviation", [filter](double v) { filter->SetComputeDeviation(v != 0.0); });
-  visit("GenerateOriginalIds", [filter](double v) { filter->SetGenerateOriginalIds(v != 0.0); });
-  visit("OutputPointsPrecision", [filter](double v) { filter->SetOutputPointsPrecision(static_cast<int>(v)); });
-  visit("NumberOfThreads", [filter](double v) { filter->SetNumberOfThreads(static_cast<int>(v)); });
+  visit("PreserveBoundary", 0.0, 1.0, [filter](double v) { filter->SetPreserveBoundary(v != 0.0); });
+  visit("CloseCracks", 0.0, 1.0, [filter](double v) { filter->SetCloseCracks(v != 0.0); });
+  visit("ComputeDeviation", 0.0, 1.0, [filter](double v) { filter->SetComputeDeviation(v != 0.0); });
+  visit("GenerateOriginalIds", 0.0, 1.0, [filter](double v) { filter->SetGenerateOriginalIds(v != 0.0); });
+  visit("OutputPointsPrecision", double(vtkAlgorithm::SINGLE_PRECISION), double(vtkAlgorithm::DEFAULT_PRECISION),
+    [filter](double v) { filter->SetOutputPointsPrecision(static_cast<int>(v)); });
+  visit("NumberOfThreads", double(filter->GetNumberOfThreadsMinValue()), double(filter->GetNumberOfThreadsMaxValue()),
+    [filter](double v) { filter->SetNumberOfThreads(static_cast<int>(v)); });
 }
 }
 
 bool vtkMeshSimplificationFilter::SetSettingByName(const std::string& name, double value)
 {
+  if (!std::isfinite(value))
+  {
+    return false;
+  }
   bool found = false;
-  ForEachCommonSetting(this, [&](const char* entry, const auto& set) {
+  ForEachCommonSetting(this, [&](const char* entry, double minimum, double maximum, const auto& set) {
     if (!found && name == entry)
     {
-      set(value);
+      set(std::min(std::max(value, minimum), maximum)); // the setter calls Modified on a change
       found = true;
     }
   });
-  if (!found && this->SetOwnSetting(name, value))
+  if (found)
+  {
+    return true;
+  }
+  const meshsimp::SetResult result = this->SetOwnSetting(name, value);
+  if (result == meshsimp::SetResult::Changed)
   {
     this->Modified();
-    found = true;
   }
-  return found;
+  return result != meshsimp::SetResult::Unknown;
 }
 
-bool vtkMeshSimplificationFilter::SetOwnSetting(const std::string&, double)
+meshsimp::SetResult vtkMeshSimplificationFilter::SetOwnSetting(const std::string&, double)
 {
-  return false;
+  return meshsimp::SetResult::Unknown;
 }
 
 void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,

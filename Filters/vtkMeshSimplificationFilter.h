@@ -45,6 +45,7 @@
 #define vtkMeshSimplificationFilter_h
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
+#include "ParameterTable.h" // for SetOwnSetting
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory>  // for std::unique_ptr
@@ -209,7 +210,8 @@ public:
    * OutputPointsPrecision, NumberOfThreads) or the filter's own (its parameters' table, e.g.
    * "FeatureAngle"), as a number (a flag: nonzero is on; an enumeration: its value), clamped to
    * the range its setter clamps to. Returns false, changing nothing, for a name the filter does
-   * not have. The command-line tool's --set goes through it.
+   * not have or a value that is not a finite number. The command-line tool's --set goes
+   * through it.
    */
   bool SetSettingByName(const std::string& name, double value);
 
@@ -224,9 +226,9 @@ public:
   struct Run;
 
 protected:
-  /// The filter's own settings by name (see SetSettingByName): false where it has none of that
-  /// name. Filters with a parameters table set it through meshsimp::SetParameterByName.
-  virtual bool SetOwnSetting(const std::string& name, double value);
+  /// The filter's own settings by name (see SetSettingByName). Filters with a parameters table
+  /// set them through meshsimp::SetParameterByName.
+  virtual meshsimp::SetResult SetOwnSetting(const std::string& name, double value);
 
   vtkMeshSimplificationFilter();
   ~vtkMeshSimplificationFilter() override;

@@ -26,7 +26,7 @@ void vtkOctreeVertexClustering::PrintSelf(ostream& os, vtkIndent indent)
   meshsimp::PrintParameters<meshsimp::OctreeClusteringParameters>(*this, os, indent);
 }
 
-bool vtkOctreeVertexClustering::SetOwnSetting(const std::string& name, double value)
+meshsimp::SetResult vtkOctreeVertexClustering::SetOwnSetting(const std::string& name, double value)
 {
   return meshsimp::SetParameterByName<meshsimp::OctreeClusteringParameters>(*this, name, value);
 }

@@ -74,7 +74,7 @@ void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
   meshsimp::PrintParameters<meshsimp::ParallelDecimationParameters>(*this, os, indent);
 }
 
-bool vtkParallelDecimation::SetOwnSetting(const std::string& name, double value)
+meshsimp::SetResult vtkParallelDecimation::SetOwnSetting(const std::string& name, double value)
 {
   return meshsimp::SetParameterByName<meshsimp::ParallelDecimationParameters>(*this, name, value);
 }

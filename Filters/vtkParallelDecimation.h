@@ -164,7 +164,7 @@ public:
 protected:
   vtkParallelDecimation();
   ~vtkParallelDecimation() override = default;
-  bool SetOwnSetting(const std::string& name, double value) override;
+  meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
 
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;

@@ -482,7 +482,7 @@ void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBuilds: " << this->NumberOfBuilds << "\n";
 }
 
-bool vtkProgressiveMesh::SetOwnSetting(const std::string& name, double value)
+meshsimp::SetResult vtkProgressiveMesh::SetOwnSetting(const std::string& name, double value)
 {
   return meshsimp::SetParameterByName<meshsimp::ProgressiveMeshParameters>(*this, name, value);
 }

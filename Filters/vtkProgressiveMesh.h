@@ -100,7 +100,7 @@ public:
 protected:
   vtkProgressiveMesh();
   ~vtkProgressiveMesh() override;
-  bool SetOwnSetting(const std::string& name, double value) override;
+  meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

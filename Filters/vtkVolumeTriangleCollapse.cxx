@@ -26,7 +26,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   meshsimp::PrintParameters<meshsimp::VolumeCollapseParameters>(*this, os, indent);
 }
 
-bool vtkVolumeTriangleCollapse::SetOwnSetting(const std::string& name, double value)
+meshsimp::SetResult vtkVolumeTriangleCollapse::SetOwnSetting(const std::string& name, double value)
 {
   return meshsimp::SetParameterByName<meshsimp::VolumeCollapseParameters>(*this, name, value);
 }

@@ -171,7 +171,7 @@ public:
 protected:
   vtkVolumeTriangleCollapse();
   ~vtkVolumeTriangleCollapse() override = default;
-  bool SetOwnSetting(const std::string& name, double value) override;
+  meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
 
   bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
     const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "pqTargetSliderPropertyWidget.h"
 
+#include <pqApplicationCore.h>
 #include <pqDoubleRangeWidget.h>
 #include <pqIntRangeWidget.h>
+#include <pqPipelineSource.h>
+#include <pqServerManagerModel.h>
 #include <vtkPVDataInformation.h>
 #include <vtkPVXMLElement.h>
 #include <vtkSMDoubleRangeDomain.h>
@@ -59,6 +62,14 @@ pqTargetSliderPropertyWidget::pqTargetSliderPropertyWidget(
     this->Counts->setObjectName("IntRangeWidget");
     this->Counts->setMinimum(0);
     this->updateCountMaximum();
+    // The input may not have run yet (a filter made from Python before its input updated), and
+    // its cells change with it: the maximum follows its updates.
+    vtkSMPropertyHelper input(smproxy, "Input", /*quiet=*/true);
+    pqServerManagerModel* model = pqApplicationCore::instance()->getServerManagerModel();
+    if (auto* source = input.GetAsProxy(0) ? model->findItem<pqPipelineSource*>(input.GetAsProxy(0)) : nullptr)
+    {
+      this->connect(source, SIGNAL(dataUpdated(pqPipelineSource*)), SLOT(updateCountMaximum()));
+    }
     this->addPropertyLink(this->Counts, "value", SIGNAL(valueChanged(int)), smproperty);
     this->connect(this->Counts, SIGNAL(valueEdited(int)), this, SIGNAL(changeFinished()));
     layout->addWidget(this->Counts, 1);

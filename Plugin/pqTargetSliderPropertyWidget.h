@@ -13,7 +13,8 @@
  *   the mouse moves that arrive while a level is shown, so the drag never falls behind the
  *   mouse. Without Auto Apply a move only enables Apply, as any edit does;
  * - a triangle count gets a slider from 0 to the input's number of cells (ParaView's default
- *   for a count with no upper bound is a bare text field), refreshed whenever it is shown.
+ *   for a count with no upper bound is a bare text field), refreshed whenever the input's data
+ *   is updated and whenever the slider is shown.
  * On other proxies it behaves as ParaView's slider: the value is applied on release.
  */
 #ifndef pqTargetSliderPropertyWidget_h
@@ -36,16 +37,15 @@ public:
   ~pqTargetSliderPropertyWidget() override;
 
 protected:
-  /// A count's slider ends at the input's number of cells as it is when the widget shows.
   void showEvent(QShowEvent* event) override;
 
 private Q_SLOTS:
   /// While the slider is held down: the value it moved to is a finished change.
   void applyWhileDragged();
-
-private:
+  /// A count's slider ends at the input's number of cells (never below the value set).
   void updateCountMaximum();
 
+private:
   QPointer<QSlider> Slider;           // the slider inside the range widget
   QPointer<pqIntRangeWidget> Counts; // only for a triangle count
 };

@@ -35,7 +35,6 @@
 #include <csignal>
 #include <cstdio>
 #include <functional>
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>

@@ -13,6 +13,7 @@
 #define MeshSimplification_ParameterTable_h
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -38,8 +39,8 @@ double AsNumber(T value)
   }
 }
 
-/// Sets a setting from a number clamped to [minimum, maximum] (a flag: nonzero is true; an
-/// integer or an enumeration: truncated).
+/// Sets a setting from a finite number clamped to [minimum, maximum] (a flag: nonzero is true;
+/// an integer or an enumeration: truncated).
 template <class T>
 void SetFromNumber(T& member, double value, double minimum, double maximum)
 {
@@ -58,20 +59,28 @@ void SetFromNumber(T& member, double value, double minimum, double maximum)
   }
 }
 
-/// Sets the setting of that name in parameters (a parameters struct, or one of its own tables'
-/// owners: Table is the struct whose ForEach lists it); false when Table has no such name.
-template <class Table>
-bool SetParameterByName(Table& parameters, const std::string& name, double value)
+/// How SetParameterByName went.
+enum class SetResult
 {
-  bool found = false;
+  Unknown, // Table has no setting of that name (or the value is not a finite number)
+  Same,    // the setting already had that value
+  Changed
+};
+
+/// Sets the setting of that name in parameters (Table: the struct whose ForEach lists it).
+template <class Table>
+SetResult SetParameterByName(Table& parameters, const std::string& name, double value)
+{
+  SetResult result = SetResult::Unknown;
   Table::ForEach(parameters, [&](const char* entry, auto& member, double minimum, double maximum) {
-    if (!found && name == entry)
+    if (result == SetResult::Unknown && name == entry && std::isfinite(value))
     {
+      const auto before = member;
       SetFromNumber(member, value, minimum, maximum);
-      found = true;
+      result = member == before ? SetResult::Same : SetResult::Changed;
     }
   });
-  return found;
+  return result;
 }
 
 /// "Name: value" a line for each setting, each line starting with indent (PrintSelf's style).

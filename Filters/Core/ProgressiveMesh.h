@@ -16,8 +16,9 @@
  * - Legality is a vertex-kind table plus an ordered list of checks that says which failed
  *   (Refusal): interior, border and fixed vertices (locked, non-manifold, pinched); a border
  *   vertex moves only along its border and never into the interior (§7); regions are never
- *   merged; the link condition; no vertex loses its last triangle (nor a closed fan falls below
- *   three); no remaining triangle turns over or degenerates. The checks run when a vertex reaches
+ *   merged; the link condition; no new edge between two points shared with another piece
+ *   (under MPI); no vertex loses its last triangle (nor a closed fan falls below three); no
+ *   remaining triangle turns over or degenerates. The checks run when a vertex reaches
  *   the top of the heap, on its candidates in cost order; the first legal one is collapsed.
  * - It runs down to the coarsest mesh the checks allow. Flat arrays, no allocation per collapse.
  *

@@ -227,7 +227,7 @@ private:
   bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
   /// ": of the N half-edge collapses left, x % would ..." from RefusedBy, or empty.
   std::string RefusalSummary() const;
-  /// Frees what only the collapses need (quadrics, normals, input planes, the heap) before the
+  /// Frees what only the collapses need (quadrics, weights, input planes, the heap) before the
   /// output is made, so that the two stages' memory does not add up.
   void ReleaseWorkspace();
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
