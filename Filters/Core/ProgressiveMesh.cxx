@@ -6,9 +6,11 @@
 #include "Quadric.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -44,7 +46,7 @@ struct VertexState
   std::int32_t Slot = 0;      // its entry in the ring of that gather
   std::uint8_t Kind = Interior;
   std::uint8_t Fan = Interior; // the kind of the fan alone: closed fans keep three triangles, locked or not
-  bool Shared = false;         // also in another piece of a distributed mesh (and so Fixed)
+  std::uint8_t Lock = 0;       // why it is Fixed, as a LockReason (0: not locked)
 };
 
 /// (k + 1) % 3 at k and (k + 2) % 3 at k + 1, for the corners after corner k of a triangle.
@@ -92,12 +94,14 @@ private:
   template <class Visit>
   void ForEachTriangle(std::int32_t v, Visit&& visit);
   void GatherRing(std::int32_t x);
-  Refusal RingCheck(std::int32_t x, const RingEntry& entry) const;
+  CollapseCheck RingCheck(std::int32_t x, const RingEntry& entry) const;
   double Curvature(std::int32_t x, const RingEntry& entry) const;
   void CostRing(std::int32_t x);
   void Measure(std::int32_t x, bool gathered = false);
   bool WouldRepeatTriangle(std::int32_t y, const std::int32_t opposite[2]);
-  Refusal Check(std::int32_t x, const RingEntry& entry);
+  CollapseCheck Check(std::int32_t x, const RingEntry& entry);
+  /// At the coarsest level: what locks the points left and refuses the others' collapses.
+  std::string DescribeCoarsest();
   bool CollapseTop();
   const RingEntry* Cheapest() const;
   const RingEntry* CheapestLegal(std::int32_t x, const RingEntry& refused);
@@ -182,9 +186,49 @@ bool ProgressiveBuilder::Run(const TriangleMeshView& input, ProgressiveMesh& seq
       return false;
     }
   }
+  if (this->Options.StopTriangles == 0)
+  {
+    sequence.CoarsestReason = this->DescribeCoarsest();
+  }
   this->ReleaseBuildState();
   this->WriteSequence(prepared, sequence);
   return this->Context.Report(1.0);
+}
+
+std::string ProgressiveBuilder::DescribeCoarsest()
+{
+  // The heap is empty: every point left is fixed, or each of its collapses fails a check. The
+  // fixed ones by why, and the others' collapses by the check that refuses them first.
+  std::int64_t left = 0, locked = 0;
+  std::array<std::int64_t, NumberOfLockReasons> lockedBy{};
+  RefusalCounts refused;
+  for (std::int32_t x = 0; x < static_cast<std::int32_t>(this->P.size()); ++x)
+  {
+    if (this->Vertices[x].Triangles == 0)
+    {
+      continue;
+    }
+    ++left;
+    if (this->Vertices[x].Kind == Fixed)
+    {
+      ++locked;
+      ++lockedBy[LockIndex(static_cast<LockReason>(this->Vertices[x].Lock))];
+      continue;
+    }
+    this->GatherRing(x);
+    for (const RingEntry& entry : this->Ring)
+    {
+      CollapseCheck check = this->RingCheck(x, entry);
+      check = check == CollapseCheck::Passed ? this->Check(x, entry) : check;
+      ++refused.ByCheck[static_cast<std::size_t>(check)]; // x moves, so never its locks
+    }
+  }
+  const std::int64_t tried = refused.Total();
+  std::string text = ": of the " + std::to_string(left) + " points left, " + std::to_string(locked) +
+    (locked == 1 ? " is locked" : " are locked") + (locked > 0 ? " (" + DescribeLocked(lockedBy) + ")" : std::string());
+  return tried == 0 ? text
+                    : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " +
+      DescribeRefusals(refused, "would pass every check");
 }
 
 void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
@@ -219,7 +263,11 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
     const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, fanWork);
     this->Vertices[v].Fan = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
     this->Vertices[v].Kind = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Vertices[v].Fan;
-    this->Vertices[v].Shared = prepared.Locks[v] == SharedPointLock;
+    const LockReason lock = prepared.Locks[v] == SharedPointLock ? LockReason::SharedPoint
+      : prepared.Locks[v]                                       ? LockReason::Options
+      : this->Vertices[v].Fan == Fixed                          ? LockReason::NonManifold
+                                                                : LockReason{};
+    this->Vertices[v].Lock = static_cast<std::uint8_t>(lock);
   }
   mesh.Adjacency = VertexTriangleAdjacency(); // the corner lists replace it
   this->ExtraDimension = this->Options.ExtraCoordinates ? std::max(0, this->Options.ExtraDimension) : 0;
@@ -348,20 +396,22 @@ void ProgressiveBuilder::GatherRing(std::int32_t x)
   this->Ring.Size = size;
 }
 
-Refusal ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) const
+CollapseCheck ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) const
 {
   // The first three checks, which need nothing but the ring (so every candidate is filtered by
   // them before it is costed): the kind table, the regions, a border vertex only along its border.
+  // Named as the collapse engine names its checks (CollapseCheck): a fixed vertex fails its locks,
+  // a border vertex into the interior or across it the link condition.
   const std::int32_t y = entry.Vertex;
   if (!KindAllows[this->Vertices[x].Kind][this->Vertices[y].Kind])
   {
-    return Refusal::Kind;
+    return this->Vertices[x].Kind == Fixed ? CollapseCheck::Locks : CollapseCheck::LinkCondition;
   }
   if (!this->Regions.empty() && this->Regions[x] != this->Regions[y])
   {
-    return Refusal::Region;
+    return CollapseCheck::Regions;
   }
-  return this->Vertices[x].Kind == Border && entry.Count != 1 ? Refusal::AcrossBorder : Refusal::None;
+  return this->Vertices[x].Kind == Border && entry.Count != 1 ? CollapseCheck::LinkCondition : CollapseCheck::Passed;
 }
 
 double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) const
@@ -401,7 +451,7 @@ void ProgressiveBuilder::CostRing(std::int32_t x)
   const Quadric quadric = this->Quadrics[x];
   for (RingEntry& entry : this->Ring)
   {
-    if (this->RingCheck(x, entry) != Refusal::None)
+    if (this->RingCheck(x, entry) != CollapseCheck::Passed)
     {
       entry.Cost = std::numeric_limits<double>::infinity();
       continue;
@@ -481,7 +531,7 @@ bool ProgressiveBuilder::WouldRepeatTriangle(std::int32_t y, const std::int32_t 
   return atY;
 }
 
-Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
+CollapseCheck ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
 {
   // The checks after RingCheck's, in order, for an edge that passed those; the ring of x is
   // gathered. Returns the first that fails.
@@ -494,11 +544,11 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
   }
   if (opposite[0] >= 0 && opposite[0] == opposite[1])
   {
-    return Refusal::Link; // the edge's two triangles share all three points
+    return CollapseCheck::LinkCondition; // the edge's two triangles share all three points
   }
   if (this->WouldRepeatTriangle(y, opposite))
   {
-    return Refusal::Link;
+    return CollapseCheck::LinkCondition;
   }
   const std::uint32_t mark = ++this->CurrentStamp; // the ring keeps its Slot entries
   this->ForEachTriangle(y, [&](std::int32_t t, int) {
@@ -518,34 +568,37 @@ Refusal ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
     {
       if (this->Vertices[w].Stamp == mark)
       {
-        return Refusal::Link;
+        return CollapseCheck::LinkCondition;
       }
-      joinsShared = joinsShared || (this->Vertices[y].Shared && this->Vertices[w].Shared);
+      joinsShared = joinsShared || (this->Vertices[y].Lock == static_cast<std::uint8_t>(LockReason::SharedPoint) &&
+                                     this->Vertices[w].Lock == static_cast<std::uint8_t>(LockReason::SharedPoint));
     }
   }
   if (joinsShared)
   {
-    return Refusal::SharedEdges;
+    return CollapseCheck::SharedEdges;
   }
   const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Vertices[v].Fan == Interior ? 3 : 1); };
   if (!keeps(y, this->Vertices[y].Triangles + this->Vertices[x].Triangles - 2 * entry.Count) ||
     (opposite[0] >= 0 && !keeps(opposite[0], this->Vertices[opposite[0]].Triangles - 1)) ||
     (opposite[1] >= 0 && !keeps(opposite[1], this->Vertices[opposite[1]].Triangles - 1)))
   {
-    return Refusal::LastTriangles;
+    return CollapseCheck::LinkCondition; // a vertex would keep too few triangles
   }
-  bool flips = false;
+  CollapseCheck changed = CollapseCheck::Passed;
   this->ForEachTriangle(x, [&](std::int32_t t, int k) {
     const std::int32_t a = this->Corners[3 * t + NextInTriangle[k]], b = this->Corners[3 * t + NextInTriangle[k + 1]];
-    if (a == y || b == y || flips)
+    if (a == y || b == y || changed != CollapseCheck::Passed)
     {
       return;
     }
     const Eigen::Vector3d moved = (this->P[a] - this->P[y]).cross(this->P[b] - this->P[y]);
     const double scale = (this->P[a] - this->P[y]).norm() * (this->P[b] - this->P[y]).norm();
-    flips = !(moved.norm() > 1e-12 * scale) || moved.dot(this->Normals[t].cast<double>()) < 0.0;
+    changed = !(moved.norm() > 1e-12 * scale)                     ? CollapseCheck::Degenerate
+      : moved.dot(this->Normals[t].cast<double>()) < 0.0 ? CollapseCheck::PlaneSide
+                                                          : CollapseCheck::Passed;
   });
-  return flips ? Refusal::Flip : Refusal::None;
+  return changed;
 }
 
 bool ProgressiveBuilder::CollapseTop()
@@ -571,7 +624,7 @@ bool ProgressiveBuilder::CollapseTop()
       continue;
     }
     // The others are sorted only when the cheapest is illegal (seldom).
-    const RingEntry* legal = this->Check(x, *cheapest) == Refusal::None ? cheapest : this->CheapestLegal(x, *cheapest);
+    const RingEntry* legal = this->Check(x, *cheapest) == CollapseCheck::Passed ? cheapest : this->CheapestLegal(x, *cheapest);
     if (!legal)
     {
       this->Heap.Remove(x);
@@ -618,7 +671,7 @@ const RingEntry* ProgressiveBuilder::CheapestLegal(std::int32_t x, const RingEnt
   for (const auto& candidate : order)
   {
     const RingEntry& entry = this->Ring[this->Vertices[candidate.second].Slot];
-    if (this->Check(x, entry) == Refusal::None)
+    if (this->Check(x, entry) == CollapseCheck::Passed)
     {
       return &entry;
     }

@@ -14,7 +14,7 @@
  *   after a collapse y is re-costed at once and its ring when it reaches the top (Step 5,
  *   lazily: a key that rose goes back under its true cost).
  * - Legality is a vertex-kind table plus an ordered list of checks that says which failed
- *   (Refusal): interior, border and fixed vertices (locked, non-manifold, pinched); a border
+ *   (named as the collapse engine names them, CollapseCheck): interior, border and fixed vertices (locked, non-manifold, pinched); a border
  *   vertex moves only along its border and never into the interior (§7); regions are never
  *   merged; the link condition; no new edge between two points shared with another piece
  *   (under MPI); no vertex loses its last triangle (nor a closed fan falls below three); no
@@ -50,19 +50,6 @@ struct ProgressiveMeshOptions : SimplificationOptions, ProgressiveMeshParameters
   std::int64_t StopTriangles = 0;
 };
 
-/// Why a collapse was refused: the first check that failed, in the order they run.
-enum class Refusal : std::uint8_t
-{
-  None,
-  Kind,          // the kind table: a fixed vertex, or a border vertex into the interior
-  Region,        // the two ends are in different regions
-  AcrossBorder,  // a border vertex along an edge that is not a border edge
-  Link,          // the link condition: the ends share a neighbour off the edge's triangles, or the
-                 // edge's two triangles share all three points
-  SharedEdges,   // a new edge between two points shared with another piece (under MPI)
-  LastTriangles, // a point would keep no triangle (a closed fan, locked or not, fewer than three)
-  Flip           // a remaining triangle would turn over or degenerate
-};
 
 /// Builds the sequence of the usable input; returns false when aborted.
 bool BuildProgressiveMesh(const TriangleMeshView& input, const ProgressiveMeshOptions& options,

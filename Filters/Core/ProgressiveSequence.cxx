@@ -100,7 +100,8 @@ std::int64_t LevelFor(const ProgressiveMesh& sequence, const Target& goal, Outco
   if (k == base && sequence.TrianglesAt(k) > target + goal.Slack(target))
   {
     outcome.Stop = StopReason::NothingRemovable;
-    outcome.Reason = "no collapse that keeps the mesh valid is left (the coarsest level of the sequence)";
+    outcome.Reason = "no collapse that keeps the mesh valid is left (the coarsest level of the sequence)" +
+      sequence.CoarsestReason;
   }
   outcome.MaximumError = k < n ? sequence.Error[k] : 0.0;
   return k;

@@ -44,6 +44,9 @@ struct ProgressiveMesh
   std::int64_t BasePoints = 0;
   /// The prepared input's counts (usable triangles and points, diagonal, locks).
   Outcome Report;
+  /// What stops the sequence at its coarsest level, as a continuation of LevelFor's reason
+  /// (": of the N points left, ..."); empty for a build stopped early or a sequence read back.
+  std::string CoarsestReason;
 
   std::int64_t NumberOfPoints() const { return static_cast<std::int64_t>(this->Parent.size()); }
   std::int64_t NumberOfCollapses() const { return this->NumberOfPoints() - this->BasePoints; }

@@ -245,6 +245,25 @@ void SharedPointsGainNoEdge()
   }
 }
 
+void CoarsestSaysWhatStops()
+{
+  // Past the coarsest level the reason names what stops it, in the collapse engine's words: a
+  // closed surface's last collapses break its topology; a grid with every border point locked
+  // keeps those (counted by why) and its last inner points' collapses turn triangles over.
+  meshsimp::Target goal;
+  goal.SetTriangleCount(1);
+  meshsimp::SimplifiedMesh level;
+  meshsimp::ExtractTarget(Build(Sphere(8)), goal, Sphere(8).View(), level);
+  CHECK(level.Report.Stop == meshsimp::StopReason::NothingRemovable);
+  CHECK(level.Report.Reason.find("link condition") != std::string::npos);
+  const Mesh grid = Grid(6);
+  meshsimp::ProgressiveMeshOptions options;
+  options.PreserveBoundary = true;
+  meshsimp::ExtractTarget(Build(grid, options), goal, grid.View(), level);
+  std::printf("%s\n", level.Report.Reason.c_str());
+  CHECK(level.Report.Reason.find("24 are locked (all by the options)") != std::string::npos);
+}
+
 void LockedClosedFansKeepThree()
 {
   // A closed fan keeps three triangles whether its point is locked or not: tetrahedra and closed
@@ -358,6 +377,7 @@ int main()
     { "TargetsPickLevels", TargetsPickLevels },
     { "BordersAndLocksStay", BordersAndLocksStay },
     { "SharedPointsGainNoEdge", SharedPointsGainNoEdge },
+    { "CoarsestSaysWhatStops", CoarsestSaysWhatStops },
     { "LockedClosedFansKeepThree", LockedClosedFansKeepThree },
     { "RegionsNeverMerge", RegionsNeverMerge },
     { "ColoursAreExtraCoordinates", ColoursAreExtraCoordinates },
