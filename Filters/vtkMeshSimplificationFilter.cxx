@@ -368,13 +368,12 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   }
 
   meshsimp::SimplifiedMesh mesh;
-  this->PieceIndex = i;
-  this->PieceInput = piece.Input;
   // The deviation takes the last fifth of the piece's progress.
   const double shift = this->GetProgressShift(), scale = this->GetProgressScale();
   const double coreShare = this->ComputeDeviation ? 0.8 : 1.0;
   this->SetProgressShiftScale(shift, coreShare * scale);
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, this->NumberOfThreads);
+  const PieceCall call{ i, piece.Input, piece.Triangles, piece.Triangles.View, options, context, piece.Output };
   const bool none = (this->TargetMode == TARGET_REDUCTION && this->TargetReduction == 1.0) ||
     (this->TargetMode == TARGET_TRIANGLE_COUNT && this->TargetTriangleCount == 0);
   if (none)
@@ -383,7 +382,7 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
                     << (this->TargetMode == TARGET_REDUCTION ? "TargetReduction 1" : "TargetTriangleCount 0")
                     << " asks for no triangle.");
   }
-  else if (!this->RunCore(piece.Triangles.View, options, context, mesh))
+  else if (!this->RunCore(call, mesh))
   {
     vtkWarningMacro(<< run.Name(i) << "Aborted: the output is empty.");
     mesh = meshsimp::SimplifiedMesh();
@@ -392,7 +391,7 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   {
     this->WarnAboutOutcome(run, i, mesh);
   }
-  this->WritePiece(piece.Input, piece.Triangles, mesh, piece.Output);
+  this->WritePiece(call, mesh);
   if (mesh.Report.MaximumError >= 0.0)
   {
     const double error = goal.InBoundUnits(mesh.Report.MaximumError, mesh.Report.Diagonal);
@@ -406,13 +405,12 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
   if (this->ComputeDeviation && !this->GetAbortExecute())
   {
     this->SetProgressShiftScale(shift + coreShare * scale, (1.0 - coreShare) * scale);
-    if (!this->AddDeviation(piece.Triangles, mesh, piece.Output, context))
+    if (!this->AddDeviation(call, mesh))
     {
       vtkWarningMacro(<< run.Name(i) << "Aborted: the output has no Deviation.");
     }
   }
   this->SetProgressShiftScale(shift, scale);
-  this->PieceInput = nullptr;
   return true;
 }
 
@@ -464,16 +462,15 @@ meshsimp::SetResult vtkMeshSimplificationFilter::SetOwnSetting(const std::string
   return meshsimp::SetResult::Unknown;
 }
 
-void vtkMeshSimplificationFilter::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+void vtkMeshSimplificationFilter::WritePiece(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh)
 {
-  vtkSimplification::SetOutput(input, triangles, mesh, this->OutputPointsPrecision, this->GenerateOriginalIds, output);
+  vtkSimplification::SetOutput(
+    piece.Input, piece.Triangles, mesh, this->OutputPointsPrecision, this->GenerateOriginalIds, piece.Output);
 }
 
-bool vtkMeshSimplificationFilter::AddDeviation(const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output, const meshsimp::ExecutionContext& context)
+bool vtkMeshSimplificationFilter::AddDeviation(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh)
 {
-  return vtkSimplification::AddDeviation(triangles.View, mesh, output, context);
+  return vtkSimplification::AddDeviation(piece.Mesh, mesh, piece.Output, piece.Execution);
 }
 
 void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)

@@ -238,11 +238,29 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * The subclass's algorithm on one piece: its own settings from its properties added to the
-   * common options, and its core run on the mesh into result. Returns false when aborted.
+   * One piece of an execution as the subclass's hooks see it, passed to each call: its place
+   * among the execution's pieces (a composite input's blocks, a process's piece), its input
+   * surface (with the arrays it can use), its triangles and their view for the core (Mesh), the
+   * common options (its share of the target, locks, regions), the execution context (threads,
+   * progress, abort) and its output.
    */
-  virtual bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
-    const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) = 0;
+  struct PieceCall
+  {
+    std::size_t Index;
+    vtkPolyData* Input;
+    const vtkSimplification::TriangleInput& Triangles;
+    const meshsimp::TriangleMeshView& Mesh;
+    const meshsimp::SimplificationOptions& Common;
+    const meshsimp::ExecutionContext& Execution;
+    vtkPolyData* Output;
+  };
+
+  /**
+   * The subclass's algorithm on one piece: its own settings from its properties added to the
+   * common options, and its core run on the piece's triangles into result. Returns false when
+   * aborted.
+   */
+  virtual bool RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result) = 0;
 
   /**
    * What RunCore does in every filter: the core's options made of the common ones and the
@@ -252,32 +270,23 @@ protected:
   template <class Options, class Result, class Parameters>
   static bool RunWith(bool (*core)(const meshsimp::TriangleMeshView&, const Options&, Result&,
                         const meshsimp::ExecutionContext&),
-    const Parameters& own, const meshsimp::TriangleMeshView& mesh,
-    const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
-    meshsimp::SimplifiedMesh& result)
+    const Parameters& own, const PieceCall& piece, meshsimp::SimplifiedMesh& result)
   {
     Options options;
-    static_cast<meshsimp::SimplificationOptions&>(options) = common;
+    static_cast<meshsimp::SimplificationOptions&>(options) = piece.Common;
     static_cast<Parameters&>(options) = own;
     Result full;
-    const bool finished = core(mesh, options, full, context);
+    const bool finished = core(piece.Mesh, options, full, piece.Execution);
     result = std::move(static_cast<meshsimp::SimplifiedMesh&>(full));
     return finished;
   }
 
-  /// Writes piece PieceIndex's output from its core's result: vtkSimplification::SetOutput.
-  virtual void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
-    const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output);
+  /// Writes the piece's output from its core's result: vtkSimplification::SetOutput.
+  virtual void WritePiece(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh);
 
-  /// Adds the Deviation array with ComputeDeviation from mesh, the core's result written to
-  /// output (vtkSimplification::AddDeviation); returns false when aborted.
-  virtual bool AddDeviation(const vtkSimplification::TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
-    vtkPolyData* output, const meshsimp::ExecutionContext& context);
-
-  /// The piece RunCore and WritePiece are called for: its index in the execution's pieces and
-  /// its input (for a subclass that reads arrays of its own).
-  std::size_t PieceIndex = 0;
-  vtkPolyData* PieceInput = nullptr;
+  /// Adds the Deviation array with ComputeDeviation from mesh, the core's result written to the
+  /// piece's output (vtkSimplification::AddDeviation); returns false when aborted.
+  virtual bool AddDeviation(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh);
 
   /// How far from a count target the subclass's algorithm may end (a fraction of the count).
   double TargetTolerance = 0.01;

@@ -12,12 +12,10 @@ vtkOctreeVertexClustering::vtkOctreeVertexClustering()
   this->TargetTolerance = meshsimp::OctreeClusteringOptions().Goal.Tolerance;
 }
 
-bool vtkOctreeVertexClustering::RunCore(const meshsimp::TriangleMeshView& mesh,
-  const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
-  meshsimp::SimplifiedMesh& result)
+bool vtkOctreeVertexClustering::RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result)
 {
   const meshsimp::OctreeClusteringParameters& own = *this;
-  return RunWith(meshsimp::OctreeVertexClustering, own, mesh, common, context, result);
+  return RunWith(meshsimp::OctreeVertexClustering, own, piece, result);
 }
 
 void vtkOctreeVertexClustering::PrintSelf(ostream& os, vtkIndent indent)

@@ -14,12 +14,10 @@ vtkParallelDecimation::vtkParallelDecimation()
   this->TargetTolerance = meshsimp::ParallelDecimationOptions().Goal.Tolerance;
 }
 
-bool vtkParallelDecimation::RunCore(const meshsimp::TriangleMeshView& mesh,
-  const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
-  meshsimp::SimplifiedMesh& result)
+bool vtkParallelDecimation::RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result)
 {
   const meshsimp::ParallelDecimationParameters& own = *this;
-  return RunWith(meshsimp::ParallelDecimation, own, mesh, common, context, result);
+  return RunWith(meshsimp::ParallelDecimation, own, piece, result);
 }
 
 namespace

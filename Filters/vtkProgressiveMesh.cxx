@@ -347,19 +347,19 @@ void vtkProgressiveMesh::WriteSequences(vtkDataObject* levels, vtkDataObject* se
   }
 }
 
-bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
-  const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result)
+bool vtkProgressiveMesh::RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result)
 {
   // The piece's sequence: read from a sequence given as input, cached, or built; then the level
   // the target picks.
   Cache& cache = *this->Sequences;
-  const std::size_t i = this->PieceIndex;
+  const std::size_t i = piece.Index;
+  const meshsimp::TriangleMeshView& mesh = piece.Triangles.View;
   cache.Pieces.resize(std::max(cache.Pieces.size(), i + 1));
   cache.Ready.resize(cache.Pieces.size(), false);
   meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
-  if (!cache.Ready[i] && IsSequence(this->PieceInput))
+  if (!cache.Ready[i] && IsSequence(piece.Input))
   {
-    const std::string problem = ReadSequence(this->PieceInput, mesh, sequence);
+    const std::string problem = ReadSequence(piece.Input, mesh, sequence);
     cache.Ready[i] = problem.empty();
     if (!problem.empty())
     {
@@ -369,11 +369,11 @@ bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const m
   if (!cache.Ready[i])
   {
     meshsimp::ProgressiveMeshOptions options;
-    static_cast<meshsimp::SimplificationOptions&>(options) = common;
+    static_cast<meshsimp::SimplificationOptions&>(options) = piece.Common;
     static_cast<meshsimp::ProgressiveMeshParameters&>(options) = *this;
     std::vector<double> extra;
     if (auto* array = vtkDataArray::SafeDownCast(
-          vtkSimplification::SelectedPointArray(this, 2, this->PieceInput, "attribute coordinates")))
+          vtkSimplification::SelectedPointArray(this, 2, piece.Input, "attribute coordinates")))
     {
       const int k = array->GetNumberOfComponents();
       extra.resize(static_cast<std::size_t>(array->GetNumberOfTuples()) * k);
@@ -387,7 +387,7 @@ bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const m
       options.ExtraDimension = k;
       options.ExtraScale = vtkUnsignedCharArray::SafeDownCast(array) ? 255.0 : (span > 0.0 ? span : 1.0);
     }
-    if (!meshsimp::BuildProgressiveMesh(mesh, options, sequence, context))
+    if (!meshsimp::BuildProgressiveMesh(mesh, options, sequence, piece.Execution))
     {
       return false;
     }
@@ -397,29 +397,29 @@ bool vtkProgressiveMesh::RunCore(const meshsimp::TriangleMeshView& mesh, const m
   cache.Levels.resize(cache.Pieces.size(), -1);
   cache.Levels[i] = -1;
   // Normals are recomputed from the level's own mesh: then it is extracted in full.
-  const bool normals = i < cache.Wholes.size() && cache.Wholes[i] ? HasNormals(cache.Wholes[i]) : HasNormals(this->PieceInput);
+  const bool normals = i < cache.Wholes.size() && cache.Wholes[i] ? HasNormals(cache.Wholes[i]) : HasNormals(piece.Input);
   if (!normals)
   {
-    cache.Levels[i] = LevelToWrite(sequence, common.Goal, result);
+    cache.Levels[i] = LevelToWrite(sequence, piece.Common.Goal, result);
     return true;
   }
-  meshsimp::ExtractTarget(sequence, common.Goal, mesh, result);
+  meshsimp::ExtractTarget(sequence, piece.Common.Goal, mesh, result);
   return true;
 }
 
-void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
+void vtkProgressiveMesh::WritePiece(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh)
 {
   // The level from the first points and triangles of the whole sequence's mesh, made now if it
   // is not yet; a piece without a sequence (aborted, nothing asked for) the usual way.
   Cache& cache = *this->Sequences;
-  const std::size_t i = this->PieceIndex;
+  const std::size_t i = piece.Index;
+  vtkPolyData* output = piece.Output;
   cache.Outputs.resize(std::max(cache.Outputs.size(), i + 1), nullptr);
   cache.Outputs[i] = output;
   const bool lean = i < cache.Levels.size() && cache.Levels[i] >= 0;
   if (i >= cache.Ready.size() || !cache.Ready[i] || (!lean && mesh.NumberOfPoints() == 0))
   {
-    this->Superclass::WritePiece(input, triangles, mesh, output);
+    this->Superclass::WritePiece(piece, mesh);
     return;
   }
   const meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
@@ -428,8 +428,8 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
   if (!whole)
   {
     whole = vtkSmartPointer<vtkPolyData>::New();
-    vtkSimplification::SetOutput(input, triangles, WholeSequence(sequence, triangles.View), this->OutputPointsPrecision,
-      this->GenerateOriginalIds, whole);
+    vtkSimplification::SetOutput(piece.Input, piece.Triangles, WholeSequence(sequence, piece.Triangles.View),
+      this->OutputPointsPrecision, this->GenerateOriginalIds, whole);
     vtkNew<vtkIntArray> removedAt;
     removedAt->SetName(RemovedAtName);
     removedAt->SetNumberOfValues(static_cast<vtkIdType>(sequence.RemovedBy.size()));
@@ -443,7 +443,7 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
     FreeBuffer(cache.CornerBuffers[i], static_cast<vtkIdType>(sequence.Triangles.size())), 3 * sequence.TrianglesAt(points));
   auto* corners = vtkCellArray::ArrayType64::SafeDownCast(view);
   meshsimp::LevelCorners(sequence, points, corners->GetPointer(0));
-  vtkSimplification::SetPrefixOutput(input, triangles, whole, points, corners, mesh, output);
+  vtkSimplification::SetPrefixOutput(piece.Input, piece.Triangles, whole, points, corners, mesh, output);
   for (const char* name : { ParentName, ErrorName })
   {
     output->GetPointData()->RemoveArray(name);
@@ -451,28 +451,27 @@ void vtkProgressiveMesh::WritePiece(vtkPolyData* input, const vtkSimplification:
   output->GetCellData()->RemoveArray(RemovedAtName);
 }
 
-bool vtkProgressiveMesh::AddDeviation(const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output, const meshsimp::ExecutionContext& context)
+bool vtkProgressiveMesh::AddDeviation(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh)
 {
   Cache& cache = *this->Sequences;
-  const std::size_t i = this->PieceIndex;
+  const std::size_t i = piece.Index;
   if (i >= cache.Ready.size() || !cache.Ready[i])
   {
-    return this->Superclass::AddDeviation(triangles, mesh, output, context);
+    return this->Superclass::AddDeviation(piece, mesh);
   }
   const meshsimp::ProgressiveMesh& sequence = cache.Pieces[i];
   const bool lean = i < cache.Levels.size() && cache.Levels[i] >= 0;
   const std::int64_t points = lean ? cache.Levels[i] : mesh.NumberOfPoints();
   meshsimp::SimplifiedMesh level;
-  meshsimp::ExtractLevel(sequence, points, triangles.View, level);
+  meshsimp::ExtractLevel(sequence, points, piece.Triangles.View, level);
   meshsimp::ListLevelSources(sequence, points, level);
   cache.DeviationInputs.resize(std::max(cache.DeviationInputs.size(), i + 1));
   std::unique_ptr<meshsimp::DeviationInput>& side = cache.DeviationInputs[i];
   if (!side)
   {
-    side = std::make_unique<meshsimp::DeviationInput>(triangles.View);
+    side = std::make_unique<meshsimp::DeviationInput>(piece.Triangles.View);
   }
-  return vtkSimplification::AddDeviation(*side, level, output, context);
+  return vtkSimplification::AddDeviation(*side, level, piece.Output, piece.Execution);
 }
 
 void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)

@@ -104,16 +104,13 @@ protected:
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
-    const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
+  bool RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result) override;
   /// Port 1: each piece's whole sequence where port 0 has its level (see the class comment).
   void WriteSequences(vtkDataObject* levels, vtkDataObject* sequences);
-  void WritePiece(vtkPolyData* input, const vtkSimplification::TriangleInput& triangles,
-    const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output) override;
+  void WritePiece(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh) override;
   /// The level's deviation from the sequence: its points and the removed points each stands for
   /// (meshsimp::ListLevelSources), also where WritePiece wrote the level without extracting it.
-  bool AddDeviation(const vtkSimplification::TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
-    vtkPolyData* output, const meshsimp::ExecutionContext& context) override;
+  bool AddDeviation(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh) override;
 
   int NumberOfBuilds = 0;
 

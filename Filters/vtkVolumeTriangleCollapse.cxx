@@ -12,12 +12,10 @@ vtkVolumeTriangleCollapse::vtkVolumeTriangleCollapse()
   this->TargetTolerance = meshsimp::VolumeCollapseOptions().Goal.Tolerance;
 }
 
-bool vtkVolumeTriangleCollapse::RunCore(const meshsimp::TriangleMeshView& mesh,
-  const meshsimp::SimplificationOptions& common, const meshsimp::ExecutionContext& context,
-  meshsimp::SimplifiedMesh& result)
+bool vtkVolumeTriangleCollapse::RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result)
 {
   const meshsimp::VolumeCollapseParameters& own = *this;
-  return RunWith(meshsimp::VolumeTriangleCollapse, own, mesh, common, context, result);
+  return RunWith(meshsimp::VolumeTriangleCollapse, own, piece, result);
 }
 
 void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)

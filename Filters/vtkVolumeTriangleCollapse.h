@@ -173,8 +173,7 @@ protected:
   ~vtkVolumeTriangleCollapse() override = default;
   meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
 
-  bool RunCore(const meshsimp::TriangleMeshView& mesh, const meshsimp::SimplificationOptions& common,
-    const meshsimp::ExecutionContext& context, meshsimp::SimplifiedMesh& result) override;
+  bool RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result) override;
 
 private:
   vtkVolumeTriangleCollapse(const vtkVolumeTriangleCollapse&) = delete;
