@@ -6,6 +6,7 @@
 #include "vtkSimplificationDeviation.h"
 #include "vtkSimplificationDistributed.h"
 #include "vtkSimplificationInput.h"
+#include "vtkSimplificationPieces.h"
 #include "vtkSimplificationThreads.h"
 
 #include "vtkCompositeDataIterator.h"
@@ -25,107 +26,10 @@
 #include <functional>
 #include <sstream>
 
-/// One execution: the pieces of the input (a vtkPolyData is one, a composite input's polygonal
-/// leaves are one each), what they share, and the totals a count target is shared out by.
-struct vtkMeshSimplificationFilter::Run
-{
-  struct Piece
-  {
-    vtkSmartPointer<vtkPolyData> Input; // with the attribute arrays it can use
-    vtkPolyData* Output = nullptr;
-    vtkIdType Key = 0; // pieces of one key are parts of one surface (see LockSharedPoints)
-    vtkSimplification::TriangleInput Triangles;
-    bool Readable = false;
-    std::vector<std::uint8_t> Locks; // shared with other pieces, then the user's
-    std::int64_t SharedLocks = 0, UserLocks = 0;
-    std::string LockArray; // the user's lock array, for messages
-  };
-  std::vector<Piece> Pieces;
-  /// Several pieces, or several processes: a count is shared out and a relative bound refers
-  /// to the whole input's diagonal.
-  bool Shared = false;
-  vtkSimplification::Totals Totals;
-
-  /// The piece's name in messages ("" for a single piece).
-  std::string Name(std::size_t i) const { return this->Shared ? "Block " + std::to_string(i) + ": " : ""; }
-};
 
 namespace
 {
-using Piece = vtkMeshSimplificationFilter::Run::Piece;
-
-/// The pieces of the input, each with its output placed in the output's structure; leaves
-/// that are not polygonal data pass through unchanged. False with a message in problem when
-/// the input is neither a surface nor composite data.
-bool CollectPieces(vtkDataObject* input, vtkDataObject* output, std::vector<Piece>& pieces, std::string& problem)
-{
-  auto* compositeInput = vtkCompositeDataSet::SafeDownCast(input);
-  auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
-  const auto add = [&](vtkDataObject* block, vtkIdType key, const std::function<void(vtkDataObject*)>& place) {
-    auto* surface = vtkPolyData::SafeDownCast(block);
-    if (!surface)
-    {
-      vtkSmartPointer<vtkDataObject> copy = vtk::TakeSmartPointer(block->NewInstance());
-      copy->ShallowCopy(block);
-      place(copy);
-      return;
-    }
-    vtkNew<vtkPolyData> simplified;
-    place(simplified);
-    Piece piece;
-    piece.Input = surface;
-    piece.Output = simplified;
-    piece.Key = key;
-    pieces.push_back(std::move(piece));
-  };
-  if (!compositeInput)
-  {
-    Piece piece;
-    piece.Input = vtkSimplification::AsSurface(input, problem);
-    piece.Output = vtkPolyData::SafeDownCast(output);
-    pieces.push_back(std::move(piece));
-    return pieces.back().Input && pieces.back().Output;
-  }
-  compositeOutput->CopyStructure(compositeInput);
-  auto* collection = vtkPartitionedDataSetCollection::SafeDownCast(input);
-  auto* partitioned = vtkPartitionedDataSet::SafeDownCast(input);
-  if (collection)
-  {
-    // The partitions of one dataset are pieces of it: one key per partitioned dataset.
-    auto* out = vtkPartitionedDataSetCollection::SafeDownCast(output);
-    for (unsigned int d = 0; d < collection->GetNumberOfPartitionedDataSets(); ++d)
-    {
-      for (unsigned int p = 0; p < collection->GetNumberOfPartitions(d); ++p)
-      {
-        if (vtkDataObject* block = collection->GetPartitionAsDataObject(d, p))
-        {
-          add(block, d, [out, d, p](vtkDataObject* made) { out->SetPartition(d, p, made); });
-        }
-      }
-    }
-    return true;
-  }
-  if (partitioned)
-  {
-    auto* out = vtkPartitionedDataSet::SafeDownCast(output);
-    for (unsigned int p = 0; p < partitioned->GetNumberOfPartitions(); ++p)
-    {
-      if (vtkDataObject* block = partitioned->GetPartitionAsDataObject(p))
-      {
-        add(block, 0, [out, p](vtkDataObject* made) { out->SetPartition(p, made); });
-      }
-    }
-    return true;
-  }
-  // Other trees (multiblock): a block's pieces on the processes share its flat index.
-  vtkSmartPointer<vtkCompositeDataIterator> leaf = vtk::TakeSmartPointer(compositeInput->NewIterator());
-  for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
-  {
-    add(leaf->GetCurrentDataObject(), static_cast<vtkIdType>(leaf->GetCurrentFlatIndex()),
-      [&](vtkDataObject* made) { compositeOutput->SetDataSet(leaf, made); });
-  }
-  return true;
-}
+using Piece = vtkSimplification::Piece;
 
 /// "N of the P points are locked (by ..., ...)", for a target not reached.
 std::string LockNote(const Piece& piece, const meshsimp::Outcome& report, bool preserveBoundary)
@@ -280,9 +184,9 @@ int vtkMeshSimplificationFilter::RequestData(
   // The pieces, read once; what they share (collective under MPI, so every process gets here
   // whatever it holds); then each piece simplified in turn.
   this->AchievedMaximumError = 0.0;
-  Run run;
+  vtkSimplification::InputPieces run;
   std::string problem;
-  if (!CollectPieces(vtkDataObject::GetData(inputVector[0], 0), vtkDataObject::GetData(outputVector, 0), run.Pieces, problem))
+  if (!vtkSimplification::CollectPieces(vtkDataObject::GetData(inputVector[0], 0), vtkDataObject::GetData(outputVector, 0), run.Pieces, problem))
   {
     vtkErrorMacro(<< "Cannot simplify: " << problem << ".");
     return 1;
@@ -291,25 +195,10 @@ int vtkMeshSimplificationFilter::RequestData(
   {
     return 1;
   }
-  std::vector<const vtkSimplification::TriangleInput*> triangles;
-  std::vector<vtkIdType> keys;
-  for (Piece& piece : run.Pieces)
-  {
-    piece.Readable = vtkSimplification::PrepareTriangles(this, piece.Input, piece.Triangles);
-    triangles.push_back(piece.Readable ? &piece.Triangles : nullptr);
-    keys.push_back(piece.Key);
-  }
-  run.Shared = run.Pieces.size() > 1 || vtkSimplification::IsDistributed();
-  std::vector<std::vector<std::uint8_t>> locks;
-  vtkSimplification::LockSharedPoints(triangles, keys, locks);
-  if (run.Shared)
-  {
-    run.Totals = vtkSimplification::GatherTotals(triangles);
-  }
+  vtkSimplification::PreparePieces(this, run);
   const double count = static_cast<double>(run.Pieces.size());
   for (std::size_t i = 0; i < run.Pieces.size() && !this->GetAbortExecute(); ++i)
   {
-    run.Pieces[i].Locks = std::move(locks[i]);
     this->SetProgressShiftScale(static_cast<double>(i) / count, 1.0 / count);
     this->SimplifyPiece(run, i);
   }
@@ -317,7 +206,7 @@ int vtkMeshSimplificationFilter::RequestData(
   return 1;
 }
 
-bool vtkMeshSimplificationFilter::SimplifyPiece(Run& run, std::size_t i)
+bool vtkMeshSimplificationFilter::SimplifyPiece(vtkSimplification::InputPieces& run, std::size_t i)
 {
   Piece& piece = run.Pieces[i];
   if (!piece.Readable)
@@ -473,7 +362,7 @@ bool vtkMeshSimplificationFilter::AddDeviation(const PieceCall& piece, const mes
   return vtkSimplification::AddDeviation(piece.Mesh, mesh, piece.Output, piece.Execution);
 }
 
-void vtkMeshSimplificationFilter::WarnAboutOutcome(const Run& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)
+void vtkMeshSimplificationFilter::WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)
 {
   // The count's miss first, with its reason, then what the algorithm changed to get there, then
   // what it left out of the input.

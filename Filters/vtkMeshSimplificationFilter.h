@@ -61,6 +61,7 @@ struct TriangleMeshView;
 }
 namespace vtkSimplification
 {
+struct InputPieces;
 struct TriangleInput;
 }
 
@@ -222,8 +223,6 @@ public:
    */
   vtkGetMacro(AchievedMaximumError, double);
 
-  /// One execution's state (its pieces and what they share), private to the implementation.
-  struct Run;
 
 protected:
   /// The filter's own settings by name (see SetSettingByName). Filters with a parameters table
@@ -313,8 +312,8 @@ private:
   void operator=(const vtkMeshSimplificationFilter&) = delete;
 
   bool CheckTarget();
-  bool SimplifyPiece(Run& run, std::size_t piece);
-  void WarnAboutOutcome(const Run& run, std::size_t piece, const meshsimp::SimplifiedMesh& mesh);
+  bool SimplifyPiece(vtkSimplification::InputPieces& run, std::size_t piece);
+  void WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t piece, const meshsimp::SimplifiedMesh& mesh);
 };
 
 #endif
