@@ -227,8 +227,8 @@ private:
   bool CollapseAnyEdges(std::int64_t floor, VolumeCollapseResult& result);
   /// ": of the N half-edge collapses left, x % would ..." from RefusedBy, or empty.
   std::string RefusalSummary() const;
-  /// Frees what only the collapses need (quadrics, weights, input planes, the heap) before the
-  /// output is made, so that the two stages' memory does not add up.
+  /// Frees what only the collapses need (quadrics, weights, normals, input planes, the heap)
+  /// before the output is made, so that the two stages' memory does not add up.
   void ReleaseWorkspace();
   void Output(const TriangleMeshView& input, VolumeCollapseResult& result) const;
   /// The outcome: why it stopped where it did, and the angle guard's note.
@@ -250,6 +250,12 @@ private:
     const double length = cross.norm();
     return length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
   }
+  /// The normal factor's normals (UseNormalFactor only, else empty): Normal in single
+  /// precision, 12 bytes a triangle kept for the factor's reads of every neighbour, which
+  /// computing them would cost; the factor is a weight, which needs no more. Refreshed with the
+  /// triangle (RefreshAround). The planes are made from Normal itself.
+  std::vector<Eigen::Vector3f> FactorNormals;
+  void UpdateFactorNormal(std::int32_t t) { this->FactorNormals[t] = this->Normal(t).cast<float>(); }
   /// A triangle's area from its points, as Normal measures its normal: read only when a
   /// triangle or a vertex's sums are updated, it is not kept (8 bytes a triangle).
   double Area(std::int32_t t) const
@@ -435,7 +441,7 @@ void VolumeCollapser::UpdateQuadric(std::int32_t t)
     this->ForEachAdjacent(t, [&](std::int32_t j) {
       if (j != t)
       {
-        sum += 0.5 * (1.0 - std::abs(n.dot(this->Normal(j))));
+        sum += 0.5 * (1.0 - std::abs(n.dot(this->FactorNormals[j].cast<double>())));
         ++count;
       }
     });
@@ -964,6 +970,10 @@ void VolumeCollapser::RefreshAround(
     {
       this->UpdateAngles(t);
     }
+    if (this->Options.UseNormalFactor)
+    {
+      this->UpdateFactorNormal(t);
+    }
     const std::int32_t* tri = this->Mesh.Triangle(t);
     for (int k = 0; k < 3; ++k)
     {
@@ -1177,12 +1187,20 @@ void VolumeCollapser::MeasureAll()
   this->VertexMarks.assign(n, 0);
   this->BatchLimit =
     std::max<std::int64_t>(1, std::min<std::int64_t>(this->Options.BatchSize, m / BatchShare));
-  if (this->TracksCurvature)
+  this->FactorNormals.resize(this->Options.UseNormalFactor ? m : 0);
+  if (this->TracksCurvature || this->Options.UseNormalFactor)
   {
     this->Context.For(m, [&](std::int64_t b, std::int64_t e) {
       for (std::int64_t t = b; t < e; ++t)
       {
-        this->UpdateAngles(static_cast<std::int32_t>(t));
+        if (this->TracksCurvature)
+        {
+          this->UpdateAngles(static_cast<std::int32_t>(t));
+        }
+        if (this->Options.UseNormalFactor)
+        {
+          this->UpdateFactorNormal(static_cast<std::int32_t>(t));
+        }
       }
     }, 150 * static_cast<std::int64_t>(m));
   }
@@ -1627,6 +1645,7 @@ void VolumeCollapser::ReleaseWorkspace()
 {
   const auto release = [](auto& list) { std::decay_t<decltype(list)>().swap(list); };
   release(this->TriangleWeights);
+  release(this->FactorNormals);
   release(this->VertexQuadrics);
   release(this->InputPlanes);
   release(this->Angles);
