@@ -178,11 +178,32 @@ bool vtkMeshSimplificationFilter::CheckTarget()
   return true;
 }
 
+/// One piece's state from its core run to its output: what the piece call refers to, and the
+/// core's result.
+struct vtkMeshSimplificationFilter::PieceRun
+{
+  meshsimp::SimplificationOptions Options;
+  std::vector<std::int32_t> Regions;
+  meshsimp::ExecutionContext Execution;
+  meshsimp::SimplifiedMesh Mesh;
+  bool Ran = false;           // the core ran to its end
+  bool SharesBorders = false; // see PieceCall
+  std::int64_t Share = 0;     // with SharesBorders: the piece's share of the count,
+  std::int64_t BorderRemovals = 0; // and the shared points its borders are to lose
+
+  PieceCall Call(const Piece& piece, std::size_t i) const
+  {
+    return PieceCall{ i, piece.Input, piece.Triangles, piece.Triangles.View, this->Options, this->Execution,
+      piece.Output, this->SharesBorders };
+  }
+};
+
 int vtkMeshSimplificationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // The pieces, read once; what they share (collective under MPI, so every process gets here
-  // whatever it holds); then each piece simplified in turn.
+  // whatever it holds); each piece's core; the borders between pieces (collective too); then
+  // each piece's output. The cores take the progress up to the deviation's share.
   this->AchievedMaximumError = 0.0;
   vtkSimplification::InputPieces run;
   std::string problem;
@@ -197,24 +218,32 @@ int vtkMeshSimplificationFilter::RequestData(
   }
   vtkSimplification::PreparePieces(this, run);
   const double count = static_cast<double>(run.Pieces.size());
+  const double coreShare = this->ComputeDeviation ? 0.8 : 1.0;
+  std::vector<PieceRun> states(run.Pieces.size());
   for (std::size_t i = 0; i < run.Pieces.size() && !this->GetAbortExecute(); ++i)
   {
-    this->SetProgressShiftScale(static_cast<double>(i) / count, 1.0 / count);
-    this->SimplifyPiece(run, i);
+    this->SetProgressShiftScale(coreShare * static_cast<double>(i) / count, coreShare / count);
+    this->RunPiece(run, i, states[i]);
+  }
+  const BorderTotals borders = this->SimplifyBorders(run, states);
+  for (std::size_t i = 0; i < run.Pieces.size(); ++i)
+  {
+    this->SetProgressShiftScale(coreShare + (1.0 - coreShare) * static_cast<double>(i) / count, (1.0 - coreShare) / count);
+    this->FinishPiece(run, i, states[i], borders);
   }
   this->SetProgressShiftScale(0.0, 1.0);
   return 1;
 }
 
-bool vtkMeshSimplificationFilter::SimplifyPiece(vtkSimplification::InputPieces& run, std::size_t i)
+void vtkMeshSimplificationFilter::RunPiece(vtkSimplification::InputPieces& run, std::size_t i, PieceRun& state)
 {
   Piece& piece = run.Pieces[i];
   if (!piece.Readable)
   {
-    return false;
+    return;
   }
   // The common options: the target (this piece's share of a count), the locks and regions.
-  meshsimp::SimplificationOptions options;
+  meshsimp::SimplificationOptions& options = state.Options;
   meshsimp::Target& goal = options.Goal;
   goal.Mode = static_cast<meshsimp::TargetMode>(this->TargetMode);
   goal.Reduction = this->TargetReduction;
@@ -241,28 +270,22 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(vtkSimplification::InputPieces& 
   options.SamePointData = [pointData](std::int64_t a, std::int64_t b) {
     return vtkSimplification::SamePointData(pointData, a, b);
   };
-  std::vector<std::int32_t> regions;
   if (this->PreserveAttributeBorders)
   {
     vtkAbstractArray* array = vtkSimplification::SelectedPointArray(this, 1, piece.Input, "attribute borders");
     if (array)
     {
-      regions = vtkSimplification::ReadRegions(array);
-      options.Regions = regions.data();
+      state.Regions = vtkSimplification::ReadRegions(array);
+      options.Regions = state.Regions.data();
     }
     else
     {
       vtkWarningMacro(<< run.Name(i) << "PreserveAttributeBorders is on, but no point array is chosen for it.");
     }
   }
+  this->ReserveForBorders(piece, state);
 
-  meshsimp::SimplifiedMesh mesh;
-  // The deviation takes the last fifth of the piece's progress.
-  const double shift = this->GetProgressShift(), scale = this->GetProgressScale();
-  const double coreShare = this->ComputeDeviation ? 0.8 : 1.0;
-  this->SetProgressShiftScale(shift, coreShare * scale);
-  const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, this->NumberOfThreads);
-  const PieceCall call{ i, piece.Input, piece.Triangles, piece.Triangles.View, options, context, piece.Output };
+  state.Execution = vtkSimplification::MakeExecutionContext(this, this->NumberOfThreads);
   const bool none = (this->TargetMode == TARGET_REDUCTION && this->TargetReduction == 1.0) ||
     (this->TargetMode == TARGET_TRIANGLE_COUNT && this->TargetTriangleCount == 0);
   if (none)
@@ -271,19 +294,158 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(vtkSimplification::InputPieces& 
                     << (this->TargetMode == TARGET_REDUCTION ? "TargetReduction 1" : "TargetTriangleCount 0")
                     << " asks for no triangle.");
   }
-  else if (!this->RunCore(call, mesh))
+  else if (!this->RunCore(state.Call(piece, i), state.Mesh))
   {
     vtkWarningMacro(<< run.Name(i) << "Aborted: the output is empty.");
-    mesh = meshsimp::SimplifiedMesh();
+    state.Mesh = meshsimp::SimplifiedMesh();
   }
   else
   {
-    this->WarnAboutOutcome(run, i, mesh);
+    state.Ran = true;
+  }
+}
+
+void vtkMeshSimplificationFilter::ReserveForBorders(const Piece& piece, PieceRun& state) const
+{
+  // A piece whose points are shared with other pieces keeps them through its core, so its
+  // border keeps the input's resolution. Its core aims at its share plus two triangles a shared
+  // point (the fans along a locked border; with less, the interior is drawn onto the border). The
+  // border round then removes the shared points a border loses when a count keeps a fraction f
+  // of the triangles: all but b √f of b (a border's points thin out as a length, the triangles
+  // as an area); last, the piece is taken to its share with its thinned border locked.
+  meshsimp::Target& goal = state.Options.Goal;
+  if (goal.Bounded() || piece.SharedLocks == 0)
+  {
+    return;
+  }
+  const std::int64_t triangles = piece.Triangles.View.NumberOfTriangles;
+  state.SharesBorders = true;
+  state.Share = goal.TriangleCountFor(triangles);
+  const double kept = static_cast<double>(state.Share) / static_cast<double>(std::max<std::int64_t>(1, triangles));
+  state.BorderRemovals = std::llround(static_cast<double>(piece.SharedLocks) * (1.0 - std::sqrt(kept)));
+  goal.SetTriangleCount(std::min(triangles, state.Share + 2 * piece.SharedLocks));
+}
+
+vtkMeshSimplificationFilter::BorderTotals vtkMeshSimplificationFilter::SimplifyBorders(
+  vtkSimplification::InputPieces& run, std::vector<PieceRun>& states)
+{
+  // Collective: every process takes part whatever its pieces, under a count target. The border
+  // round, then each piece to its share; where pieces stay above (a piece's part cut off by the
+  // borders can only lose border points), again with the excess as the border round's count.
+  BorderTotals totals;
+  if (!run.Shared || this->TargetMode == TARGET_MAXIMUM_ERROR)
+  {
+    return totals;
+  }
+  double removals = 0.0;
+  for (const PieceRun& state : states)
+  {
+    removals += state.Ran && state.SharesBorders ? static_cast<double>(state.BorderRemovals) : 0.0;
+  }
+  std::int64_t count = std::llround(vtkSimplification::SumOverProcesses(removals));
+  for (int round = 0; round < MaximumBorderRounds && count > 0; ++round)
+  {
+    const std::int64_t removed = this->ThinBorders(run, states, count);
+    double local[2] = { 0.0, 0.0 };
+    for (std::size_t i = 0; i < states.size() && !this->GetAbortExecute(); ++i)
+    {
+      PieceRun& state = states[i];
+      if (state.Ran && state.SharesBorders)
+      {
+        state.Ran = this->Resimplify(run.Pieces[i], i, state);
+        local[0] += static_cast<double>(state.Mesh.NumberOfTriangles());
+        local[1] += static_cast<double>(state.Share);
+      }
+    }
+    totals.Triangles = vtkSimplification::SumOverProcesses(local[0]);
+    totals.Target = vtkSimplification::SumOverProcesses(local[1]);
+    const double slack = this->TargetTolerance * totals.Target;
+    count = removed > 0 && totals.Triangles > totals.Target + slack ? std::llround(totals.Triangles - totals.Target) : 0;
+  }
+  return totals;
+}
+
+std::int64_t vtkMeshSimplificationFilter::ThinBorders(
+  vtkSimplification::InputPieces& run, std::vector<PieceRun>& states, std::int64_t count)
+{
+  std::vector<meshsimp::PieceBorders> sides;
+  sides.reserve(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i)
+  {
+    PieceRun& state = states[i];
+    if (state.Ran && state.SharesBorders)
+    {
+      const Piece& piece = run.Pieces[i];
+      sides.emplace_back(state.Mesh, piece.Triangles.View, piece.Locks.data(), state.Options.Regions,
+        static_cast<double>(piece.Key));
+    }
+  }
+  std::vector<meshsimp::PieceBorders*> pieces;
+  for (meshsimp::PieceBorders& side : sides)
+  {
+    pieces.push_back(&side);
+  }
+  return meshsimp::SimplifySharedBorders(pieces, count, vtkSimplification::MakeBorderExchange());
+}
+
+bool vtkMeshSimplificationFilter::Resimplify(const Piece& piece, std::size_t i, PieceRun& state)
+{
+  // The core again, on the piece's result, to the piece's share: each of its points takes the
+  // locks and region of the input point it stands for.
+  meshsimp::SimplifiedMesh& first = state.Mesh;
+  state.Mesh.Report.TargetTriangles = state.Share;
+  if (first.NumberOfTriangles() <= state.Share)
+  {
+    return true;
+  }
+  const std::int64_t points = first.NumberOfPoints();
+  std::vector<std::uint8_t> locks(static_cast<std::size_t>(points), 0);
+  std::vector<std::int32_t> regions(state.Regions.empty() ? 0 : static_cast<std::size_t>(points));
+  for (std::int64_t p = 0; p < points; ++p)
+  {
+    const std::int32_t source = first.Representative(p);
+    locks[p] = piece.Locks.empty() ? 0 : piece.Locks[source];
+    if (!regions.empty())
+    {
+      regions[p] = state.Regions[source];
+    }
+  }
+  meshsimp::SimplificationOptions options = state.Options;
+  options.Goal.SetTriangleCount(state.Share);
+  options.LockedPoints = locks.data();
+  options.Regions = regions.empty() ? nullptr : regions.data();
+  options.CloseCracks = false;
+  options.SamePointData = nullptr;
+  const meshsimp::TriangleMeshView mesh{ first.Points.data(), points, first.Triangles.data(), first.NumberOfTriangles() };
+  const PieceCall call{ i, piece.Input, piece.Triangles, mesh, options, state.Execution, piece.Output, true };
+  meshsimp::SimplifiedMesh second;
+  if (!this->RunCore(call, second))
+  {
+    first = meshsimp::SimplifiedMesh();
+    return false;
+  }
+  meshsimp::ComposeSources(first, std::move(second));
+  return true;
+}
+
+void vtkMeshSimplificationFilter::FinishPiece(
+  vtkSimplification::InputPieces& run, std::size_t i, PieceRun& state, const BorderTotals& borders)
+{
+  const Piece& piece = run.Pieces[i];
+  if (!piece.Readable)
+  {
+    return;
+  }
+  const meshsimp::SimplifiedMesh& mesh = state.Mesh;
+  const PieceCall call = state.Call(piece, i);
+  if (state.Ran)
+  {
+    this->WarnAboutOutcome(run, i, state, borders);
   }
   this->WritePiece(call, mesh);
   if (mesh.Report.MaximumError >= 0.0)
   {
-    const double error = goal.InBoundUnits(mesh.Report.MaximumError, mesh.Report.Diagonal);
+    const double error = state.Options.Goal.InBoundUnits(mesh.Report.MaximumError, mesh.Report.Diagonal);
     this->AchievedMaximumError = std::max(this->AchievedMaximumError, error);
     vtkSimplification::AddFieldValue(piece.Output, "MaximumError", error);
   }
@@ -291,16 +453,10 @@ bool vtkMeshSimplificationFilter::SimplifyPiece(vtkSimplification::InputPieces& 
   {
     vtkSimplification::AddFieldValue(piece.Output, "JoinedPoints", static_cast<double>(mesh.Report.JoinedPoints));
   }
-  if (this->ComputeDeviation && !this->GetAbortExecute())
+  if (this->ComputeDeviation && !this->GetAbortExecute() && !this->AddDeviation(call, mesh))
   {
-    this->SetProgressShiftScale(shift + coreShare * scale, (1.0 - coreShare) * scale);
-    if (!this->AddDeviation(call, mesh))
-    {
-      vtkWarningMacro(<< run.Name(i) << "Aborted: the output has no Deviation.");
-    }
+    vtkWarningMacro(<< run.Name(i) << "Aborted: the output has no Deviation.");
   }
-  this->SetProgressShiftScale(shift, scale);
-  return true;
 }
 
 namespace
@@ -362,25 +518,29 @@ bool vtkMeshSimplificationFilter::AddDeviation(const PieceCall& piece, const mes
   return vtkSimplification::AddDeviation(piece.Mesh, mesh, piece.Output, piece.Execution);
 }
 
-void vtkMeshSimplificationFilter::WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t i, const meshsimp::SimplifiedMesh& mesh)
+void vtkMeshSimplificationFilter::WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t i,
+  const PieceRun& state, const BorderTotals& borders)
 {
   // The count's miss first, with its reason, then what the algorithm changed to get there, then
-  // what it left out of the input.
+  // what it left out of the input. Pieces that share borders are judged together.
+  const meshsimp::SimplifiedMesh& mesh = state.Mesh;
   const meshsimp::Outcome& report = mesh.Report;
-  const std::int64_t count = mesh.NumberOfTriangles(), target = report.TargetTriangles;
+  const std::int64_t count = state.SharesBorders ? std::llround(borders.Triangles) : mesh.NumberOfTriangles();
+  const std::int64_t target = state.SharesBorders ? std::llround(borders.Target) : report.TargetTriangles;
   const std::int64_t slack = std::max<std::int64_t>(1, static_cast<std::int64_t>(this->TargetTolerance * static_cast<double>(target)));
   const bool missed = this->TargetMode != TARGET_MAXIMUM_ERROR && std::abs(count - target) > slack;
   if (missed || report.Stop == meshsimp::StopReason::AllLocked)
   {
     std::string reason = report.Stop == meshsimp::StopReason::AllLocked ? LockNote(run.Pieces[i], report, this->PreserveBoundary)
       : !report.Reason.empty() ? report.Reason
+      : state.SharesBorders    ? "the borders between the pieces could not be simplified further"
                                : "no change that keeps the mesh valid is left";
     if (report.LockedPoints > 0 && report.Stop != meshsimp::StopReason::AllLocked)
     {
       reason += "; " + LockNote(run.Pieces[i], report, this->PreserveBoundary);
     }
-    vtkWarningMacro(<< run.Name(i) << "Reached " << count << " triangles where " << target
-                    << " were asked for: " << reason << ".");
+    vtkWarningMacro(<< run.Name(i) << (state.SharesBorders ? "The pieces together reached " : "Reached ") << count
+                    << " triangles where " << target << " were asked for: " << reason << ".");
   }
   const std::string lead = this->TargetMode == TARGET_MAXIMUM_ERROR
     ? "Under MaximumError " + Format(this->MaximumError) + ", "

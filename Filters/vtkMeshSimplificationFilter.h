@@ -18,7 +18,9 @@
  *   PreserveAttributeBorders, a point array chosen as input array 1 divides the points into
  *   regions of equal values, and no collapse or cluster joins two regions, so that a colour or
  *   label border stays sharp. Under MPI the points a piece shares with another piece are locked,
- *   so the simplified pieces still fit together.
+ *   so the simplified pieces still fit together; under a count, the border round then thins the
+ *   borders on every piece at once and each piece goes to its share again with its thinned
+ *   border locked (meshsimp::SimplifySharedBorders), so the whole meets its count.
  * - Input: vtkPolyData, any other dataset whose cells are surfaces (through vtkGeometryFilter,
  *   as Extract Surface does; one with 3-D cells is refused with a message that says to extract
  *   its surface first), or composite data of them: polygonal leaves are simplified, other leaves
@@ -51,6 +53,7 @@
 #include <memory>  // for std::unique_ptr
 #include <string>  // for SetSettingByName
 #include <utility> // for std::move
+#include <vector>  // for the pieces of an execution
 
 namespace meshsimp
 {
@@ -62,6 +65,7 @@ struct TriangleMeshView;
 namespace vtkSimplification
 {
 struct InputPieces;
+struct Piece;
 struct TriangleInput;
 }
 
@@ -248,10 +252,17 @@ protected:
     std::size_t Index;
     vtkPolyData* Input;
     const vtkSimplification::TriangleInput& Triangles;
+    /// What the core simplifies: the piece's triangles (Triangles.View), or, at the border
+    /// round's last stage, the piece's first result (see SharesBorders).
     const meshsimp::TriangleMeshView& Mesh;
     const meshsimp::SimplificationOptions& Common;
     const meshsimp::ExecutionContext& Execution;
     vtkPolyData* Output;
+    /// The piece shares borders with other pieces. Its core aims above its share, the border
+    /// round thins the borders on every piece at once (meshsimp::SimplifySharedBorders), and
+    /// the core runs again on the result (Mesh) to the share with the thinned border locked:
+    /// RunCore gives whole meshes, and WritePiece and AddDeviation get the last.
+    bool SharesBorders;
   };
 
   /**
@@ -311,9 +322,26 @@ private:
   vtkMeshSimplificationFilter(const vtkMeshSimplificationFilter&) = delete;
   void operator=(const vtkMeshSimplificationFilter&) = delete;
 
+  /// One piece's state from its core run to its output.
+  struct PieceRun;
+  /// The triangles of the pieces that share borders, and their targets, over every process.
+  struct BorderTotals
+  {
+    double Triangles = 0.0, Target = 0.0;
+  };
+
   bool CheckTarget();
-  bool SimplifyPiece(vtkSimplification::InputPieces& run, std::size_t piece);
-  void WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t piece, const meshsimp::SimplifiedMesh& mesh);
+  void RunPiece(vtkSimplification::InputPieces& run, std::size_t piece, PieceRun& state);
+  void ReserveForBorders(const vtkSimplification::Piece& piece, PieceRun& state) const;
+  BorderTotals SimplifyBorders(vtkSimplification::InputPieces& run, std::vector<PieceRun>& states);
+  /// The border round over the pieces that share borders: count triangles to remove.
+  std::int64_t ThinBorders(vtkSimplification::InputPieces& run, std::vector<PieceRun>& states, std::int64_t count);
+  bool Resimplify(const vtkSimplification::Piece& piece, std::size_t i, PieceRun& state);
+  /// How many times the border round and the pieces' last stage alternate at most.
+  static constexpr int MaximumBorderRounds = 3;
+  void FinishPiece(vtkSimplification::InputPieces& run, std::size_t piece, PieceRun& state, const BorderTotals& borders);
+  void WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t piece, const PieceRun& state,
+    const BorderTotals& borders);
 };
 
 #endif

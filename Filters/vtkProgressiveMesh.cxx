@@ -350,7 +350,21 @@ void vtkProgressiveMesh::WriteSequences(vtkDataObject* levels, vtkDataObject* se
 bool vtkProgressiveMesh::RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result)
 {
   // The piece's sequence: read from a sequence given as input, cached, or built; then the level
-  // the target picks.
+  // the target picks. The border round's last stage, on the piece's first result, builds a
+  // sequence of its own that is not kept (weighing geometry alone).
+  if (&piece.Mesh != &piece.Triangles.View)
+  {
+    meshsimp::ProgressiveMeshOptions options;
+    static_cast<meshsimp::SimplificationOptions&>(options) = piece.Common;
+    static_cast<meshsimp::ProgressiveMeshParameters&>(options) = *this;
+    meshsimp::ProgressiveMesh sequence;
+    if (!meshsimp::BuildProgressiveMesh(piece.Mesh, options, sequence, piece.Execution))
+    {
+      return false;
+    }
+    meshsimp::ExtractTarget(sequence, piece.Common.Goal, piece.Mesh, result);
+    return true;
+  }
   Cache& cache = *this->Sequences;
   const std::size_t i = piece.Index;
   const meshsimp::TriangleMeshView& mesh = piece.Triangles.View;
@@ -396,9 +410,10 @@ bool vtkProgressiveMesh::RunCore(const PieceCall& piece, meshsimp::SimplifiedMes
   }
   cache.Levels.resize(cache.Pieces.size(), -1);
   cache.Levels[i] = -1;
-  // Normals are recomputed from the level's own mesh: then it is extracted in full.
+  // Normals are recomputed from the level's own mesh, and the border round edits the mesh: then
+  // it is extracted in full.
   const bool normals = i < cache.Wholes.size() && cache.Wholes[i] ? HasNormals(cache.Wholes[i]) : HasNormals(piece.Input);
-  if (!normals)
+  if (!normals && !piece.SharesBorders)
   {
     cache.Levels[i] = LevelToWrite(sequence, piece.Common.Goal, result);
     return true;
@@ -410,7 +425,8 @@ bool vtkProgressiveMesh::RunCore(const PieceCall& piece, meshsimp::SimplifiedMes
 void vtkProgressiveMesh::WritePiece(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh)
 {
   // The level from the first points and triangles of the whole sequence's mesh, made now if it
-  // is not yet; a piece without a sequence (aborted, nothing asked for) the usual way.
+  // is not yet; a piece without a sequence (aborted, nothing asked for) the usual way, and one
+  // the border round edited the usual way beside its sequence.
   Cache& cache = *this->Sequences;
   const std::size_t i = piece.Index;
   vtkPolyData* output = piece.Output;
@@ -437,6 +453,11 @@ void vtkProgressiveMesh::WritePiece(const PieceCall& piece, const meshsimp::Simp
     whole->GetCellData()->AddArray(removedAt);
     whole->GetFieldData()->Initialize();
   }
+  if (piece.SharesBorders)
+  {
+    this->Superclass::WritePiece(piece, mesh);
+    return;
+  }
   const std::int64_t points = lean ? cache.Levels[i] : mesh.NumberOfPoints();
   cache.CornerBuffers.resize(cache.Ready.size());
   const vtkSmartPointer<vtkDataArray> view = vtkSimplification::PrefixView(
@@ -455,7 +476,7 @@ bool vtkProgressiveMesh::AddDeviation(const PieceCall& piece, const meshsimp::Si
 {
   Cache& cache = *this->Sequences;
   const std::size_t i = piece.Index;
-  if (i >= cache.Ready.size() || !cache.Ready[i])
+  if (i >= cache.Ready.size() || !cache.Ready[i] || piece.SharesBorders)
   {
     return this->Superclass::AddDeviation(piece, mesh);
   }

@@ -13,6 +13,50 @@
 
 namespace vtkSimplification
 {
+namespace
+{
+/// Every process's values, in process order (this one's alone without MPI); offsets[i] is
+/// where process i's begin, offsets[processes] the end.
+std::vector<double> GatherFromProcesses(const std::vector<double>& values, std::vector<vtkIdType>& offsets)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int processes = controller ? controller->GetNumberOfProcesses() : 1;
+  const vtkIdType length = static_cast<vtkIdType>(values.size());
+  std::vector<vtkIdType> lengths(processes, length);
+  if (processes > 1)
+  {
+    controller->AllGather(&length, lengths.data(), 1);
+  }
+  offsets.assign(processes + 1, 0);
+  for (int i = 0; i < processes; ++i)
+  {
+    offsets[i + 1] = offsets[i] + lengths[i];
+  }
+  if (processes < 2)
+  {
+    return values;
+  }
+  std::vector<double> all(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
+  std::vector<double> sent(values);
+  sent.resize(std::max<std::size_t>(1, sent.size()));
+  controller->AllGatherV(sent.data(), all.data(), length, lengths.data(), offsets.data());
+  all.resize(static_cast<std::size_t>(offsets[processes]));
+  return all;
+}
+
+/// values reduced element-wise over the processes, in place.
+void ReduceOverProcesses(std::vector<double>& values, int operation)
+{
+  if (!IsDistributed() || values.empty())
+  {
+    return;
+  }
+  std::vector<double> local(values);
+  vtkMultiProcessController::GetGlobalController()->AllReduce(
+    local.data(), values.data(), static_cast<vtkIdType>(values.size()), operation);
+}
+}
+
 
 bool IsDistributed()
 {
@@ -55,22 +99,8 @@ void LockSharedPoints(const std::vector<const TriangleInput*>& pieces, const std
   }
   // Every process's border points to every process (or this one's alone, without MPI).
   const int self = processes > 1 ? controller->GetLocalProcessId() : 0;
-  std::vector<vtkIdType> lengths(processes, static_cast<vtkIdType>(sent.size())), offsets(processes + 1, 0);
-  if (processes > 1)
-  {
-    vtkIdType length = static_cast<vtkIdType>(sent.size());
-    controller->AllGather(&length, lengths.data(), 1);
-  }
-  for (int i = 0; i < processes; ++i)
-  {
-    offsets[i + 1] = offsets[i] + lengths[i];
-  }
-  std::vector<double> all(sent);
-  if (processes > 1)
-  {
-    all.resize(static_cast<std::size_t>(std::max<vtkIdType>(1, offsets[processes])));
-    controller->AllGatherV(sent.data(), all.data(), lengths[self], lengths.data(), offsets.data());
-  }
+  std::vector<vtkIdType> offsets;
+  const std::vector<double> all = GatherFromProcesses(sent, offsets);
   // A point is shared when another piece of its key (on another process, or another piece of
   // this one) has a border point there: (key, x, y, z) then the piece's owner, sorted.
   using Entry = std::pair<std::array<double, 4>, std::int64_t>;
@@ -104,6 +134,25 @@ void LockSharedPoints(const std::vector<const TriangleInput*>& pieces, const std
       mine += 5;
     }
   }
+}
+
+double SumOverProcesses(double value)
+{
+  std::vector<double> values{ value };
+  ReduceOverProcesses(values, vtkCommunicator::SUM_OP);
+  return values[0];
+}
+
+meshsimp::BorderExchange MakeBorderExchange()
+{
+  meshsimp::BorderExchange exchange;
+  exchange.Gather = [](const std::vector<double>& values) {
+    std::vector<vtkIdType> offsets;
+    return GatherFromProcesses(values, offsets);
+  };
+  exchange.Maximum = [](std::vector<double>& values) { ReduceOverProcesses(values, vtkCommunicator::MAX_OP); };
+  exchange.Minimum = [](std::vector<double>& values) { ReduceOverProcesses(values, vtkCommunicator::MIN_OP); };
+  return exchange;
 }
 
 Totals GatherTotals(const std::vector<const TriangleInput*>& pieces)

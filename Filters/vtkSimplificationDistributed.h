@@ -9,6 +9,7 @@
 #ifndef vtkSimplificationDistributed_h
 #define vtkSimplificationDistributed_h
 
+#include "SharedBorders.h"
 #include "vtkSimplificationInput.h"
 
 #include <cstdint>
@@ -40,6 +41,13 @@ struct Totals
   double Diagonal = 0.0;
 };
 Totals GatherTotals(const std::vector<const TriangleInput*>& pieces);
+
+/// The sum of value over the processes (value itself without MPI).
+double SumOverProcesses(double value);
+
+/// The border round's exchanges (meshsimp::SimplifySharedBorders) over the global controller's
+/// processes, or within this one.
+meshsimp::BorderExchange MakeBorderExchange();
 
 }
 

@@ -269,4 +269,43 @@ void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::v
   }
 }
 
+void ComposeSources(SimplifiedMesh& first, SimplifiedMesh&& second)
+{
+  SimplifiedMesh& result = second;
+  std::vector<std::int32_t> offsets = { 0 }, points;
+  std::vector<double> weights;
+  for (std::int64_t p = 0; p < result.NumberOfPoints(); ++p)
+  {
+    for (std::int32_t s = result.SourceOffsets[p]; s < result.SourceOffsets[p + 1]; ++s)
+    {
+      const std::int32_t via = result.SourcePoints[s];
+      for (std::int32_t k = first.SourceOffsets[via]; k < first.SourceOffsets[via + 1]; ++k)
+      {
+        points.push_back(first.SourcePoints[k]);
+        weights.push_back(result.SourceWeights[s] * first.SourceWeights[k]);
+      }
+    }
+    offsets.push_back(static_cast<std::int32_t>(points.size()));
+  }
+  result.SourceOffsets = std::move(offsets);
+  result.SourcePoints = std::move(points);
+  result.SourceWeights = std::move(weights);
+  for (std::int32_t& t : result.TriangleSource)
+  {
+    t = first.TriangleSource[t];
+  }
+  Outcome report = first.Report;
+  report.Stop = result.Report.Stop;
+  report.Reason = result.Report.Reason;
+  for (const std::string& note : result.Report.Notes)
+  {
+    if (std::find(report.Notes.begin(), report.Notes.end(), note) == report.Notes.end())
+    {
+      report.Notes.push_back(note);
+    }
+  }
+  result.Report = std::move(report);
+  first = std::move(result);
+}
+
 } // namespace meshsimp

@@ -212,6 +212,15 @@ std::vector<std::int32_t> WriteSurvivors(const CollapseMesh& mesh, const std::ve
 void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::vector<std::int32_t>& inputVertex,
   SimplifiedMesh& mesh, const std::vector<std::int32_t>& mergedInto = {});
 
+/**
+ * Two simplifications in a row: second was made from first's points and triangles, and becomes
+ * the result, its sources those of the input first was made from (an input point's weight is the
+ * product of its weights along the way; representatives stay first), its triangles' sources
+ * first's. The outcome keeps first's counts of the input and takes second's stop, reason and
+ * notes; the per-point figures and whole-mesh values are second's.
+ */
+void ComposeSources(SimplifiedMesh& first, SimplifiedMesh&& second);
+
 } // namespace meshsimp
 
 #endif
