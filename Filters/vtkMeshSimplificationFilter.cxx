@@ -459,53 +459,67 @@ void vtkMeshSimplificationFilter::FinishPiece(
   }
 }
 
-namespace
+void vtkMeshSimplificationFilter::ForEachSetting(const meshsimp::SettingVisit& visit)
 {
-/// The common settings SetSettingByName takes, each with its setter's range (a flag: 0 or 1).
-template <class Visit>
-void ForEachCommonSetting(vtkMeshSimplificationFilter* filter, Visit&& visit)
-{
-  visit("PreserveBoundary", 0.0, 1.0, [filter](double v) { filter->SetPreserveBoundary(v != 0.0); });
-  visit("CloseCracks", 0.0, 1.0, [filter](double v) { filter->SetCloseCracks(v != 0.0); });
-  visit("ComputeDeviation", 0.0, 1.0, [filter](double v) { filter->SetComputeDeviation(v != 0.0); });
-  visit("GenerateOriginalIds", 0.0, 1.0, [filter](double v) { filter->SetGenerateOriginalIds(v != 0.0); });
-  visit("OutputPointsPrecision", double(vtkAlgorithm::SINGLE_PRECISION), double(vtkAlgorithm::DEFAULT_PRECISION),
-    [filter](double v) { filter->SetOutputPointsPrecision(static_cast<int>(v)); });
-  visit("NumberOfThreads", double(filter->GetNumberOfThreadsMinValue()), double(filter->GetNumberOfThreadsMaxValue()),
-    [filter](double v) { filter->SetNumberOfThreads(static_cast<int>(v)); });
-}
+  // The common settings, each with its setter's range (a flag: 0 or 1; the setters call
+  // Modified on a change), then the filter's own.
+  const auto flag = [this, &visit](const char* name, bool value, void (vtkMeshSimplificationFilter::*set)(bool),
+                      bool (vtkMeshSimplificationFilter::*get)(), const char* help) {
+    visit(meshsimp::SettingEntry{ name, value ? 1.0 : 0.0, 0.0, 1.0, help, [this, set, get](double v) {
+                                   (this->*set)(v != 0.0);
+                                   return (this->*get)() ? 1.0 : 0.0;
+                                 } });
+  };
+  const auto number = [this, &visit](const char* name, int value, int minimum, int maximum,
+                        void (vtkMeshSimplificationFilter::*set)(int), int (vtkMeshSimplificationFilter::*get)(),
+                        const char* help) {
+    visit(meshsimp::SettingEntry{ name, double(value), double(minimum), double(maximum), help,
+      [this, set, get, minimum, maximum](double v) {
+        (this->*set)(static_cast<int>(std::min(std::max(v, double(minimum)), double(maximum))));
+        return double((this->*get)());
+      } });
+  };
+  flag("PreserveBoundary", this->PreserveBoundary, &vtkMeshSimplificationFilter::SetPreserveBoundary,
+    &vtkMeshSimplificationFilter::GetPreserveBoundary,
+    "Keep every point of an open border where it is, so the outline of a terrain or an open scan keeps its shape.");
+  flag("CloseCracks", this->CloseCracks, &vtkMeshSimplificationFilter::SetCloseCracks,
+    &vtkMeshSimplificationFilter::GetCloseCracks,
+    "Close zero-width cracks before simplifying: two points at the same position on the two sides of a crack "
+    "become one point.");
+  flag("ComputeDeviation", this->ComputeDeviation, &vtkMeshSimplificationFilter::SetComputeDeviation,
+    &vtkMeshSimplificationFilter::GetComputeDeviation,
+    "Add the point array Deviation (input units): how far the output stands off the input around each output "
+    "point, both ways.");
+  flag("GenerateOriginalIds", this->GenerateOriginalIds, &vtkMeshSimplificationFilter::SetGenerateOriginalIds,
+    &vtkMeshSimplificationFilter::GetGenerateOriginalIds,
+    "Add the point array vtkOriginalPointIds (each output point's representative input point) and the cell "
+    "array vtkOriginalCellIds (each output triangle's input cell), as Extract Surface names them.");
+  number("OutputPointsPrecision", this->OutputPointsPrecision, vtkAlgorithm::SINGLE_PRECISION,
+    vtkAlgorithm::DEFAULT_PRECISION, &vtkMeshSimplificationFilter::SetOutputPointsPrecision,
+    &vtkMeshSimplificationFilter::GetOutputPointsPrecision, "Precision of the output points.");
+  number("NumberOfThreads", this->NumberOfThreads, this->GetNumberOfThreadsMinValue(),
+    this->GetNumberOfThreadsMaxValue(), &vtkMeshSimplificationFilter::SetNumberOfThreads,
+    &vtkMeshSimplificationFilter::GetNumberOfThreads, "Threads (0: all cores).");
+  this->ForEachOwnSetting(visit);
 }
 
 bool vtkMeshSimplificationFilter::SetSettingByName(const std::string& name, double value)
 {
-  if (!std::isfinite(value))
-  {
-    return false;
-  }
   bool found = false;
-  ForEachCommonSetting(this, [&](const char* entry, double minimum, double maximum, const auto& set) {
-    if (!found && name == entry)
+  this->ForEachSetting([&](const meshsimp::SettingEntry& entry) {
+    if (!found && name == entry.Name && std::isfinite(value))
     {
-      set(std::min(std::max(value, minimum), maximum)); // the setter calls Modified on a change
       found = true;
+      if (entry.Set(value) != entry.Value)
+      {
+        this->Modified(); // (a common setting's setter has already)
+      }
     }
   });
-  if (found)
-  {
-    return true;
-  }
-  const meshsimp::SetResult result = this->SetOwnSetting(name, value);
-  if (result == meshsimp::SetResult::Changed)
-  {
-    this->Modified();
-  }
-  return result != meshsimp::SetResult::Unknown;
+  return found;
 }
 
-meshsimp::SetResult vtkMeshSimplificationFilter::SetOwnSetting(const std::string&, double)
-{
-  return meshsimp::SetResult::Unknown;
-}
+void vtkMeshSimplificationFilter::ForEachOwnSetting(const meshsimp::SettingVisit&) {}
 
 void vtkMeshSimplificationFilter::WritePiece(const PieceCall& piece, const meshsimp::SimplifiedMesh& mesh)
 {

@@ -47,7 +47,7 @@
 #define vtkMeshSimplificationFilter_h
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
-#include "ParameterTable.h" // for SetOwnSetting
+#include "ParameterTable.h" // for ForEachOwnSetting
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory>  // for std::unique_ptr
@@ -220,6 +220,11 @@ public:
    */
   bool SetSettingByName(const std::string& name, double value);
 
+  /// Calls visit with each setting SetSettingByName takes, the common ones first: its name,
+  /// value, range, one line of help (which the plugin's documentation of the property begins
+  /// with) and a setter. The command-line tool's --settings lists them.
+  void ForEachSetting(const meshsimp::SettingVisit& visit);
+
   /**
    * The largest error the algorithm bounds, after the last execution, in MaximumError's units
    * (a fraction of the diagonal when RelativeError is on); 0 when the algorithm does not
@@ -229,9 +234,9 @@ public:
 
 
 protected:
-  /// The filter's own settings by name (see SetSettingByName). Filters with a parameters table
-  /// set them through meshsimp::SetParameterByName.
-  virtual meshsimp::SetResult SetOwnSetting(const std::string& name, double value);
+  /// Calls visit with each of the filter's own settings (see ForEachSetting): with a parameters
+  /// table, meshsimp::VisitParameters<Table>(*this, visit).
+  virtual void ForEachOwnSetting(const meshsimp::SettingVisit& visit);
 
   vtkMeshSimplificationFilter();
   ~vtkMeshSimplificationFilter() override;

@@ -24,7 +24,7 @@ void vtkOctreeVertexClustering::PrintSelf(ostream& os, vtkIndent indent)
   meshsimp::PrintParameters<meshsimp::OctreeClusteringParameters>(*this, os, indent);
 }
 
-meshsimp::SetResult vtkOctreeVertexClustering::SetOwnSetting(const std::string& name, double value)
+void vtkOctreeVertexClustering::ForEachOwnSetting(const meshsimp::SettingVisit& visit)
 {
-  return meshsimp::SetParameterByName<meshsimp::OctreeClusteringParameters>(*this, name, value);
+  meshsimp::VisitParameters<meshsimp::OctreeClusteringParameters>(*this, visit);
 }

@@ -130,7 +130,7 @@ public:
 protected:
   vtkOctreeVertexClustering();
   ~vtkOctreeVertexClustering() override = default;
-  meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
+  void ForEachOwnSetting(const meshsimp::SettingVisit& visit) override;
 
   bool RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result) override;
 

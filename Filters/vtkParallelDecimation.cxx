@@ -72,7 +72,7 @@ void vtkParallelDecimation::PrintSelf(ostream& os, vtkIndent indent)
   meshsimp::PrintParameters<meshsimp::ParallelDecimationParameters>(*this, os, indent);
 }
 
-meshsimp::SetResult vtkParallelDecimation::SetOwnSetting(const std::string& name, double value)
+void vtkParallelDecimation::ForEachOwnSetting(const meshsimp::SettingVisit& visit)
 {
-  return meshsimp::SetParameterByName<meshsimp::ParallelDecimationParameters>(*this, name, value);
+  meshsimp::VisitParameters<meshsimp::ParallelDecimationParameters>(*this, visit);
 }

@@ -285,7 +285,7 @@ int vtkProgressiveMesh::RequestData(
   key << InputStamp(input) << ' ' << this->PreserveBoundary << ' ' << this->PreserveAttributeBorders << ' '
       << this->CloseCracks;
   meshsimp::ProgressiveMeshParameters::ForEach(static_cast<const meshsimp::ProgressiveMeshParameters&>(*this),
-    [&key](const char*, const auto& value, double, double) { key << ' ' << meshsimp::AsNumber(value); });
+    [&key](const char*, const auto& value, double, double, const char*) { key << ' ' << meshsimp::AsNumber(value); });
   for (int index = 0; index < 3; ++index)
   {
     vtkInformation* selection = this->GetInputArrayInformation(index);
@@ -502,7 +502,7 @@ void vtkProgressiveMesh::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBuilds: " << this->NumberOfBuilds << "\n";
 }
 
-meshsimp::SetResult vtkProgressiveMesh::SetOwnSetting(const std::string& name, double value)
+void vtkProgressiveMesh::ForEachOwnSetting(const meshsimp::SettingVisit& visit)
 {
-  return meshsimp::SetParameterByName<meshsimp::ProgressiveMeshParameters>(*this, name, value);
+  meshsimp::VisitParameters<meshsimp::ProgressiveMeshParameters>(*this, visit);
 }

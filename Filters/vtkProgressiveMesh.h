@@ -100,7 +100,7 @@ public:
 protected:
   vtkProgressiveMesh();
   ~vtkProgressiveMesh() override;
-  meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
+  void ForEachOwnSetting(const meshsimp::SettingVisit& visit) override;
 
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

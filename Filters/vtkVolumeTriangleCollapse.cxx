@@ -24,7 +24,7 @@ void vtkVolumeTriangleCollapse::PrintSelf(ostream& os, vtkIndent indent)
   meshsimp::PrintParameters<meshsimp::VolumeCollapseParameters>(*this, os, indent);
 }
 
-meshsimp::SetResult vtkVolumeTriangleCollapse::SetOwnSetting(const std::string& name, double value)
+void vtkVolumeTriangleCollapse::ForEachOwnSetting(const meshsimp::SettingVisit& visit)
 {
-  return meshsimp::SetParameterByName<meshsimp::VolumeCollapseParameters>(*this, name, value);
+  meshsimp::VisitParameters<meshsimp::VolumeCollapseParameters>(*this, visit);
 }

@@ -171,7 +171,7 @@ public:
 protected:
   vtkVolumeTriangleCollapse();
   ~vtkVolumeTriangleCollapse() override = default;
-  meshsimp::SetResult SetOwnSetting(const std::string& name, double value) override;
+  void ForEachOwnSetting(const meshsimp::SettingVisit& visit) override;
 
   bool RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result) override;
 

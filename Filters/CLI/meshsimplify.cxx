@@ -4,12 +4,14 @@
 //   meshsimplify --method octree|volume|parallel|progressive [--reduction R |
 //                --target-triangles N | --max-error E [--relative-error]] [--threads T]
 //                [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT
+//   meshsimplify --method METHOD --settings
 //
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
 // one JSON object; time_ms is the filter's own work (file I/O excluded), the median of N runs
 // with --repeat N (the protocol of the shared benchmark kit's peers). --levels (progressive
 // only) builds the sequence once and writes the level of each reduction to OUTPUT with %l
 // replaced by the reduction; the JSON then has build_ms and each level's extract_ms.
+// --settings lists the method's settings for --set with their defaults, ranges and help.
 #include "MeshFiles.h"
 #include "MeshSimplificationFilterList.h"
 #include "vtkOctreeVertexClustering.h"
@@ -108,6 +110,8 @@ std::string Usage()
     " [--reduction R |\n"
     "         --target-triangles N | --max-error E [--relative-error]] [--threads T]\n"
     "         [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT\n"
+    "       meshsimplify --method METHOD --settings\n"
+    "  --settings  the method's settings for --set: name=default [range] and a line of help\n"
     "  --repeat N  run the filter N times; time_ms is the median\n"
     "  --levels    progressive: one build, the level of each reduction written to OUTPUT with\n"
     "              %l replaced by the reduction\n";
@@ -120,7 +124,7 @@ struct Arguments
   double Reduction = 0.9;
   std::optional<double> MaximumError;
   std::optional<long long> TargetTriangles;
-  bool RelativeError = false, Json = false;
+  bool RelativeError = false, Json = false, ListSettings = false;
   int Threads = 0, Repeat = 1;
   std::vector<std::pair<std::string, double>> Settings;
   std::vector<std::pair<std::string, double>> Levels; // --levels: as typed (they name the files), and parsed
@@ -145,6 +149,8 @@ bool ParseOption(const std::string& arg, const std::function<std::string()>& val
     a.Repeat = static_cast<int>(ParseNumber(arg, value()));
   else if (arg == "--json")
     a.Json = true;
+  else if (arg == "--settings")
+    a.ListSettings = true;
   else if (arg == "--levels")
   {
     std::string list = value() + ",";
@@ -168,6 +174,24 @@ bool ParseOption(const std::string& arg, const std::function<std::string()>& val
   else
     return false;
   return true;
+}
+
+/// The method's settings for --set, one line each: name=default [range]: help.
+void PrintSettings(const std::string& method)
+{
+  const Method* found = FindMethod(method);
+  if (!found)
+  {
+    Fail("--settings needs a --method (available: " + MethodNames(", ") + ")");
+  }
+  found->Make()->ForEachSetting([](const meshsimp::SettingEntry& entry) {
+    char maximum[32] = "no bound";
+    if (entry.Maximum < meshsimp::Unbounded)
+    {
+      std::snprintf(maximum, sizeof(maximum), "%g", entry.Maximum);
+    }
+    std::printf("%s=%g [%g, %s]: %s\n", entry.Name, entry.Value, entry.Minimum, maximum, entry.Help);
+  });
 }
 
 /// The command line, checked: an ordered list of the checks, the first that fails named.
@@ -201,6 +225,11 @@ Arguments ParseArguments(int argc, char* argv[])
       a.Output = arg;
     else
       Fail("unexpected argument " + arg);
+  }
+  if (a.ListSettings)
+  {
+    PrintSettings(a.Method);
+    std::exit(0);
   }
   const std::pair<bool, std::string> checks[] = {
     { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },

@@ -34,16 +34,22 @@ struct OctreeClusteringParameters
   /// it (not at non-surface vertices, nor with cell limits, where collapses cannot finish).
   bool PreventFlips = true;
 
-  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum, help).
   template <class Self, class Visit>
   static void ForEach(Self& self, Visit&& visit)
   {
-    visit("MaximumCellSize", self.MaximumCellSize, 1e-6, 1.0);
-    visit("MaximumVerticesPerCell", self.MaximumVerticesPerCell, 0.0, double(std::numeric_limits<int>::max()));
-    visit("ErrorIterations", self.ErrorIterations, 0.0, 20.0);
-    visit("BoundaryPlanes", self.BoundaryPlanes, 0.0, 1.0);
-    visit("BoundaryWeight", self.BoundaryWeight, 0.0, 1000.0);
-    visit("PreventFlips", self.PreventFlips, 0.0, 1.0);
+    visit("MaximumCellSize", self.MaximumCellSize, 1e-6, 1.0,
+      "Cells larger than this fraction of the bounding-box diagonal are always split (1: no limit).");
+    visit("MaximumVerticesPerCell", self.MaximumVerticesPerCell, 0.0, double(std::numeric_limits<int>::max()),
+      "Cells with more vertices are always split (0: no limit).");
+    visit("ErrorIterations", self.ErrorIterations, 0.0, 20.0,
+      "Iterations of the second error term, the distances of the clustered vertices to the new triangles.");
+    visit("BoundaryPlanes", self.BoundaryPlanes, 0.0, 1.0,
+      "Keep open borders in shape with planes perpendicular to boundary edges.");
+    visit("BoundaryWeight", self.BoundaryWeight, 0.0, 1000.0,
+      "Weight of the boundary planes relative to the surface planes.");
+    visit("PreventFlips", self.PreventFlips, 0.0, 1.0,
+      "Split octree cells whose representative would turn a neighbouring triangle over.");
   }
 };
 

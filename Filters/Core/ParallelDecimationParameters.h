@@ -63,20 +63,35 @@ struct ParallelDecimationParameters
   /// The share of the candidates, least important first, that one round considers.
   double RoundFraction = 0.1;
 
-  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum, help).
   template <class Self, class Visit>
   static void ForEach(Self& self, Visit&& visit)
   {
-    visit("FeatureAngle", self.FeatureAngle, 0.0, 180.0);
-    visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0);
-    visit("ImportanceMeasure", self.Measure, 0.0, 1.0);
-    visit("MoveSurvivors", self.MoveSurvivors, 0.0, 1.0);
-    visit("AccumulateError", self.AccumulateError, 0.0, 1.0);
-    visit("HalfEdgeChoice", self.Choice, 0.0, 1.0);
-    visit("MaximumNormalDeviation", self.MaximumNormalDeviation, 0.0, 180.0);
-    visit("BucketImportance", self.BucketImportance, 1e-6, 1.0);
-    visit("BucketShare", self.BucketShare, 1e-6, 1.0);
-    visit("RoundFraction", self.RoundFraction, 0.001, 1.0);
+    visit("FeatureAngle", self.FeatureAngle, 0.0, 180.0,
+      "An edge whose two triangles' normals differ by more than this angle (degrees) is sharp.");
+    visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0,
+      "A border vertex where the border turns by more than this angle (degrees) is a corner and is kept.");
+    visit("ImportanceMeasure", self.Measure, 0.0, 1.0,
+      "The order of removal: Average Plane (0) or Quadric (1, the default).");
+    visit("MoveSurvivors", self.MoveSurvivors, 0.0, 1.0,
+      "Quadric: after the last round, move each surviving point to the point of least error of the "
+      "planes of the input triangles collapsed into it.");
+    visit("AccumulateError", self.AccumulateError, 0.0, 1.0,
+      "Average Plane: a surviving vertex adds the importance of the vertices collapsed into it, so "
+      "removed error is not forgotten.");
+    visit("HalfEdgeChoice", self.Choice, 0.0, 1.0,
+      "Average Plane: the edge a vertex collapses along, the one of least area change within the normal"
+      " deviation limit (0, the paper's section 5.3) or the shortest legal one (1, section 5.5).");
+    visit("MaximumNormalDeviation", self.MaximumNormalDeviation, 0.0, 180.0,
+      "The largest turn (degrees) a collapse may give a remaining triangle's normal.");
+    visit("BucketImportance", self.BucketImportance, 1e-6, 1.0,
+      "The bucketing function that orders vertices without a sort (paper eq. 5.13): this least "
+      "important fraction a of the importance range fills Bucket Share of the buckets.");
+    visit("BucketShare", self.BucketShare, 1e-6, 1.0,
+      "The share (alpha) of the buckets that the least important Bucket Importance of the range fills, "
+      "so that the many small importances are ordered finely.");
+    visit("RoundFraction", self.RoundFraction, 0.001, 1.0,
+      "The share of the removable vertices, least important first, one round considers.");
   }
 };
 

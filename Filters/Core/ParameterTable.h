@@ -5,8 +5,9 @@
  * PrintSelf, a cache key, the test that the plugin's defaults are the core's.
  *
  * Each parameters struct (OctreeClusteringParameters, ...) lists its settings once, in a static
- * ForEach(parameters, visit) that calls visit(name, member, minimum, maximum) for each, with the
- * name the VTK filter and the plugin give it and the range its setter clamps to. The members are
+ * ForEach(parameters, visit) that calls visit(name, member, minimum, maximum, help) for each,
+ * with the name the VTK filter and the plugin give it, the range its setter clamps to and one
+ * line of help (which the plugin's documentation of the property begins with). The members are
  * numbers, flags or enumerations; these helpers read and write any of them as a double.
  */
 #ifndef MeshSimplification_ParameterTable_h
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -59,35 +61,35 @@ void SetFromNumber(T& member, double value, double minimum, double maximum)
   }
 }
 
-/// How SetParameterByName went.
-enum class SetResult
+/// One setting as a caller that does not know its member's type sees it: its name, value, range
+/// and help, and a setter that clamps to the range and returns the value set.
+struct SettingEntry
 {
-  Unknown, // Table has no setting of that name (or the value is not a finite number)
-  Same,    // the setting already had that value
-  Changed
+  const char* Name;
+  double Value;
+  double Minimum, Maximum;
+  const char* Help;
+  std::function<double(double)> Set;
 };
+using SettingVisit = std::function<void(const SettingEntry&)>;
 
-/// Sets the setting of that name in parameters (Table: the struct whose ForEach lists it).
+/// Calls visit with each setting of parameters (Table: the struct whose ForEach lists them).
 template <class Table>
-SetResult SetParameterByName(Table& parameters, const std::string& name, double value)
+void VisitParameters(Table& parameters, const SettingVisit& visit)
 {
-  SetResult result = SetResult::Unknown;
-  Table::ForEach(parameters, [&](const char* entry, auto& member, double minimum, double maximum) {
-    if (result == SetResult::Unknown && name == entry && std::isfinite(value))
-    {
-      const auto before = member;
-      SetFromNumber(member, value, minimum, maximum);
-      result = member == before ? SetResult::Same : SetResult::Changed;
-    }
+  Table::ForEach(parameters, [&](const char* name, auto& member, double minimum, double maximum, const char* help) {
+    visit(SettingEntry{ name, AsNumber(member), minimum, maximum, help, [&member, minimum, maximum](double value) {
+                         SetFromNumber(member, value, minimum, maximum);
+                         return AsNumber(member);
+                       } });
   });
-  return result;
 }
 
 /// "Name: value" a line for each setting, each line starting with indent (PrintSelf's style).
 template <class Table, class Indent>
 void PrintParameters(const Table& parameters, std::ostream& os, const Indent& indent)
 {
-  Table::ForEach(parameters, [&](const char* entry, const auto& member, double, double) {
+  Table::ForEach(parameters, [&](const char* entry, const auto& member, double, double, const char*) {
     os << indent << entry << ": " << AsNumber(member) << "\n";
   });
 }

@@ -33,14 +33,22 @@ struct ProgressiveMeshParameters
   /// which the caller scales to [0, 1]: a change from black to white costs AttributeWeight.
   double AttributeWeight = 1.0;
 
-  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum, help).
   template <class Self, class Visit>
   static void ForEach(Self& self, Visit&& visit)
   {
-    visit("LengthWeight", self.LengthWeight, 0.0, Unbounded);
-    visit("CurvatureWeight", self.CurvatureWeight, 0.0, Unbounded);
-    visit("QuadricWeight", self.QuadricWeight, 0.0, Unbounded);
-    visit("AttributeWeight", self.AttributeWeight, 0.0, Unbounded);
+    visit("LengthWeight", self.LengthWeight, 0.0, Unbounded,
+      "Weight of a collapse's L1 length, in mean edge lengths (the paper's first term; 0 by default).");
+    visit("CurvatureWeight", self.CurvatureWeight, 0.0, Unbounded,
+      "Weight of the curvature 1 - N1.N2 of the two triangles on a collapse's edge (on an open border, "
+      "of the border's turn): the paper's second term, 0 by default.");
+    visit("QuadricWeight", self.QuadricWeight, 0.0, Unbounded,
+      "Weight of the quadric error (Garland and Heckbert): the squared distances of the new position to"
+      " the planes of the input triangles merged into the removed point, in units of the mean triangle "
+      "area times the squared mean edge length.");
+    visit("AttributeWeight", self.AttributeWeight, 0.0, Unbounded,
+      "Weight of the change of the Attribute Coordinates array: a change from black to white costs as "
+      "much as the quadric error of a mean triangle one mean edge length away, times this.");
   }
 };
 

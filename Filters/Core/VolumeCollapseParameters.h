@@ -42,19 +42,36 @@ struct VolumeCollapseParameters
   /// order. The result depends on this, never on the thread count.
   int BatchSize = 64;
 
-  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum).
+  /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum, help).
   template <class Self, class Visit>
   static void ForEach(Self& self, Visit&& visit)
   {
-    visit("FeatureCurvature", self.FeatureCurvature, 0.0, Unbounded);
-    visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0);
-    visit("MinimumAngle", self.MinimumAngle, 0.0, 30.0);
-    visit("EdgeCollapses", self.EdgeCollapses, 0.0, 1.0);
-    visit("SurfaceErrorWeight", self.SurfaceErrorWeight, 0.0, Unbounded);
-    visit("UseShapeFactor", self.UseShapeFactor, 0.0, 1.0);
-    visit("UseNormalFactor", self.UseNormalFactor, 0.0, 1.0);
-    visit("UseVolumeWeights", self.UseVolumeWeights, 0.0, 1.0);
-    visit("BatchSize", self.BatchSize, 1.0, 4096.0);
+    visit("FeatureCurvature", self.FeatureCurvature, 0.0, Unbounded,
+      "Gauss-curvature threshold of strong features, times the mean triangle area (dimensionless; a "
+      "cube corner scores about 0.1): above it a triangle collapses onto its sharpest corner.");
+    visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0,
+      "A border vertex where the border turns by more than this angle (degrees) is a corner and never "
+      "moves.");
+    visit("MinimumAngle", self.MinimumAngle, 0.0, 30.0,
+      "Angle guard in degrees: no collapse may create an angle below it unless the collapsed "
+      "neighbourhood already had one as small (0: off).");
+    visit("EdgeCollapses", self.EdgeCollapses, 0.0, 1.0,
+      "Let a triangle collapse its cheapest edge instead when that costs under a quarter of the "
+      "triangle's error (beyond the paper).");
+    visit("SurfaceErrorWeight", self.SurfaceErrorWeight, 0.0, Unbounded,
+      "Weight of the surface term of the collapse order (beyond the paper; 0 gives the paper's order by"
+      " volume alone).");
+    visit("UseShapeFactor", self.UseShapeFactor, 0.0, 1.0,
+      "Weight each triangle's volume term by its shape (the paper's shape factor): thin triangles "
+      "become cheap to collapse.");
+    visit("UseNormalFactor", self.UseNormalFactor, 0.0, 1.0,
+      "Weight each triangle's volume term by how much it bends against its neighbours (the paper's "
+      "normal constraint factor).");
+    visit("UseVolumeWeights", self.UseVolumeWeights, 0.0, 1.0,
+      "Make regions that already absorbed much volume change dearer (the paper's constraint weights), "
+      "spreading the error evenly.");
+    visit("BatchSize", self.BatchSize, 1.0, 4096.0,
+      "Collapses made per batch (1: the strict order of the paper's heap).");
   }
 };
 

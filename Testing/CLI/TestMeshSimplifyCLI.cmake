@@ -26,6 +26,13 @@ if (NOT EXISTS "${OUTPUT}")
   message(FATAL_ERROR "no output file ${OUTPUT}")
 endif ()
 
+# --settings: each setting --set takes, with its default, range and line of help.
+run_tool(--method volume --settings)
+if (NOT out MATCHES "\nSurfaceErrorWeight=3000 \\[0, no bound\\]: Weight of the surface term" OR
+    NOT out MATCHES "^PreserveBoundary=0 \\[0, 1\\]: Keep every point")
+  message(FATAL_ERROR "--settings: ${out}")
+endif ()
+
 # The progressive method: one build for several levels, each written to its own file.
 run_tool(--method progressive --levels 0.5,0.9 --json "${INPUT}" "${OUTPUT}.%l.ply")
 string(JSON builds GET "${out}" builds)

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Each registered filter's settings are listed once, in its core parameters' table (ForEach): the
 // plugin's XML gives each of them as a property of the filter's proxy with the core's default and,
-// where it has a range, the table's range; SetSettingByName knows each name, and no other.
+// where it has a range, the table's range; SetSettingByName knows each name, and no other; and
+// the documentation of each setting's property, the filter's own or a common one, begins with
+// the setting's line of help.
 #include "MeshSimplificationFilterList.h"
 #include "OctreeClusteringParameters.h"
 #include "ParallelDecimationParameters.h"
@@ -20,6 +22,7 @@
 #include "TestBadInput.h"
 
 #include <cstdlib>
+#include <sstream>
 #include <string>
 
 namespace
@@ -72,17 +75,56 @@ void DomainRange(vtkXMLDataElement* property, double& minimum, double& maximum)
   }
 }
 
+/// The proxy of that name in the plugin's XML file (parsed by parser), or nullptr.
+vtkXMLDataElement* Proxy(vtkXMLDataParser* parser, const char* file, const char* proxyName)
+{
+  parser->SetFileName((std::string(MESHSIMPLIFICATION_PLUGIN_XML) + "/" + file).c_str());
+  CHECK(parser->Parse() == 1);
+  vtkXMLDataElement* group = parser->GetRootElement() ? parser->GetRootElement()->FindNestedElementWithName("ProxyGroup") : nullptr;
+  return group ? group->FindNestedElementWithNameAndAttribute("SourceProxy", "name", proxyName) : nullptr;
+}
+
+/// A property's documentation with its runs of white space made single spaces.
+std::string Documentation(vtkXMLDataElement* property)
+{
+  vtkXMLDataElement* documentation = property ? property->FindNestedElementWithName("Documentation") : nullptr;
+  std::string text, word;
+  std::istringstream words(documentation && documentation->GetCharacterData() ? documentation->GetCharacterData() : "");
+  while (words >> word)
+  {
+    text += (text.empty() ? "" : " ") + word;
+  }
+  return text;
+}
+
+void CheckHelp(const char* file, const char* proxyName, vtkMeshSimplificationFilter* filter)
+{
+  vtkNew<vtkXMLDataParser> own, common;
+  vtkXMLDataElement* proxy = Proxy(own, file, proxyName);
+  vtkXMLDataElement* base = Proxy(common, "MeshSimplificationFilter.xml", "MeshSimplificationFilter");
+  int settings = 0;
+  filter->ForEachSetting([&](const meshsimp::SettingEntry& entry) {
+    ++settings;
+    vtkXMLDataElement* property = Property(proxy, entry.Name);
+    const std::string documentation = Documentation(property ? property : Property(base, entry.Name));
+    if (documentation.compare(0, std::string(entry.Help).size(), entry.Help) != 0)
+    {
+      std::printf("%s %s: the documentation does not begin with the help line\n  %s\n  %s\n", proxyName, entry.Name,
+        documentation.c_str(), entry.Help);
+      CHECK(false);
+    }
+  });
+  CHECK(settings > 6);
+}
+
 template <class Table>
 void CheckTable(const char* file, const char* proxyName, vtkMeshSimplificationFilter* filter)
 {
   vtkNew<vtkXMLDataParser> parser;
-  parser->SetFileName((std::string(MESHSIMPLIFICATION_PLUGIN_XML) + "/" + file).c_str());
-  CHECK(parser->Parse() == 1);
-  vtkXMLDataElement* group = parser->GetRootElement() ? parser->GetRootElement()->FindNestedElementWithName("ProxyGroup") : nullptr;
-  vtkXMLDataElement* proxy = group ? group->FindNestedElementWithNameAndAttribute("SourceProxy", "name", proxyName) : nullptr;
+  vtkXMLDataElement* proxy = Proxy(parser, file, proxyName);
   CHECK(proxy != nullptr);
   const Table defaults{};
-  Table::ForEach(defaults, [&](const char* name, const auto& member, double minimum, double maximum) {
+  Table::ForEach(defaults, [&](const char* name, const auto& member, double minimum, double maximum, const char*) {
     vtkXMLDataElement* property = Property(proxy, name);
     double xmlDefault = -1e300;
     if (!property || !property->GetScalarAttribute("default_values", xmlDefault) ||
@@ -109,7 +151,8 @@ void CheckTable(const char* file, const char* proxyName, vtkMeshSimplificationFi
 int TestParameterTables(int, char*[])
 {
 #define MESHSIMPLIFICATION_CHECK(name, method, parameters, tolerance, blends, alias)                \
-  CheckTable<meshsimp::parameters>(#name ".xml", #name, vtkSmartPointer<vtk##name>::New());
+  CheckTable<meshsimp::parameters>(#name ".xml", #name, vtkSmartPointer<vtk##name>::New());           \
+  CheckHelp(#name ".xml", #name, vtkSmartPointer<vtk##name>::New());
   MESHSIMPLIFICATION_FILTERS(MESHSIMPLIFICATION_CHECK)
 #undef MESHSIMPLIFICATION_CHECK
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
