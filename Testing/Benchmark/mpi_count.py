@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Each filter's count and distance under MPI: a closed iso-surface cut between 1, 2 and 4 processes.
 
-  python3 mpi_count.py --metro KIT_BUILD/metro [--ranks 1 2 4] [--count 318]
+  python3 mpi_count.py --metro KIT_BUILD/metro [--ranks 1 2 4] [--extent 20] [--count 318]
       [--plugin build/lib/paraview-5.11/plugins/MeshSimplification/MeshSimplification.so]
 
-The surface is ParaView's Wavelet (extent -20..20) contoured at 200 and triangulated: 15 884
-triangles in one closed surface; each process contours its own piece. Each filter is asked for
+The surface is ParaView's Wavelet (extent -EXTENT..EXTENT, 20 by default) contoured at 200 and
+triangulated: 15 884 triangles in one closed surface at extent 20; each process contours its own
+piece. Each filter is asked for
 COUNT triangles (98 % by default); its pieces are written in parallel (.pvtp), merged here
 (vtkCleanPolyData, exact coordinates), and compared with the whole input by the kit's metro
 (two-sided RMS). Per run: the triangles, their distance from the count, the open or shared edges
@@ -24,9 +25,9 @@ import os, sys
 from paraview.simple import *
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 LoadPlugin(sys.argv[1], ns=globals())
-out, count = sys.argv[2], int(sys.argv[3])
+out, count, extent = sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
 ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
-iso = Triangulate(Input=Contour(Input=Wavelet(WholeExtent=[-20, 20, -20, 20, -20, 20]),
+iso = Triangulate(Input=Contour(Input=Wavelet(WholeExtent=[-extent, extent] * 3),
                                 ContourBy=["POINTS", "RTData"], Isosurfaces=[200.0], ComputeScalars=0))
 SaveData(os.path.join(out, "input_%d.pvtp" % ranks), proxy=ExtractSurface(Input=iso))
 for name in FILTERS_HERE:
@@ -59,6 +60,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--metro", required=True)
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2, 4])
+    parser.add_argument("--extent", type=int, default=20)
     parser.add_argument("--count", type=int, default=318)
     parser.add_argument("--plugin", default=os.path.join(HERE, "..", "..", "build", "lib", "paraview-5.11", "plugins",
                                                          "MeshSimplification", "MeshSimplification.so"))
@@ -81,7 +83,7 @@ def main():
         print("|---|---|---|---|---|---|---|")
         for ranks in args.ranks:
             subprocess.run(["mpiexec", "-n", str(ranks), "pvbatch", "--force-offscreen-rendering", run,
-                            os.path.abspath(args.plugin), out, str(args.count)],
+                            os.path.abspath(args.plugin), out, str(args.count), str(args.extent)],
                            env=env, check=True, capture_output=True)
             reference = merged("input_1")[2] if os.path.exists(os.path.join(out, "input_1.pvtp")) else None
             for name in FILTERS:
