@@ -644,7 +644,7 @@ MESHSIMP_RARE_PATH bool CollapseMesh::StaysOnHinges(const CollapsePlan& plan) co
     {
       continue;
     }
-    if (this->TrianglesOnEdge(kept, plan.Vertices[i]) < 3)
+    if (!IsOwnEdge(VertexClass::Hinge, this->TrianglesOnEdge(kept, plan.Vertices[i])))
     {
       return false;
     }

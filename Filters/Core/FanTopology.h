@@ -2,8 +2,9 @@
 /**
  * @file FanTopology.h
  * @brief What kind of vertex a vertex is, from the triangles around it: one closed fan, one open
- * fan, inside a hinge, or anything else. The collapse engine classifies its vertices with it, and
- * the octree tests its clusters' surfaces.
+ * fan, inside a hinge, or anything else; and where a half-edge collapse may take it, by the
+ * classes of its two ends (HalfEdgeRules). The collapse engine and Progressive Mesh classify
+ * their vertices with it, and the octree tests its clusters' surfaces.
  */
 #ifndef MeshSimplification_FanTopology_h
 #define MeshSimplification_FanTopology_h
@@ -25,6 +26,48 @@ enum class VertexClass : std::uint8_t
   Hinge,      // inside a hinge: a chain of edges of k >= 3 triangles each (see IsHinge)
   NonManifold // anything else: several fans, a hinge's end or turn, inconsistent orientation
 };
+
+/// What a half-edge collapse may do by the classes of its two vertices: never; only along an
+/// edge of the removed vertex's own kind (Boundary: an open border edge, of one triangle; Hinge:
+/// a hinge edge, of three or more), so that a border or hinge only loses vertices, like a
+/// polyline; or freely, the collapse engine's other checks deciding.
+enum class CollapseRule : std::uint8_t
+{
+  Never,
+  AlongEdge,
+  Free
+};
+
+/**
+ * The rule of a half-edge collapse that removes a vertex of the row's class into a neighbour of
+ * the column's (after meshoptimizer's kCanCollapse): an interior vertex goes anywhere; a border
+ * vertex along the border (never into the interior, which would pull the border in); a hinge
+ * vertex along the hinge; a corner or a non-manifold vertex nowhere. A locked vertex is removed
+ * by no rule, whatever its class. A filter's own rules come on top (features, regions).
+ */
+constexpr CollapseRule HalfEdgeRules[5][5] = {
+  // kept: Interior         Boundary               Corner                 Hinge                  NonManifold
+  { CollapseRule::Free, CollapseRule::Free, CollapseRule::Free, CollapseRule::Free, CollapseRule::Free },       // Interior
+  { CollapseRule::Never, CollapseRule::AlongEdge, CollapseRule::AlongEdge, CollapseRule::AlongEdge,
+    CollapseRule::AlongEdge },                                                                                    // Boundary
+  { CollapseRule::Never, CollapseRule::Never, CollapseRule::Never, CollapseRule::Never, CollapseRule::Never },   // Corner
+  { CollapseRule::Never, CollapseRule::Never, CollapseRule::Never, CollapseRule::AlongEdge,
+    CollapseRule::AlongEdge },                                                                                    // Hinge
+  { CollapseRule::Never, CollapseRule::Never, CollapseRule::Never, CollapseRule::Never, CollapseRule::Never },   // NonManifold
+};
+
+/// HalfEdgeRules for a collapse of removed into kept.
+constexpr CollapseRule HalfEdgeRule(VertexClass removed, VertexClass kept)
+{
+  return HalfEdgeRules[static_cast<int>(removed)][static_cast<int>(kept)];
+}
+
+/// Whether an edge of that many triangles is one a vertex of the class may collapse along
+/// (CollapseRule::AlongEdge): one for a Boundary vertex, three or more for a Hinge vertex.
+constexpr bool IsOwnEdge(VertexClass removed, int triangles)
+{
+  return removed == VertexClass::Boundary ? triangles == 1 : removed == VertexClass::Hinge && triangles >= 3;
+}
 
 /// ClassifyFan's working memory: reuse one per thread, it keeps its allocations.
 struct FanWorkspace

@@ -19,23 +19,6 @@ namespace meshsimp
 namespace
 {
 
-/// A vertex's kind, fixed by the input: a closed fan, one open fan along a border, or neither
-/// (locked, on a non-manifold edge, pinched, or where the orientation flips).
-enum Kind : std::uint8_t
-{
-  Interior,
-  Border,
-  Fixed
-};
-
-/// May a vertex of the row's kind move onto one of the column's (§7: border vertices never
-/// collapse into interior ones; fixed vertices never move)?
-constexpr bool KindAllows[3][3] = {
-  { true, true, true },   // Interior
-  { false, true, true },  // Border
-  { false, false, false } // Fixed
-};
-
 /// What the build reads and writes of a vertex at every visit, side by side: a ring gather
 /// touches one cache line per neighbour, not one per array.
 struct VertexState
@@ -44,9 +27,8 @@ struct VertexState
   std::int32_t Triangles = 0; // live triangles at the vertex
   std::uint32_t Stamp = 0;    // the last gather or mark that met the vertex (one counter)
   std::int32_t Slot = 0;      // its entry in the ring of that gather
-  std::uint8_t Kind = Interior;
-  std::uint8_t Fan = Interior; // the kind of the fan alone: closed fans keep three triangles, locked or not
-  std::uint8_t Lock = 0;       // why it is Fixed, as a LockReason (0: not locked)
+  VertexClass Class = VertexClass::Interior; // of its fan, fixed by the input (never Corner nor Hinge)
+  std::uint8_t Lock = 0; // why it never moves, as a LockReason (0: it may; NonManifold for a fan that is not one)
 };
 
 /// (k + 1) % 3 at k and (k + 2) % 3 at k + 1, for the corners after corner k of a triangle.
@@ -209,7 +191,7 @@ std::string ProgressiveBuilder::DescribeCoarsest()
       continue;
     }
     ++left;
-    if (this->Vertices[x].Kind == Fixed)
+    if (this->Vertices[x].Lock)
     {
       ++locked;
       ++lockedBy[LockIndex(static_cast<LockReason>(this->Vertices[x].Lock))];
@@ -261,11 +243,10 @@ void ProgressiveBuilder::Prepare(PreparedMesh& prepared)
   {
     std::int32_t opening = -1, closing = -1;
     const VertexClass fan = ClassifyFan(mesh.Adjacency.Begin(v), mesh.Adjacency.End(v), opening, closing, fanWork);
-    this->Vertices[v].Fan = fan == VertexClass::Interior ? Interior : fan == VertexClass::Boundary ? Border : Fixed;
-    this->Vertices[v].Kind = prepared.Locks[v] ? static_cast<std::uint8_t>(Fixed) : this->Vertices[v].Fan;
+    this->Vertices[v].Class = fan;
     const LockReason lock = prepared.Locks[v] == SharedPointLock ? LockReason::SharedPoint
       : prepared.Locks[v]                                       ? LockReason::Options
-      : this->Vertices[v].Fan == Fixed                          ? LockReason::NonManifold
+      : fan == VertexClass::NonManifold                         ? LockReason::NonManifold
                                                                 : LockReason{};
     this->Vertices[v].Lock = static_cast<std::uint8_t>(lock);
   }
@@ -399,19 +380,23 @@ void ProgressiveBuilder::GatherRing(std::int32_t x)
 CollapseCheck ProgressiveBuilder::RingCheck(std::int32_t x, const RingEntry& entry) const
 {
   // The first three checks, which need nothing but the ring (so every candidate is filtered by
-  // them before it is costed): the kind table, the regions, a border vertex only along its border.
-  // Named as the collapse engine names its checks (CollapseCheck): a fixed vertex fails its locks,
-  // a border vertex into the interior or across it the link condition.
+  // them before it is costed): the locks and the classes' rule (HalfEdgeRules), the regions, a
+  // border vertex only along its border. Named as the collapse engine names its checks
+  // (CollapseCheck): a locked vertex fails its locks, a border vertex into the interior or across
+  // it the link condition.
   const std::int32_t y = entry.Vertex;
-  if (!KindAllows[this->Vertices[x].Kind][this->Vertices[y].Kind])
+  const VertexClass removed = this->Vertices[x].Class;
+  const CollapseRule rule = HalfEdgeRule(removed, this->Vertices[y].Class);
+  if (this->Vertices[x].Lock || rule == CollapseRule::Never)
   {
-    return this->Vertices[x].Kind == Fixed ? CollapseCheck::Locks : CollapseCheck::LinkCondition;
+    return this->Vertices[x].Lock ? CollapseCheck::Locks : CollapseCheck::LinkCondition;
   }
   if (!this->Regions.empty() && this->Regions[x] != this->Regions[y])
   {
     return CollapseCheck::Regions;
   }
-  return this->Vertices[x].Kind == Border && entry.Count != 1 ? CollapseCheck::LinkCondition : CollapseCheck::Passed;
+  return rule == CollapseRule::AlongEdge && !IsOwnEdge(removed, entry.Count) ? CollapseCheck::LinkCondition
+                                                                             : CollapseCheck::Passed;
 }
 
 double ProgressiveBuilder::Curvature(std::int32_t x, const RingEntry& entry) const
@@ -483,7 +468,7 @@ void ProgressiveBuilder::Measure(std::int32_t x, bool gathered)
 {
   // Step 2: the vertex's cost is its cheapest allowed edge's; fixed vertices never queue.
   const RingEntry* cheapest = nullptr;
-  if (this->Vertices[x].Kind != Fixed && this->Vertices[x].Triangles > 0)
+  if (!this->Vertices[x].Lock && this->Vertices[x].Triangles > 0)
   {
     if (!gathered)
     {
@@ -578,7 +563,10 @@ CollapseCheck ProgressiveBuilder::Check(std::int32_t x, const RingEntry& entry)
   {
     return CollapseCheck::SharedEdges;
   }
-  const auto keeps = [&](std::int32_t v, std::int32_t remaining) { return remaining >= (this->Vertices[v].Fan == Interior ? 3 : 1); };
+  // A closed fan keeps three triangles, locked or not.
+  const auto keeps = [&](std::int32_t v, std::int32_t remaining) {
+    return remaining >= (this->Vertices[v].Class == VertexClass::Interior ? 3 : 1);
+  };
   if (!keeps(y, this->Vertices[y].Triangles + this->Vertices[x].Triangles - 2 * entry.Count) ||
     (opposite[0] >= 0 && !keeps(opposite[0], this->Vertices[opposite[0]].Triangles - 1)) ||
     (opposite[1] >= 0 && !keeps(opposite[1], this->Vertices[opposite[1]].Triangles - 1)))
@@ -739,7 +727,7 @@ void ProgressiveBuilder::Collapse(std::int32_t x, std::int32_t y)
   this->Affected.clear();
   for (const RingEntry& entry : this->Ring)
   {
-    if (!this->Heap.Contains(entry.Vertex) && this->Vertices[entry.Vertex].Kind != Fixed)
+    if (!this->Heap.Contains(entry.Vertex) && !this->Vertices[entry.Vertex].Lock)
     {
       this->Affected.push_back(entry.Vertex);
     }
