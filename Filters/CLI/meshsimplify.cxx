@@ -13,11 +13,7 @@
 // replaced by the reduction; the JSON then has build_ms and each level's extract_ms.
 // --settings lists the method's settings for --set with their defaults, ranges and help.
 #include "MeshFiles.h"
-#include "MeshSimplificationFilterList.h"
-#include "vtkOctreeVertexClustering.h"
-#include "vtkParallelDecimation.h"
-#include "vtkProgressiveMesh.h"
-#include "vtkVolumeTriangleCollapse.h"
+#include "MeshSimplificationFilters.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"

@@ -2,12 +2,8 @@
 // Baseline images of the filters: the cow at 90 % reduction (flat shading with edges) and the
 // Jacksboro terrain at 95 % coloured by the carried elevation array.
 //   TestFilterImage <a registered filter's Name> Cow|Terrain -V baseline.png -T temporary/
-#include "MeshSimplificationFilterList.h"
+#include "MeshSimplificationFilters.h"
 #include "vtkOFFMeshReader.h"
-#include "vtkOctreeVertexClustering.h"
-#include "vtkParallelDecimation.h"
-#include "vtkProgressiveMesh.h"
-#include "vtkVolumeTriangleCollapse.h"
 
 #include "vtkNew.h"
 #include "vtkXMLPolyDataReader.h"

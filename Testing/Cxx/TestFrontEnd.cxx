@@ -4,11 +4,7 @@
 // composite blocks, blocks that are not polygonal passed through, surfaces of other datasets, 3-D
 // cells refused, the Deviation array, the error reported in the bound's units, zero-width cracks
 // closed unless point data differ, and the original ids.
-#include "MeshSimplificationFilterList.h"
-#include "vtkOctreeVertexClustering.h"
-#include "vtkParallelDecimation.h"
-#include "vtkProgressiveMesh.h"
-#include "vtkVolumeTriangleCollapse.h"
+#include "MeshSimplificationFilters.h"
 
 #include "vtkAppendFilter.h"
 #include "vtkCellArray.h"

@@ -4,15 +4,7 @@
 // where it has a range, the table's range; SetSettingByName knows each name, and no other; and
 // the documentation of each setting's property, the filter's own or a common one, begins with
 // the setting's line of help.
-#include "MeshSimplificationFilterList.h"
-#include "OctreeClusteringParameters.h"
-#include "ParallelDecimationParameters.h"
-#include "ProgressiveMeshParameters.h"
-#include "VolumeCollapseParameters.h"
-#include "vtkOctreeVertexClustering.h"
-#include "vtkParallelDecimation.h"
-#include "vtkProgressiveMesh.h"
-#include "vtkVolumeTriangleCollapse.h"
+#include "MeshSimplificationFilters.h"
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
