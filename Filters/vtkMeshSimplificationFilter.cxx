@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <sstream>
 
@@ -194,16 +195,30 @@ struct vtkMeshSimplificationFilter::PieceRun
   PieceCall Call(const Piece& piece, std::size_t i) const
   {
     return PieceCall{ i, piece.Input, piece.Triangles, piece.Triangles.View, this->Options, this->Execution,
-      piece.Output, this->SharesBorders };
+      piece.Output, this->SharesBorders, false };
   }
 };
+
+namespace
+{
+/// Whether the execution has a border round to wait for: pieces that share points, under a count.
+bool HasBorderRound(const vtkSimplification::InputPieces& run, int targetMode)
+{
+  return run.Shared && targetMode != vtkMeshSimplificationFilter::TARGET_MAXIMUM_ERROR &&
+    std::any_of(run.Pieces.begin(), run.Pieces.end(), [](const vtkSimplification::Piece& piece) {
+      return std::find(piece.Locks.begin(), piece.Locks.end(), meshsimp::SharedPointLock) != piece.Locks.end();
+    });
+}
+}
 
 int vtkMeshSimplificationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   // The pieces, read once; what they share (collective under MPI, so every process gets here
   // whatever it holds); each piece's core; the borders between pieces (collective too); then
-  // each piece's output. The cores take the progress up to the deviation's share.
+  // each piece's output: at once where no border round is to come (so that a piece's result is
+  // not kept beyond its output), else after it. The cores take the progress up to the
+  // deviation's share, per piece or for all the pieces.
   this->AchievedMaximumError = 0.0;
   vtkSimplification::InputPieces run;
   std::string problem;
@@ -219,14 +234,22 @@ int vtkMeshSimplificationFilter::RequestData(
   vtkSimplification::PreparePieces(this, run);
   const double count = static_cast<double>(run.Pieces.size());
   const double coreShare = this->ComputeDeviation ? 0.8 : 1.0;
+  const bool waits = HasBorderRound(run, this->TargetMode);
   std::vector<PieceRun> states(run.Pieces.size());
+  BorderTotals borders;
   for (std::size_t i = 0; i < run.Pieces.size() && !this->GetAbortExecute(); ++i)
   {
-    this->SetProgressShiftScale(coreShare * static_cast<double>(i) / count, coreShare / count);
+    const double slot = static_cast<double>(i) / count;
+    this->SetProgressShiftScale(waits ? coreShare * slot : slot, coreShare / count);
     this->RunPiece(run, i, states[i]);
+    if (!waits)
+    {
+      this->SetProgressShiftScale(slot + coreShare / count, (1.0 - coreShare) / count);
+      this->FinishPiece(run, i, states[i], borders);
+    }
   }
-  const BorderTotals borders = this->SimplifyBorders(run, states);
-  for (std::size_t i = 0; i < run.Pieces.size(); ++i)
+  borders = this->SimplifyBorders(run, states);
+  for (std::size_t i = 0; i < run.Pieces.size() && waits; ++i)
   {
     this->SetProgressShiftScale(coreShare + (1.0 - coreShare) * static_cast<double>(i) / count, (1.0 - coreShare) / count);
     this->FinishPiece(run, i, states[i], borders);
@@ -261,7 +284,7 @@ void vtkMeshSimplificationFilter::RunPiece(vtkSimplification::InputPieces& run, 
   piece.SharedLocks = std::count(piece.Locks.begin(), piece.Locks.end(), meshsimp::SharedPointLock);
   if (vtkAbstractArray* array = vtkSimplification::SelectedPointArray(this, 0, piece.Input, "Locked Points"))
   {
-    piece.UserLocks = vtkSimplification::ReadLockedPoints(array, piece.Locks);
+    piece.UserLocks = vtkSimplification::ReadLockedPoints(array, piece.Locks, piece.UserLocked);
     piece.LockArray = std::string("'") + (array->GetName() ? array->GetName() : "") + "'";
   }
   options.LockedPoints = piece.Locks.empty() ? nullptr : piece.Locks.data();
@@ -343,7 +366,7 @@ vtkMeshSimplificationFilter::BorderTotals vtkMeshSimplificationFilter::SimplifyB
     removals += state.Ran && state.SharesBorders ? static_cast<double>(state.BorderRemovals) : 0.0;
   }
   std::int64_t count = std::llround(vtkSimplification::SumOverProcesses(removals));
-  for (int round = 0; round < MaximumBorderRounds && count > 0; ++round)
+  for (int round = 0; round < MaximumBorderRounds && (round == 0 || count > 0); ++round)
   {
     const std::int64_t removed = this->ThinBorders(run, states, count);
     double local[2] = { 0.0, 0.0 };
@@ -369,14 +392,21 @@ std::int64_t vtkMeshSimplificationFilter::ThinBorders(
   vtkSimplification::InputPieces& run, std::vector<PieceRun>& states, std::int64_t count)
 {
   std::vector<meshsimp::PieceBorders> sides;
+  std::deque<std::vector<std::uint8_t>> locks; // (a deque: the sides keep pointers to them)
   sides.reserve(states.size());
   for (std::size_t i = 0; i < states.size(); ++i)
   {
     PieceRun& state = states[i];
     if (state.Ran && state.SharesBorders)
     {
+      // The shared points the round may remove: not those the user locked too.
       const Piece& piece = run.Pieces[i];
-      sides.emplace_back(state.Mesh, piece.Triangles.View, piece.Locks.data(), state.Options.Regions,
+      std::vector<std::uint8_t>& movable = locks.emplace_back(piece.Locks);
+      for (std::size_t p = 0; p < piece.UserLocked.size(); ++p)
+      {
+        movable[p] = piece.UserLocked[p] ? 1 : movable[p];
+      }
+      sides.emplace_back(state.Mesh, piece.Triangles.View, movable.data(), state.Options.Regions,
         static_cast<double>(piece.Key));
     }
   }
@@ -417,10 +447,11 @@ bool vtkMeshSimplificationFilter::Resimplify(const Piece& piece, std::size_t i, 
   options.CloseCracks = false;
   options.SamePointData = nullptr;
   const meshsimp::TriangleMeshView mesh{ first.Points.data(), points, first.Triangles.data(), first.NumberOfTriangles() };
-  const PieceCall call{ i, piece.Input, piece.Triangles, mesh, options, state.Execution, piece.Output, true };
+  const PieceCall call{ i, piece.Input, piece.Triangles, mesh, options, state.Execution, piece.Output, true, true };
   meshsimp::SimplifiedMesh second;
   if (!this->RunCore(call, second))
   {
+    vtkWarningMacro(<< "Aborted: the output is empty.");
     first = meshsimp::SimplifiedMesh();
     return false;
   }
@@ -429,7 +460,7 @@ bool vtkMeshSimplificationFilter::Resimplify(const Piece& piece, std::size_t i, 
 }
 
 void vtkMeshSimplificationFilter::FinishPiece(
-  vtkSimplification::InputPieces& run, std::size_t i, PieceRun& state, const BorderTotals& borders)
+  vtkSimplification::InputPieces& run, std::size_t i, PieceRun& state, BorderTotals& borders)
 {
   const Piece& piece = run.Pieces[i];
   if (!piece.Readable)
@@ -533,7 +564,7 @@ bool vtkMeshSimplificationFilter::AddDeviation(const PieceCall& piece, const mes
 }
 
 void vtkMeshSimplificationFilter::WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t i,
-  const PieceRun& state, const BorderTotals& borders)
+  const PieceRun& state, BorderTotals& borders)
 {
   // The count's miss first, with its reason, then what the algorithm changed to get there, then
   // what it left out of the input. Pieces that share borders are judged together.
@@ -543,7 +574,9 @@ void vtkMeshSimplificationFilter::WarnAboutOutcome(const vtkSimplification::Inpu
   const std::int64_t target = state.SharesBorders ? std::llround(borders.Target) : report.TargetTriangles;
   const std::int64_t slack = std::max<std::int64_t>(1, static_cast<std::int64_t>(this->TargetTolerance * static_cast<double>(target)));
   const bool missed = this->TargetMode != TARGET_MAXIMUM_ERROR && std::abs(count - target) > slack;
-  if (missed || report.Stop == meshsimp::StopReason::AllLocked)
+  const bool said = state.SharesBorders && borders.Warned; // the pieces' total is said once
+  borders.Warned = borders.Warned || (state.SharesBorders && (missed || report.Stop == meshsimp::StopReason::AllLocked));
+  if (!said && (missed || report.Stop == meshsimp::StopReason::AllLocked))
   {
     std::string reason = report.Stop == meshsimp::StopReason::AllLocked ? LockNote(run.Pieces[i], report, this->PreserveBoundary)
       : !report.Reason.empty() ? report.Reason

@@ -268,6 +268,8 @@ protected:
     /// the core runs again on the result (Mesh) to the share with the thinned border locked:
     /// RunCore gives whole meshes, and WritePiece and AddDeviation get the last.
     bool SharesBorders;
+    /// Mesh is the piece's first result (that last stage), not its triangles.
+    bool OnFirstResult;
   };
 
   /**
@@ -333,6 +335,7 @@ private:
   struct BorderTotals
   {
     double Triangles = 0.0, Target = 0.0;
+    bool Warned = false; // a miss of the total is said once
   };
 
   bool CheckTarget();
@@ -344,9 +347,9 @@ private:
   bool Resimplify(const vtkSimplification::Piece& piece, std::size_t i, PieceRun& state);
   /// How many times the border round and the pieces' last stage alternate at most.
   static constexpr int MaximumBorderRounds = 3;
-  void FinishPiece(vtkSimplification::InputPieces& run, std::size_t piece, PieceRun& state, const BorderTotals& borders);
+  void FinishPiece(vtkSimplification::InputPieces& run, std::size_t piece, PieceRun& state, BorderTotals& borders);
   void WarnAboutOutcome(const vtkSimplification::InputPieces& run, std::size_t piece, const PieceRun& state,
-    const BorderTotals& borders);
+    BorderTotals& borders);
 };
 
 #endif

@@ -352,7 +352,7 @@ bool vtkProgressiveMesh::RunCore(const PieceCall& piece, meshsimp::SimplifiedMes
   // The piece's sequence: read from a sequence given as input, cached, or built; then the level
   // the target picks. The border round's last stage, on the piece's first result, builds a
   // sequence of its own that is not kept (weighing geometry alone).
-  if (&piece.Mesh != &piece.Triangles.View)
+  if (piece.OnFirstResult)
   {
     meshsimp::ProgressiveMeshOptions options;
     static_cast<meshsimp::SimplificationOptions&>(options) = piece.Common;

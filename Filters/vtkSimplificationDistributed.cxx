@@ -57,7 +57,6 @@ void ReduceOverProcesses(std::vector<double>& values, int operation)
 }
 }
 
-
 bool IsDistributed()
 {
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();

@@ -332,10 +332,11 @@ vtkAbstractArray* SelectedPointArray(vtkAlgorithm* filter, int index, vtkPolyDat
   return array;
 }
 
-std::int64_t ReadLockedPoints(vtkAbstractArray* array, std::vector<std::uint8_t>& locks)
+std::int64_t ReadLockedPoints(vtkAbstractArray* array, std::vector<std::uint8_t>& locks, std::vector<std::uint8_t>& userLocked)
 {
   const vtkIdType n = array->GetNumberOfTuples();
   locks.resize(static_cast<std::size_t>(n), 0); // keeps the locks already set
+  userLocked.assign(static_cast<std::size_t>(n), 0);
   auto* values = vtkDataArray::SafeDownCast(array);
   std::int64_t locked = 0;
   for (vtkIdType i = 0; i < n && values; ++i)
@@ -343,6 +344,7 @@ std::int64_t ReadLockedPoints(vtkAbstractArray* array, std::vector<std::uint8_t>
     if (values->GetComponent(i, 0) != 0.0)
     {
       locks[i] = locks[i] == 0 ? 1 : locks[i];
+      userLocked[i] = 1;
       ++locked;
     }
   }

@@ -79,8 +79,9 @@ bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input,
 vtkAbstractArray* SelectedPointArray(vtkAlgorithm* filter, int index, vtkPolyData* input, const char* purpose);
 
 /// User-chosen locks: flags set where the array's first component is nonzero (flags already
-/// set stay set; locks grows to the array's tuples). Returns the number of nonzero values.
-std::int64_t ReadLockedPoints(vtkAbstractArray* array, std::vector<std::uint8_t>& locks);
+/// set stay set; locks grows to the array's tuples), and userLocked set to 1 there (0 elsewhere).
+/// Returns the number of nonzero values.
+std::int64_t ReadLockedPoints(vtkAbstractArray* array, std::vector<std::uint8_t>& locks, std::vector<std::uint8_t>& userLocked);
 
 /// Attribute regions: one id per point, equal where the array's tuples are equal.
 std::vector<std::int32_t> ReadRegions(vtkAbstractArray* array);

@@ -4,7 +4,6 @@
 #include "Deviation.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -200,7 +199,6 @@ PieceBorders::PieceBorders(SimplifiedMesh& mesh, const TriangleMeshView& input, 
   this->Edited.Build(std::move(compact));
   this->Edited.SetRegions(std::move(vertexRegions));
   this->Edited.TrackMerges();
-  this->Marks.assign(n, 0);
 }
 
 void PieceBorders::Describe(std::vector<double>& places, std::vector<double>& edges) const
@@ -297,68 +295,65 @@ void PieceBorders::Price(const SharedCurves& curves, std::vector<double>& costs)
   const std::vector<std::int32_t>& removable = curves.Removable();
   for (std::size_t k = 0; k < removable.size(); ++k)
   {
-    if (this->CurveVertex[removable[k]] >= 0)
+    const std::int32_t x = this->CurveVertex[removable[k]];
+    const std::array<std::int32_t, 2>& ends = curves.Ends(removable[k]);
+    const std::int32_t p = this->CurveVertex[ends[0]], n = this->CurveVertex[ends[1]];
+    double cost = -Infinite;
+    if (x >= 0)
     {
       CollapsePlan plan;
-      double cost = Infinite;
       this->BestRemoval(curves, removable[k], plan, cost);
-      costs[k] = std::max(costs[k], cost);
     }
+    else if (p >= 0 && n >= 0 && this->Edited.TrianglesOnEdge(p, n) > 0)
+    {
+      cost = Infinite; // the curve's new edge p-n would be this piece's too
+    }
+    costs[k] = std::max(costs[k], cost);
   }
 }
 
 void PieceBorders::Claim(const SharedCurves& curves, const std::vector<std::int32_t>& chosen, std::vector<double>& accepted)
 {
-  // A removal reads and changes the triangles around its two vertices and their neighbours:
-  // one whose vertices' triangles touch an accepted one's waits for a later round.
-  ++this->Stamp;
-  std::vector<std::int32_t> touched;
   for (std::size_t k = 0; k < chosen.size(); ++k)
   {
-    CollapsePlan plan;
-    double cost = Infinite;
-    if (this->CurveVertex[chosen[k]] < 0)
+    if (accepted[k] == 0.0 || this->CurveVertex[chosen[k]] < 0)
     {
       continue;
     }
+    CollapsePlan plan;
+    double cost = Infinite;
     if (!this->BestRemoval(curves, chosen[k], plan, cost))
     {
       accepted[k] = 0.0;
       continue;
     }
-    touched.clear();
-    for (int i = 0; i < 2; ++i)
-    {
-      this->Edited.ForEachTriangle(plan.Vertices[i], [&](std::int32_t t) {
-        const std::int32_t* tri = this->Edited.Triangle(t);
-        touched.insert(touched.end(), tri, tri + 3);
-      });
-    }
-    if (std::any_of(touched.begin(), touched.end(), [this](std::int32_t v) { return this->Marks[v] == this->Stamp; }))
-    {
-      accepted[k] = 0.0;
-      continue;
-    }
-    for (const std::int32_t v : touched)
-    {
-      this->Marks[v] = this->Stamp;
-    }
+    this->Edited.Apply(plan, true);
+    this->Tentative.push_back(k);
   }
 }
 
-void PieceBorders::Remove(const SharedCurves& curves, const std::vector<std::int32_t>& agreed)
+bool PieceBorders::Agrees(const std::vector<double>& accepted) const
 {
-  for (const std::int32_t point : agreed)
+  return std::all_of(this->Tentative.begin(), this->Tentative.end(), [&](std::size_t k) { return accepted[k] != 0.0; });
+}
+
+void PieceBorders::Revert()
+{
+  for (std::size_t i = 0; i < this->Tentative.size(); ++i)
   {
-    CollapsePlan plan;
-    double cost = Infinite;
-    if (this->CurveVertex[point] >= 0 && this->BestRemoval(curves, point, plan, cost))
-    {
-      this->Edited.Apply(plan, false);
-      this->CurveVertex[point] = -1;
-      this->Changed = true;
-    }
+    this->Edited.Undo();
   }
+  this->Tentative.clear();
+}
+
+void PieceBorders::Commit(const std::vector<std::int32_t>& chosen)
+{
+  for (const std::size_t k : this->Tentative)
+  {
+    this->CurveVertex[chosen[k]] = -1;
+    this->Changed = true;
+  }
+  this->Tentative.clear();
 }
 
 std::vector<std::int32_t> PieceBorders::Destinations() const
@@ -460,7 +455,53 @@ void PieceBorders::Finish()
 // ---------------------------------------------------------------------------------------------
 // The round
 
-std::int64_t SimplifySharedBorders(std::vector<PieceBorders*>& pieces, std::int64_t excess, const BorderExchange& exchange)
+namespace
+{
+/// One round's agreement (see SharedBorders.h, step 3): the chosen points every piece that holds
+/// them removed, which all pieces keep.
+std::vector<std::int32_t> Agree(std::vector<PieceBorders*>& pieces, const SharedCurves& curves,
+  const std::vector<std::int32_t>& chosen, const BorderExchange& exchange)
+{
+  std::vector<double> accepted(chosen.size(), 1.0);
+  for (bool agreed = false; !agreed;)
+  {
+    for (PieceBorders* piece : pieces)
+    {
+      piece->Claim(curves, chosen, accepted);
+    }
+    exchange.Minimum(accepted);
+    std::vector<double> agreement{ 1.0 };
+    for (const PieceBorders* piece : pieces)
+    {
+      agreement[0] = piece->Agrees(accepted) ? agreement[0] : 0.0;
+    }
+    exchange.Minimum(agreement);
+    agreed = agreement[0] > 0.0;
+    for (PieceBorders* piece : pieces)
+    {
+      if (!agreed)
+      {
+        piece->Revert(); // and try again without the refused points
+      }
+      else
+      {
+        piece->Commit(chosen);
+      }
+    }
+  }
+  std::vector<std::int32_t> removed;
+  for (std::size_t k = 0; k < chosen.size(); ++k)
+  {
+    if (accepted[k] > 0.0)
+    {
+      removed.push_back(chosen[k]);
+    }
+  }
+  return removed;
+}
+}
+
+std::int64_t SimplifySharedBorders(std::vector<PieceBorders*>& pieces, std::int64_t count, const BorderExchange& exchange)
 {
   std::vector<double> places, edges;
   for (const PieceBorders* piece : pieces)
@@ -475,7 +516,7 @@ std::int64_t SimplifySharedBorders(std::vector<PieceBorders*>& pieces, std::int6
   }
   // Each removal takes one triangle from each of its two pieces.
   std::int64_t removed = 0;
-  while (excess - removed >= 2 && !curves.Removable().empty())
+  while (count - removed >= 2 && !curves.Removable().empty())
   {
     std::vector<double> costs(curves.Removable().size(), -Infinite);
     for (const PieceBorders* piece : pieces)
@@ -487,28 +528,11 @@ std::int64_t SimplifySharedBorders(std::vector<PieceBorders*>& pieces, std::int6
     {
       cost = cost == -Infinite ? Infinite : cost; // held by no piece any more
     }
-    const std::vector<std::int32_t> chosen = curves.Choose(costs, (excess - removed) / 2);
-    std::vector<double> accepted(chosen.size(), 1.0);
-    for (PieceBorders* piece : pieces)
-    {
-      piece->Claim(curves, chosen, accepted);
-    }
-    exchange.Minimum(accepted);
-    std::vector<std::int32_t> agreed;
-    for (std::size_t k = 0; k < chosen.size(); ++k)
-    {
-      if (accepted[k] > 0.0)
-      {
-        agreed.push_back(chosen[k]);
-      }
-    }
+    const std::vector<std::int32_t> chosen = curves.Choose(costs, (count - removed) / 2);
+    const std::vector<std::int32_t> agreed = chosen.empty() ? chosen : Agree(pieces, curves, chosen, exchange);
     if (agreed.empty())
     {
       break;
-    }
-    for (PieceBorders* piece : pieces)
-    {
-      piece->Remove(curves, agreed);
     }
     curves.Remove(agreed);
     removed += 2 * static_cast<std::int64_t>(agreed.size());

@@ -21,11 +21,15 @@
  *     at an open border, and points where a piece only touches stay;
  *  2. each round, every piece prices the removable points it holds (the distance from x to its
  *     new triangles; infinite where no collapse passes the engine's checks, the piece's regions
- *     and the shared-edge rule), the largest price over the pieces counts; the cheapest points,
- *     no two adjacent on a curve, are chosen up to the count still to remove; each piece refuses
- *     those whose neighbourhoods overlap one it accepted before (so the ones left can be made in
- *     any order); the points every piece accepts go;
- *  3. rounds go on until the excess is removed or no point is agreed.
+ *     and the shared-edge rule, or where a piece that holds both of x's neighbours already joins
+ *     them by an edge), the largest price over the pieces counts; the cheapest points, no two
+ *     adjacent on a curve, are chosen up to the count still to remove;
+ *  3. each piece makes the chosen removals in that order, each one checked on the mesh the ones
+ *     before it left, and refuses those that fail; a point goes where every piece that holds it
+ *     made it. A piece that made a removal another refused undoes its removals, and every piece
+ *     tries again without the refused ones, until the pieces agree (the first chosen point always
+ *     passes, so each round removes at least one);
+ *  4. rounds go on until the count is removed or no point is agreed.
  * The output points' sources grow by the removed points' (weight 0): they are represented by the
  * point they went into.
  */
@@ -59,7 +63,6 @@ public:
   std::int32_t NumberOfPoints() const { return static_cast<std::int32_t>(this->Places.size()); }
   /// The point's id, or -1.
   std::int32_t Find(const BorderPlace& place) const;
-  const BorderPlace& Place(std::int32_t point) const { return this->Places[point]; }
   /// A removable point's two curve neighbours.
   const std::array<std::int32_t, 2>& Ends(std::int32_t point) const { return this->Neighbours[point]; }
   /// The removable points still on the curves, in id order.
@@ -85,8 +88,9 @@ class PieceBorders
 public:
   /**
    * mesh: the piece's simplified result; input: the triangles it was made from; locks: per input
-   * point, SharedPointLock on the points shared with another piece; regions: per input point, or
-   * null; key: the surface the piece belongs to.
+   * point, SharedPointLock on the points shared with another piece that the round may remove
+   * (not those the user locked too); regions: per input point, or null; key: the surface the
+   * piece belongs to.
    */
   PieceBorders(SimplifiedMesh& mesh, const TriangleMeshView& input, const std::uint8_t* locks,
     const std::int32_t* regions, double key);
@@ -98,11 +102,16 @@ public:
   /// For each removable point the piece holds, costs[k] becomes the larger of it and the
   /// piece's price (infinite where the piece cannot remove it).
   void Price(const SharedCurves& curves, std::vector<double>& costs) const;
-  /// Sets accepted[k] to 0 for each chosen point the piece holds and cannot remove together with
-  /// the ones before it.
+  /// Removes, in order, the chosen points the piece holds and no piece refused yet (accepted[k]
+  /// nonzero), each checked on the mesh the ones before left; sets accepted[k] to 0 for those
+  /// that fail. The removals stay tentative until Commit or Revert.
   void Claim(const SharedCurves& curves, const std::vector<std::int32_t>& chosen, std::vector<double>& accepted);
-  /// Removes the agreed points the piece holds.
-  void Remove(const SharedCurves& curves, const std::vector<std::int32_t>& agreed);
+  /// Whether every tentative removal is one the pieces accepted.
+  bool Agrees(const std::vector<double>& accepted) const;
+  /// Undoes the tentative removals.
+  void Revert();
+  /// Keeps the tentative removals.
+  void Commit(const std::vector<std::int32_t>& chosen);
   /// Writes the edited mesh back into the result (nothing when no point was removed).
   void Finish();
 
@@ -122,8 +131,7 @@ private:
   std::vector<std::uint8_t> Shared;       // per vertex of Edited
   std::vector<BorderPlace> SharedPlace;   // per vertex of Edited (meaningful where Shared)
   std::vector<std::int32_t> CurveVertex;  // per curve point, the piece's vertex or -1
-  std::vector<std::uint32_t> Marks;
-  std::uint32_t Stamp = 0;
+  std::vector<std::size_t> Tentative;     // the chosen points (their places in the list) removed
   bool Changed = false;
 };
 
@@ -139,10 +147,10 @@ struct BorderExchange
 
 /**
  * The border round over this process's pieces (collective: every process calls it, with the
- * same excess). excess: the triangles the pieces together have beyond their target. Returns the
- * triangles removed over all pieces of all processes.
+ * same count). count: the triangles to remove over all pieces of all processes (two a point).
+ * Returns the triangles removed.
  */
-std::int64_t SimplifySharedBorders(std::vector<PieceBorders*>& pieces, std::int64_t excess, const BorderExchange& exchange);
+std::int64_t SimplifySharedBorders(std::vector<PieceBorders*>& pieces, std::int64_t count, const BorderExchange& exchange);
 
 } // namespace meshsimp
 

@@ -3,8 +3,10 @@
 
 #include "CollapseMesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string>
 
 namespace meshsimp
 {
@@ -295,6 +297,8 @@ void ComposeSources(SimplifiedMesh& first, SimplifiedMesh&& second)
     t = first.TriangleSource[t];
   }
   Outcome report = first.Report;
+  const double firstError = first.Report.MaximumError, secondError = result.Report.MaximumError;
+  report.MaximumError = firstError >= 0.0 && secondError >= 0.0 ? firstError + secondError : std::max(firstError, secondError);
   report.Stop = result.Report.Stop;
   report.Reason = result.Report.Reason;
   for (const std::string& note : result.Report.Notes)

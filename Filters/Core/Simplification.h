@@ -217,7 +217,8 @@ void AddSurvivorSources(const std::vector<std::int32_t>& survivors, const std::v
  * the result, its sources those of the input first was made from (an input point's weight is the
  * product of its weights along the way; representatives stay first), its triangles' sources
  * first's. The outcome keeps first's counts of the input and takes second's stop, reason and
- * notes; the per-point figures and whole-mesh values are second's.
+ * notes; its largest error is the sum of both (a bound on the two steps together). The per-point
+ * figures and whole-mesh values are second's, measured from first's mesh.
  */
 void ComposeSources(SimplifiedMesh& first, SimplifiedMesh&& second);
 
