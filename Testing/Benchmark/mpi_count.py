@@ -15,11 +15,14 @@ of the merged pieces (0: they fit together), and the RMS as a multiple of the on
 import argparse
 import json
 import os
+import re
 import subprocess
 import tempfile
 
-FILTERS = ("OctreeVertexClustering", "VolumeTriangleCollapse", "ParallelDecimation", "ProgressiveMesh")
 HERE = os.path.dirname(os.path.abspath(__file__))
+# Every registered filter, as Filters/FilterList.cmake reads them.
+with open(os.path.join(HERE, "..", "..", "Filters", "MeshSimplificationFilterList.h")) as registration:
+    FILTERS = tuple(re.findall(r"\n  X\(([A-Za-z]+), [a-z]+, [A-Za-z]+,", registration.read()))
 RUN = """
 import os, sys
 from paraview.simple import *
