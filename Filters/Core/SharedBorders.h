@@ -7,11 +7,11 @@
  * whole meets its count.
  *
  * Each piece's simplification locks the points it shares with another piece (LockSharedPoints
- * in the VTK layer), so its border keeps the input's resolution: a surface cut in two at 98 %
- * had twice the triangles asked for. The border round removes shared points by half-edge
- * collapses along the curve: a point x between its curve neighbours p and n goes into p or n
- * (each piece picks the legal one whose new triangles stay nearest x), which makes the curve's
- * edge p–n on every side, so the sides still match edge for edge and no point moves.
+ * in the VTK layer), so its border keeps the input's resolution, and the pieces together would
+ * end far above their count at a strong reduction. The border round removes shared points by
+ * half-edge collapses along the curve: a point x between its curve neighbours p and n goes into
+ * p or n (each piece picks the legal one whose new triangles stay nearest x), which makes the
+ * curve's edge p–n on every side, so the sides still match edge for edge and no point moves.
  *
  * The round is the same on every process (only its exchanges are collective, through
  * BorderExchange):
