@@ -235,12 +235,13 @@ int vtkMeshSimplificationFilter::RequestData(
   const double count = static_cast<double>(run.Pieces.size());
   const double coreShare = this->ComputeDeviation ? 0.8 : 1.0;
   const bool waits = HasBorderRound(run, this->TargetMode);
+  const double firstStages = waits ? 0.9 * coreShare : coreShare; // then the border round's last stage
   std::vector<PieceRun> states(run.Pieces.size());
   BorderTotals borders;
   for (std::size_t i = 0; i < run.Pieces.size() && !this->GetAbortExecute(); ++i)
   {
     const double slot = static_cast<double>(i) / count;
-    this->SetProgressShiftScale(waits ? coreShare * slot : slot, coreShare / count);
+    this->SetProgressShiftScale(waits ? firstStages * slot : slot, firstStages / count);
     this->RunPiece(run, i, states[i]);
     if (!waits)
     {
@@ -248,7 +249,7 @@ int vtkMeshSimplificationFilter::RequestData(
       this->FinishPiece(run, i, states[i], borders);
     }
   }
-  borders = this->SimplifyBorders(run, states);
+  borders = this->SimplifyBorders(run, states, firstStages, coreShare - firstStages);
   for (std::size_t i = 0; i < run.Pieces.size() && waits; ++i)
   {
     this->SetProgressShiftScale(coreShare + (1.0 - coreShare) * static_cast<double>(i) / count, (1.0 - coreShare) / count);
@@ -350,7 +351,7 @@ void vtkMeshSimplificationFilter::ReserveForBorders(const Piece& piece, PieceRun
 }
 
 vtkMeshSimplificationFilter::BorderTotals vtkMeshSimplificationFilter::SimplifyBorders(
-  vtkSimplification::InputPieces& run, std::vector<PieceRun>& states)
+  vtkSimplification::InputPieces& run, std::vector<PieceRun>& states, double progress, double progressShare)
 {
   // Collective: every process takes part whatever its pieces, under a count target. The border
   // round, then each piece to its share; where pieces stay above (a piece's part cut off by the
@@ -375,6 +376,10 @@ vtkMeshSimplificationFilter::BorderTotals vtkMeshSimplificationFilter::SimplifyB
       PieceRun& state = states[i];
       if (state.Ran && state.SharesBorders)
       {
+        // The first time, each piece in its slot of the progress; later (rarely, and smaller) at its end.
+        const double slot = progressShare / static_cast<double>(states.size());
+        this->SetProgressShiftScale(progress + (round == 0 ? slot * static_cast<double>(i) : progressShare),
+          round == 0 ? slot : 0.0);
         state.Ran = this->Resimplify(run.Pieces[i], i, state);
         local[0] += static_cast<double>(state.Mesh.NumberOfTriangles());
         local[1] += static_cast<double>(state.Share);

@@ -341,7 +341,10 @@ private:
   bool CheckTarget();
   void RunPiece(vtkSimplification::InputPieces& run, std::size_t piece, PieceRun& state);
   void ReserveForBorders(const vtkSimplification::Piece& piece, PieceRun& state) const;
-  BorderTotals SimplifyBorders(vtkSimplification::InputPieces& run, std::vector<PieceRun>& states);
+  /// The border round and the pieces' last stage, which report progress from progress on, over
+  /// progressShare of it (collective).
+  BorderTotals SimplifyBorders(
+    vtkSimplification::InputPieces& run, std::vector<PieceRun>& states, double progress, double progressShare);
   /// The border round over the pieces that share borders: count triangles to remove.
   std::int64_t ThinBorders(vtkSimplification::InputPieces& run, std::vector<PieceRun>& states, std::int64_t count);
   bool Resimplify(const vtkSimplification::Piece& piece, std::size_t i, PieceRun& state);

@@ -4,6 +4,8 @@
 #define MeshSimplification_TestVTKHelpers_h
 
 #include "vtkAppendPolyData.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkCompositeDataIterator.h"
@@ -28,10 +30,12 @@
 
 #include "TestHelpers.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace meshsimp_test
 {
@@ -269,8 +273,18 @@ void CheckPartitionedInput(vtkPolyData* cow)
   };
   vtkNew<Filter> filter;
   filter->SetTargetReduction(0.8);
+  filter->SetComputeDeviation(true);
   filter->SetInputData(halves);
+  // Progress only rises, through the cores, the border round and the deviations.
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&progress);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* values, void* value) {
+    static_cast<std::vector<double>*>(values)->push_back(*static_cast<double*>(value));
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
   filter->Update();
+  CHECK(progress.size() > 4 && std::is_sorted(progress.begin(), progress.end()) && progress.back() == 1.0);
   auto* partitions = vtkPartitionedDataSet::SafeDownCast(filter->GetOutputDataObject(0));
   CHECK(partitions && partitions->GetNumberOfPartitions() == 2);
   vtkIdType triangles = 0;
