@@ -205,9 +205,7 @@ namespace
 bool HasBorderRound(const vtkSimplification::InputPieces& run, int targetMode)
 {
   return run.Shared && targetMode != vtkMeshSimplificationFilter::TARGET_MAXIMUM_ERROR &&
-    std::any_of(run.Pieces.begin(), run.Pieces.end(), [](const vtkSimplification::Piece& piece) {
-      return std::find(piece.Locks.begin(), piece.Locks.end(), meshsimp::SharedPointLock) != piece.Locks.end();
-    });
+    std::any_of(run.Pieces.begin(), run.Pieces.end(), [](const vtkSimplification::Piece& piece) { return piece.SharedLocks > 0; });
 }
 }
 
@@ -282,7 +280,6 @@ void vtkMeshSimplificationFilter::RunPiece(vtkSimplification::InputPieces& run, 
   goal.ReferenceLength = run.Shared ? run.Totals.Diagonal : 0.0;
   goal.Tolerance = this->TargetTolerance;
   options.PreserveBoundary = this->PreserveBoundary;
-  piece.SharedLocks = std::count(piece.Locks.begin(), piece.Locks.end(), meshsimp::SharedPointLock);
   if (vtkAbstractArray* array = vtkSimplification::SelectedPointArray(this, 0, piece.Input, "Locked Points"))
   {
     piece.UserLocks = vtkSimplification::ReadLockedPoints(array, piece.Locks, piece.UserLocked);

@@ -9,6 +9,7 @@
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <functional>
 
 namespace vtkSimplification
@@ -109,6 +110,8 @@ void PreparePieces(vtkAlgorithm* filter, InputPieces& run)
   for (std::size_t i = 0; i < run.Pieces.size(); ++i)
   {
     run.Pieces[i].Locks = std::move(locks[i]);
+    run.Pieces[i].SharedLocks =
+      std::count(run.Pieces[i].Locks.begin(), run.Pieces[i].Locks.end(), meshsimp::SharedPointLock);
   }
   if (run.Shared)
   {

@@ -37,7 +37,7 @@ struct Piece
   bool Readable = false;
   std::vector<std::uint8_t> Locks; // shared with other pieces, then the caller's (ReadLockedPoints)
   std::vector<std::uint8_t> UserLocked; // the caller's alone (a shared point may be both)
-  std::int64_t SharedLocks = 0, UserLocks = 0;
+  std::int64_t SharedLocks = 0, UserLocks = 0; // PreparePieces counts the shared, the filter the user's
   std::string LockArray; // the user's lock array, for messages
 };
 
