@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ParallelDecimation.h"
 
+#include "CollapseLoop.h"
 #include "CollapseMesh.h"
 #include "PlaneDistanceBound.h"
 #include "Quadric.h"
@@ -303,12 +304,32 @@ private:
   void Measure(std::int32_t v, Workspace& work, bool starCollected);
   /// The listed vertices after a round (see the body).
   void Reevaluate(const std::int32_t* vertices, std::int64_t count);
-  /// Steps 3–7 of §5.5; false when aborted. A round's stages: its plans, the changes listed
-  /// (with what a survivor inherits), and what to do when it removed nothing.
+  /// Steps 3–7 of §5.5 on the collapse loop (CollapseLoop.h), with the scheduler below; false
+  /// when aborted.
   bool RemoveToTarget(std::int64_t target, ParallelDecimationResult& result);
+  /// The loop's scheduler: rounds of super-independent vertex sets, removed concurrently.
+  struct RoundScheduler
+  {
+    Decimator& Owner;
+    ParallelDecimationResult& Result;
+    double Fraction;            // of the candidates a round's window covers
+    bool CoveredAll = false;    // whether the last round's window covered every candidate
+    std::int64_t AliveTriangles() const { return this->Owner.Mesh.NumberOfAliveTriangles(); }
+    bool Step(std::int64_t target)
+    {
+      return this->Owner.RemoveRound(target, this->Fraction, this->CoveredAll, this->Result);
+    }
+    bool Unstick(std::int64_t) { return this->Owner.Unstick(this->CoveredAll, this->Fraction, this->Result); }
+    std::string RefusalSummary() const { return this->Owner.RefusalSummary(); }
+  };
+  /// One round: the set (SelectRound), its plans, the changes listed (with what a survivor
+  /// inherits), the removals and the re-evaluation around them; false when it removed nothing
+  /// (coveredAll: whether its window, that fraction of the candidates, covered them all).
+  bool RemoveRound(std::int64_t target, double fraction, bool& coveredAll, ParallelDecimationResult& result);
   void PlanRound();
   void ListChanges();
   void Inherit(std::int32_t v, std::int64_t i);
+  /// What to do when a round removed nothing (see the body); false when nothing is left to try.
   bool Unstick(bool all, double& fraction, ParallelDecimationResult& result);
   /// The outcome: why it stopped where it did, and the relaxations' note.
   void Judge(ParallelDecimationResult& result) const;
@@ -372,9 +393,8 @@ private:
   std::vector<double> Distances;
   std::vector<CollapsePlan> Plans, Applied;
   std::vector<std::uint8_t> Planned;
-  bool StoppedEarly = false; // no removable vertex was left before the target
+  CollapseLoopEnd LoopEnd; // how the rounds ended (its refusals taken before survivors move)
   const bool MayRelax;
-  std::string StopSummary;   // then RefusalSummary, as the rounds stopped
 };
 
 void Decimator::CollectStar(std::int32_t v, Workspace& work) const
@@ -1110,41 +1130,30 @@ bool Decimator::Unstick(bool all, double& fraction, ParallelDecimationResult& re
 
 bool Decimator::RemoveToTarget(std::int64_t target, ParallelDecimationResult& result)
 {
-  // Steps 3–7 of §5.5: rounds of super-independent sets until the target.
-  const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
-  double fraction = std::min(1.0, std::max(1e-3, this->Options.RoundFraction));
-  while (this->Mesh.NumberOfAliveTriangles() > target)
+  RoundScheduler scheduler{ *this, result, std::min(1.0, std::max(1e-3, this->Options.RoundFraction)) };
+  this->LoopEnd = RunCollapseLoop(scheduler, target, { 0.05, 0.95 }, this->Context);
+  return this->LoopEnd.Why != CollapseLoopEnd::Reason::Aborted;
+}
+
+bool Decimator::RemoveRound(std::int64_t target, double fraction, bool& coveredAll, ParallelDecimationResult& result)
+{
+  coveredAll = this->SelectRound(this->Mesh.NumberOfAliveTriangles() - target, fraction, this->Chosen);
+  if (this->Options.RoundObserver)
   {
-    const bool all = this->SelectRound(this->Mesh.NumberOfAliveTriangles() - target, fraction, this->Chosen);
-    if (this->Options.RoundObserver)
-    {
-      this->Options.RoundObserver(this->Mesh, this->Chosen);
-    }
-    // Removed in vertex order, which follows space (MakeCompactMesh): nearby vertices share
-    // cache lines where the importance order would jump across the mesh.
-    this->Context.Sort(this->Chosen);
-    this->PlanRound();
-    this->ListChanges();
-    ++result.Rounds;
-    if (this->Applied.empty())
-    {
-      if (!this->Unstick(all, fraction, result))
-      {
-        this->StoppedEarly = true;
-        this->StopSummary = this->RefusalSummary(); // before survivors move (MoveSurvivors)
-        break;
-      }
-      continue;
-    }
-    this->Mesh.ApplyIndependent(this->Applied, this->Context, this->SharedHubs);
-    this->Reevaluate(this->Neighbours.data(), static_cast<std::int64_t>(this->Neighbours.size()));
-    const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
-      static_cast<double>(std::max<std::int64_t>(1, start - target));
-    if (!this->Context.Report(0.05 + 0.9 * std::min(1.0, done)))
-    {
-      return false;
-    }
+    this->Options.RoundObserver(this->Mesh, this->Chosen);
   }
+  // Removed in vertex order, which follows space (MakeCompactMesh): nearby vertices share
+  // cache lines where the importance order would jump across the mesh.
+  this->Context.Sort(this->Chosen);
+  this->PlanRound();
+  this->ListChanges();
+  ++result.Rounds;
+  if (this->Applied.empty())
+  {
+    return false;
+  }
+  this->Mesh.ApplyIndependent(this->Applied, this->Context, this->SharedHubs);
+  this->Reevaluate(this->Neighbours.data(), static_cast<std::int64_t>(this->Neighbours.size()));
   return true;
 }
 
@@ -1193,11 +1202,7 @@ void Decimator::Judge(ParallelDecimationResult& result) const
 {
   // Why the count is where it is: the reason first, then what was changed to get there.
   Outcome& report = result.Report;
-  if (this->StoppedEarly && this->BoundLimit < 0.0 && report.Stop == StopReason::TargetMet)
-  {
-    report.Stop = StopReason::NothingRemovable;
-    report.Reason = "no vertex is left that can be removed" + this->StopSummary;
-  }
+  this->LoopEnd.Judge(report, this->BoundLimit >= 0.0, "no vertex is left that can be removed");
   if (result.Relaxations > 0)
   {
     report.Notes.push_back("FeatureAngle and MaximumNormalDeviation were raised by " +

@@ -2,6 +2,7 @@
 #include "ProgressiveMesh.h"
 
 #include "CollapseHeap.h"
+#include "CollapseLoop.h"
 #include "CollapseMesh.h"
 #include "Quadric.h"
 
@@ -84,6 +85,16 @@ private:
   CollapseCheck Check(std::int32_t x, const RingEntry& entry);
   /// At the coarsest level: what locks the points left and refuses the others' collapses.
   std::string DescribeCoarsest();
+  /// The collapse loop's scheduler (CollapseLoop.h): the strict heap, one collapse a step.
+  struct StrictHeapScheduler
+  {
+    ProgressiveBuilder& Builder;
+    std::int64_t AliveTriangles() const { return this->Builder.LiveTriangles; }
+    bool Step(std::int64_t) { return this->Builder.CollapseTop(); }
+    bool Unstick(std::int64_t) { return false; }
+    std::string RefusalSummary() { return this->Builder.DescribeCoarsest(); }
+  };
+  /// Step 4 for the top of the heap; false when the heap is empty.
   bool CollapseTop();
   const RingEntry* Cheapest() const;
   const RingEntry* CheapestLegal(std::int32_t x, const RingEntry& refused);
@@ -159,19 +170,13 @@ bool ProgressiveBuilder::Run(const TriangleMeshView& input, ProgressiveMesh& seq
     this->AddBorderPlanes(x);
     this->Measure(x, true);
   }
-  const std::size_t reportEvery = std::max<std::size_t>(1024, this->P.size() / 64);
-  while (this->LiveTriangles > this->Options.StopTriangles && this->CollapseTop())
+  StrictHeapScheduler scheduler{ *this };
+  const CollapseLoopEnd end = RunCollapseLoop(scheduler, this->Options.StopTriangles, { 0.1, 0.95 }, this->Context);
+  if (end.Why == CollapseLoopEnd::Reason::Aborted)
   {
-    if (this->Removed.size() % reportEvery == 0 &&
-      !this->Context.Report(0.1 + 0.85 * static_cast<double>(this->Removed.size()) / std::max(1, n)))
-    {
-      return false;
-    }
+    return false;
   }
-  if (this->Options.StopTriangles == 0)
-  {
-    sequence.CoarsestReason = this->DescribeCoarsest();
-  }
+  sequence.CoarsestReason = end.Refusals;
   this->ReleaseBuildState();
   this->WriteSequence(prepared, sequence);
   return this->Context.Report(1.0);

@@ -2,6 +2,7 @@
 #include "VolumeTriangleCollapse.h"
 
 #include "CollapseHeap.h"
+#include "CollapseLoop.h"
 #include "PlaneDistanceBound.h"
 #include "Quadric.h"
 
@@ -216,7 +217,26 @@ private:
   void MeasureAll();
   void GatherInputPlanes();
   void QueueAll();
+  /// Step 5–6 of §3.6 on the collapse loop (CollapseLoop.h), with the scheduler below; false
+  /// when aborted.
   bool CollapseToTarget(std::int64_t target, VolumeCollapseResult& result);
+  /// The loop's scheduler: batches of the cheapest triangles whose neighbourhoods are disjoint,
+  /// evaluated and checked concurrently, collapsed in key order, updated concurrently.
+  struct BatchScheduler
+  {
+    VolumeCollapser& Collapser;
+    VolumeCollapseResult& Result;
+    std::int64_t Tolerance; // below the target
+    std::int64_t AliveTriangles() const { return this->Collapser.Mesh.NumberOfAliveTriangles(); }
+    bool Step(std::int64_t target) { return this->Collapser.CollapseNextBatch(target, this->Tolerance, this->Result); }
+    bool Unstick(std::int64_t target) { return this->Collapser.Unstick(target - this->Tolerance, this->Result); }
+    std::string RefusalSummary() const { return this->Collapser.RefusalSummary(); }
+  };
+  /// One batch (SelectBatch, CollapseBatch, RefreshApplied); false when the heap is empty.
+  bool CollapseNextBatch(std::int64_t target, std::int64_t tolerance, VolumeCollapseResult& result);
+  /// When every collapse left is refused: the angle guard lowered a step, else the last resort
+  /// (CollapseAnyEdges down to floor); false when neither is left (or under a bound).
+  bool Unstick(std::int64_t floor, VolumeCollapseResult& result);
   /// Applies the plan (legal), with its eq. (5) cost; the updates around the kept vertex follow
   /// (UpdateAround, or RefreshAround for a batch).
   void Apply(const CollapsePlan& plan, double cost, VolumeCollapseResult& result);
@@ -294,7 +314,7 @@ private:
   CollapseHeap Heap;
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0; // MaximumError in normalised units; < 0: no bound
-  bool StoppedEarly = false; // no legal collapse was left before the target
+  CollapseLoopEnd LoopEnd; // how the collapses ended
   // The last resort's last pass, when it found no legal edge: what refused each edge collapse
   // (by CollapseCheck), for the report.
   RefusalCounts RefusedBy{};
@@ -1502,58 +1522,50 @@ void VolumeCollapser::CollapseBatch(std::int64_t target, std::int64_t tolerance,
 
 bool VolumeCollapser::CollapseToTarget(std::int64_t target, VolumeCollapseResult& result)
 {
-  // Step 5–6 of §3.6: collapse the cheapest triangle until the target is met.
   // A closed mesh has an even count: one triangle of slack at least.
-  const std::int64_t tolerance = std::max<std::int64_t>(1, this->Options.Goal.Slack(target));
-  const std::int64_t start = this->Mesh.NumberOfAliveTriangles();
-  std::int64_t steps = 0;
-  while (this->Mesh.NumberOfAliveTriangles() > target)
-  {
-    if (this->Heap.Empty())
-    {
-      if (this->BoundLimit < 0.0 && this->GuardAngle > 0.0)
-      {
-        // Every collapse left is refused: lower the angle guard a step (halving; 0 below 2°),
-        // requeue every triangle and go on, rather than stop short of the target.
-        this->GuardAngle = this->GuardAngle >= 2.0 ? 0.5 * this->GuardAngle : 0.0;
-        this->Mesh.SetMinimumAngle(this->GuardAngle);
-        result.FinalMinimumAngle = std::min(result.FinalMinimumAngle, this->GuardAngle);
-        this->QueueAll();
-        continue;
-      }
-      // The guard is down and no triangle's plan is legal: the last resort.
-      if (this->BoundLimit < 0.0 && this->Options.EdgeCollapses &&
-        this->CollapseAnyEdges(target - tolerance, result))
-      {
-        continue; // their neighbourhoods are queued again
-      }
-      this->StoppedEarly = true; // with a bound, simply the end
-      break;
-    }
-    // A batch of the cheapest triangles whose neighbourhoods are disjoint: evaluated and checked
-    // concurrently, then collapsed in key order, then updated concurrently. A collapse removes at
-    // most four triangles (the link condition leaves one across each edge; more along a hinge,
-    // which CollapseBatch counts), so near the target the batch shrinks to one: the strict heap
-    // order, with the exact count below.
-    const std::int64_t room = (this->Mesh.NumberOfAliveTriangles() - target) / 4;
-    const std::int64_t limit = std::max<std::int64_t>(1, std::min<std::int64_t>(this->BatchLimit, room));
-    this->SelectBatch(limit);
-    this->CollapseBatch(target, tolerance, result);
-    this->RefreshApplied();
-    const std::int64_t applied = static_cast<std::int64_t>(this->Applied.size());
-    if ((steps & ~std::int64_t(255)) != ((steps + applied) & ~std::int64_t(255)))
-    {
-      const double done = static_cast<double>(start - this->Mesh.NumberOfAliveTriangles()) /
-        static_cast<double>(std::max<std::int64_t>(1, start - target));
-      if (!this->Context.Report(0.1 + 0.85 * std::min(1.0, done)))
-      {
-        return false;
-      }
-    }
-    steps += applied;
-  }
+  BatchScheduler scheduler{ *this, result, std::max<std::int64_t>(1, this->Options.Goal.Slack(target)) };
+  this->LoopEnd = RunCollapseLoop(scheduler, target, { 0.1, 0.95 }, this->Context);
+  return this->LoopEnd.Why != CollapseLoopEnd::Reason::Aborted;
+}
 
+bool VolumeCollapser::CollapseNextBatch(std::int64_t target, std::int64_t tolerance, VolumeCollapseResult& result)
+{
+  // A batch of the cheapest triangles whose neighbourhoods are disjoint: evaluated and checked
+  // concurrently, then collapsed in key order, then updated concurrently. A collapse removes at
+  // most four triangles (the link condition leaves one across each edge; more along a hinge,
+  // which CollapseBatch counts), so near the target the batch shrinks to one: the strict heap
+  // order, with the exact count below.
+  if (this->Heap.Empty())
+  {
+    return false;
+  }
+  const std::int64_t room = (this->Mesh.NumberOfAliveTriangles() - target) / 4;
+  const std::int64_t limit = std::max<std::int64_t>(1, std::min<std::int64_t>(this->BatchLimit, room));
+  this->SelectBatch(limit);
+  this->CollapseBatch(target, tolerance, result);
+  this->RefreshApplied();
   return true;
+}
+
+bool VolumeCollapser::Unstick(std::int64_t floor, VolumeCollapseResult& result)
+{
+  if (this->BoundLimit >= 0.0)
+  {
+    return false; // with a bound, simply the end
+  }
+  if (this->GuardAngle > 0.0)
+  {
+    // Every collapse left is refused: lower the angle guard a step (halving; 0 below 2°),
+    // requeue every triangle and go on, rather than stop short of the target.
+    this->GuardAngle = this->GuardAngle >= 2.0 ? 0.5 * this->GuardAngle : 0.0;
+    this->Mesh.SetMinimumAngle(this->GuardAngle);
+    result.FinalMinimumAngle = std::min(result.FinalMinimumAngle, this->GuardAngle);
+    this->QueueAll();
+    return true;
+  }
+  // The guard is down and no triangle's plan is legal: the last resort (their neighbourhoods
+  // are queued again).
+  return this->Options.EdgeCollapses && this->CollapseAnyEdges(floor, result);
 }
 
 void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult& result) const
@@ -1602,11 +1614,7 @@ void VolumeCollapser::Judge(VolumeCollapseResult& result) const
 {
   // Why the count is where it is: the reason first, then what was changed to get there.
   Outcome& report = result.Report;
-  if (this->StoppedEarly && report.Stop == StopReason::TargetMet && this->BoundLimit < 0.0)
-  {
-    report.Stop = StopReason::NothingRemovable;
-    report.Reason = "no collapse is left that keeps the mesh valid" + this->RefusalSummary();
-  }
+  this->LoopEnd.Judge(report, this->BoundLimit >= 0.0, "no collapse is left that keeps the mesh valid");
   if (this->GuardAngle < std::min(60.0, this->Options.MinimumAngle))
   {
     // Lowered all the way and still short of the target, the guard is not what binds.

@@ -2,6 +2,7 @@
 // Unit tests of the shared collapse engine (CollapseMesh, CollapseHeap) and of the volume
 // triangle collapse core built on it.
 #include "CollapseHeap.h"
+#include "CollapseLoop.h"
 #include "CollapseMesh.h"
 #include "PlaneDistanceBound.h"
 #include "TestHelpers.h"
@@ -1361,6 +1362,73 @@ void VolumeCollapseHugeAndTinyCoordinates()
   }
 }
 
+/// A scheduler for the loop alone: each step removes Rate triangles while it has collapses;
+/// Unstick gives it Reserve more (once each), as a lowered guard would.
+struct CountingScheduler
+{
+  std::int64_t Alive = 1000, Rate = 10, Collapsible = 600, Reserve = 0;
+  int Unsticks = 0;
+  std::int64_t AliveTriangles() const { return this->Alive; }
+  bool Step(std::int64_t target)
+  {
+    if (this->Collapsible <= 0)
+    {
+      return false;
+    }
+    const std::int64_t removed = std::min({ this->Rate, this->Collapsible, this->Alive - target });
+    this->Alive -= removed;
+    this->Collapsible -= removed;
+    return true;
+  }
+  bool Unstick(std::int64_t)
+  {
+    ++this->Unsticks;
+    this->Collapsible += this->Reserve;
+    const bool more = this->Reserve > 0;
+    this->Reserve = 0;
+    return more;
+  }
+  std::string RefusalSummary() const { return ": of the " + std::to_string(this->Alive) + " left, none"; }
+};
+
+void CollapseLoopStopsForTheRightReason()
+{
+  // Target met exactly; out of collapses (the scheduler's summary kept, a count target judged
+  // NothingRemovable, a bound not); unstuck once and met; aborted where the caller said.
+  std::vector<double> reported;
+  meshsimp::ExecutionContext context;
+  context.Progress = [&](double progress) {
+    reported.push_back(progress);
+    return true;
+  };
+  CountingScheduler met;
+  const meshsimp::CollapseLoopEnd first = meshsimp::RunCollapseLoop(met, 500, { 0.1, 0.9 }, context);
+  CHECK(first.Why == meshsimp::CollapseLoopEnd::Reason::TargetMet && met.Alive == 500 && met.Unsticks == 0);
+  CHECK(first.Refusals.empty());
+  CHECK(reported.size() >= 40 && std::is_sorted(reported.begin(), reported.end()));
+  CHECK(reported.front() > 0.1 && std::abs(reported.back() - 0.9) < 1e-12);
+
+  CountingScheduler stuck;
+  const meshsimp::CollapseLoopEnd second = meshsimp::RunCollapseLoop(stuck, 100, {}, context);
+  CHECK(second.Why == meshsimp::CollapseLoopEnd::Reason::Exhausted && stuck.Alive == 400 && stuck.Unsticks == 1);
+  CHECK(second.Refusals == ": of the 400 left, none");
+  meshsimp::Outcome counted, bounded;
+  second.Judge(counted, false, "nothing is removable");
+  second.Judge(bounded, true, "nothing is removable");
+  CHECK(counted.Stop == meshsimp::StopReason::NothingRemovable && counted.Reason == "nothing is removable: of the 400 left, none");
+  CHECK(bounded.Stop == meshsimp::StopReason::TargetMet && bounded.Reason.empty());
+
+  CountingScheduler unstuck;
+  unstuck.Reserve = 1000;
+  CHECK(meshsimp::RunCollapseLoop(unstuck, 100, {}, context).Why == meshsimp::CollapseLoopEnd::Reason::TargetMet);
+  CHECK(unstuck.Alive == 100 && unstuck.Unsticks == 1);
+
+  context.Progress = [](double progress) { return progress < 0.5; };
+  CountingScheduler aborted;
+  CHECK(meshsimp::RunCollapseLoop(aborted, 500, {}, context).Why == meshsimp::CollapseLoopEnd::Reason::Aborted);
+  CHECK(aborted.Alive > 500 && aborted.Alive <= 760);
+}
+
 void VolumeCollapseReportsProgressAndAborts()
 {
   // Progress rises from the set-up to the end; a caller that says stop gets false at once.
@@ -1506,6 +1574,7 @@ int main()
     { "VolumeCollapseKeepsHoleRims", VolumeCollapseKeepsHoleRims },
     { "VolumeCollapseGuardIsAPrice", VolumeCollapseGuardIsAPrice },
     { "VolumeCollapseHugeAndTinyCoordinates", VolumeCollapseHugeAndTinyCoordinates },
+    { "CollapseLoopStopsForTheRightReason", CollapseLoopStopsForTheRightReason },
     { "VolumeCollapseReportsProgressAndAborts", VolumeCollapseReportsProgressAndAborts },
     { "VolumeCollapseSimplifiesFan", VolumeCollapseSimplifiesFan },
     { "VolumeCollapseSimplifiesAlongHinges", VolumeCollapseSimplifiesAlongHinges },
