@@ -135,6 +135,11 @@ private:
   static void SetEdgePlan(std::int32_t kept, std::int32_t other, double keptWeight,
     const Vec3& position, const Quadric& q, double cost, Candidate& candidate);
   void CheaperEdge(std::int32_t t, const EdgeNeighbours& across, Candidate& candidate) const;
+  /// The edge of t from corner k to the next: its quadric q (the triangles around its ends, own
+  /// being t's) and point x; returns its error there.
+  double PlaceEdge(std::int32_t t, int k, const Quadric& own, const EdgeNeighbours& across, Quadric& q, Vec3& x) const;
+  /// Makes the candidate the collapse of edge (a, b) to x, the end nearer x kept.
+  void SetEdgePlanAt(std::int32_t a, std::int32_t b, const Vec3& x, const Quadric& q, double cost, Candidate& candidate) const;
   /// The edge of t from corner k to the next.
   void CheaperBoundaryEdge(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const;
   void UpdateVertex(std::int32_t v);
@@ -145,6 +150,11 @@ private:
   void UpdateFanSums(const std::int32_t* vertices, int count, double sign);
   void UpdateQuadric(std::int32_t t);
   Candidate Evaluate(std::int32_t t) const;
+  /// Evaluate's plan for a triangle with one corner on the cut between pieces: the collapse of
+  /// its edge from corner k to the next, off the cut.
+  void OffTheCut(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const;
+  /// Evaluate's last step: the surface term added to the key, and whether the plan is valid.
+  Candidate Finish(Candidate& candidate) const;
   /// Evaluate's placements of a triangle's plan (v: its corners): onto corner k; along its
   /// boundary edge (returns the edge's first corner); the strong-feature corner (-1: none); the
   /// free placement of eq. (5)/(8).
@@ -698,14 +708,23 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   {
     return candidate;
   }
+  // A corner on the cut between the pieces of a distributed mesh (locked as shared with another
+  // piece) is on no border of the surface: §3.5's rule would draw the interior onto the cut.
+  const bool onCut =
+    lockedCount == 1 && boundaryCount == 1 && this->Mesh.WhyLocked(v[locked]) == LockReason::SharedPoint;
   Quadric q;
   EdgeNeighbours across;
-  this->ConstrictionMatrix(t, q, this->Options.EdgeCollapses ? &across : nullptr);
+  this->ConstrictionMatrix(t, q, this->Options.EdgeCollapses || onCut ? &across : nullptr);
   CollapsePlan& plan = candidate.Plan;
   plan.Count = 3;
   int boundaryEdge = -1; // an edge-boundary triangle's edge between its boundary corners
   int hingeEdge = -1;    // the same along a hinge
   const int feature = lockedCount == 0 && boundaryCount == 0 && !onHinge ? this->StrongFeatureCorner(v) : -1;
+  if (onCut)
+  {
+    this->OffTheCut(t, (locked + 1) % 3, across, candidate);
+    return this->Finish(candidate);
+  }
   if (onHinge)
   {
     const int kept = this->OntoHinge(v, q, hingeEdge);
@@ -755,6 +774,23 @@ VolumeCollapser::Candidate VolumeCollapser::Evaluate(std::int32_t t) const
   {
     this->CheaperHingeEdge(t, hingeEdge, across, candidate);
   }
+  return this->Finish(candidate);
+}
+
+void VolumeCollapser::OffTheCut(std::int32_t t, int k, const EdgeNeighbours& across, Candidate& candidate) const
+{
+  // The edge off the cut collapses, placed as a free edge is, or onto one of its ends when that
+  // point is refused (Examine's fallback for a free placement).
+  Quadric edge;
+  Vec3 x;
+  const double cost = this->PlaceEdge(t, k, this->TriangleQuadric(t), across, edge, x);
+  const std::int32_t* v = this->Mesh.Triangle(t);
+  this->SetEdgePlanAt(v[k], v[(k + 1) % 3], x, edge, cost, candidate);
+  candidate.FreePlacement = true;
+}
+
+VolumeCollapser::Candidate VolumeCollapser::Finish(Candidate& candidate) const
+{
   candidate.Priority += this->SurfaceError(candidate.Plan);
   // Quadric::Evaluate clamps at zero, which would make a non-finite quadric look free.
   const Quadric& chosen = candidate.Q;
@@ -799,8 +835,7 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
 {
   // The edge of t of least error collapses instead when that error is below EdgeErrorShare of
   // the triangle's: on a cylinder an edge along a ruling line merges without error, a triangle
-  // never does. An edge's quadric sums the triangles around its two ends (t and the one across,
-  // which hold both, once); its point minimises it as in §3.4.
+  // never does.
   const std::int32_t* tri = this->Mesh.Triangle(t);
   int best = -1;
   double bestCost = EdgeErrorShare * candidate.Cost;
@@ -809,24 +844,9 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
   const Quadric own = this->TriangleQuadric(t);
   for (int k = 0; k < 3; ++k)
   {
-    Quadric q = this->VertexQuadrics[tri[k]];
-    q += this->VertexQuadrics[tri[(k + 1) % 3]];
-    q -= own;
-    q -= across.Quadrics[k];
-    const Vec3& pa = this->Mesh.Point(tri[k]);
-    const Vec3& pb = this->Mesh.Point(tri[(k + 1) % 3]);
-    const Vec3 middle = 0.5 * (pa + pb);
+    Quadric q;
     Vec3 x;
-    MinimizeQuadricNear(q, middle, x);
-    if ((x - middle).squaredNorm() > 4.0 * (pb - pa).squaredNorm())
-    {
-      x = middle; // as for triangles: no spike from a barely conditioned quadric
-    }
-    if (this->Normalised.InBox(x) != x)
-    {
-      x = middle; // inside the input's box, as the edge is
-    }
-    const double cost = q.Evaluate(x);
+    const double cost = this->PlaceEdge(t, k, own, across, q, x);
     if (cost < bestCost)
     {
       best = k;
@@ -835,23 +855,51 @@ void VolumeCollapser::CheaperEdge(std::int32_t t, const EdgeNeighbours& across, 
       bestX = x;
     }
   }
-  if (best < 0)
+  if (best >= 0)
   {
-    return;
+    this->SetEdgePlanAt(tri[best], tri[(best + 1) % 3], bestX, bestQ, bestCost, candidate);
   }
+}
+
+double VolumeCollapser::PlaceEdge(
+  std::int32_t t, int k, const Quadric& own, const EdgeNeighbours& across, Quadric& q, Vec3& x) const
+{
+  // An edge's quadric sums the triangles around its two ends (t and the one across, which hold
+  // both, once); its point minimises it as in §3.4.
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  q = this->VertexQuadrics[tri[k]];
+  q += this->VertexQuadrics[tri[(k + 1) % 3]];
+  q -= own;
+  q -= across.Quadrics[k];
+  const Vec3& pa = this->Mesh.Point(tri[k]);
+  const Vec3& pb = this->Mesh.Point(tri[(k + 1) % 3]);
+  const Vec3 middle = 0.5 * (pa + pb);
+  MinimizeQuadricNear(q, middle, x);
+  if ((x - middle).squaredNorm() > 4.0 * (pb - pa).squaredNorm())
+  {
+    x = middle; // as for triangles: no spike from a barely conditioned quadric
+  }
+  if (this->Normalised.InBox(x) != x)
+  {
+    x = middle; // inside the input's box, as the edge is
+  }
+  return q.Evaluate(x);
+}
+
+void VolumeCollapser::SetEdgePlanAt(
+  std::int32_t a, std::int32_t b, const Vec3& x, const Quadric& q, double cost, Candidate& candidate) const
+{
   // Attribute weights from the point's projection onto the edge; the nearer end is kept.
-  const std::int32_t a = tri[best], b = tri[(best + 1) % 3];
   const Vec3 d = this->Mesh.Point(b) - this->Mesh.Point(a);
   const double length2 = d.squaredNorm();
-  const double s =
-    length2 > 0.0 ? std::min(1.0, std::max(0.0, (bestX - this->Mesh.Point(a)).dot(d) / length2)) : 0.5;
+  const double s = length2 > 0.0 ? std::min(1.0, std::max(0.0, (x - this->Mesh.Point(a)).dot(d) / length2)) : 0.5;
   if (s <= 0.5)
   {
-    SetEdgePlan(a, b, 1.0 - s, bestX, bestQ, bestCost, candidate);
+    SetEdgePlan(a, b, 1.0 - s, x, q, cost, candidate);
   }
   else
   {
-    SetEdgePlan(b, a, s, bestX, bestQ, bestCost, candidate);
+    SetEdgePlan(b, a, s, x, q, cost, candidate);
   }
 }
 

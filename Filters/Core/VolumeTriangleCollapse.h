@@ -31,7 +31,9 @@
  * - Boundaries (§3.5): a triangle with one boundary corner collapses onto it; one with two onto
  *   the point ω v_i + (1 − ω) v_j of least error on that pair; one with three is kept. Boundary
  *   corners (a sharp turn of the boundary) never move. PreserveBoundary locks every boundary
- *   vertex; LockedPoints locks the caller's choice.
+ *   vertex; LockedPoints locks the caller's choice. The cut between the pieces of a distributed
+ *   mesh (points locked as shared with another piece) is no border of the surface: a triangle
+ *   with one corner on it collapses its other edge instead, as a free edge is placed.
  * - The count: collapses stop at the target; one that would remove too many triangles (more than
  *   1 %, or one triangle, below the target) is replaced by the collapse of one of the
  *   triangle's edges. When no triangle's plan is legal before the target (on small meshes of
