@@ -27,6 +27,20 @@ constexpr double FoldCheckTurnCosine = 0.8660254037844386;
 
 } // namespace
 
+void CollapseMesh::Load(PreparedMesh& prepared, double cornerAngleDegrees, bool lockBorderCorners, const ExecutionContext& context)
+{
+  this->Build(std::move(prepared.Mesh), cornerAngleDegrees, context);
+  this->SetRegions(std::move(prepared.Regions));
+  for (std::int32_t v = 0; v < this->NumberOfPoints(); ++v)
+  {
+    const std::uint8_t lock = prepared.Locks[v];
+    if (lock || (lockBorderCorners && this->Class(v) == VertexClass::Corner))
+    {
+      this->Lock(v, lock == SharedPointLock ? LockReason::SharedPoint : lock ? LockReason::Options : LockReason::BorderCorner);
+    }
+  }
+}
+
 void CollapseMesh::Build(CompactMesh&& mesh, double cornerAngleDegrees, const ExecutionContext& context)
 {
   this->Points = std::move(mesh.Points);

@@ -62,6 +62,7 @@
 #include "CollapseReport.h"
 #include "Execution.h"
 #include "FanTopology.h"
+#include "Simplification.h"
 #include "TriangleMesh.h"
 
 #include <Eigen/Core>
@@ -162,6 +163,10 @@ public:
    * The vertices are classified on the context's threads.
    */
   void Build(CompactMesh&& mesh, double cornerAngleDegrees = 60.0, const ExecutionContext& context = {});
+  /// Build on a prepared mesh (moved out of it) with its regions and locks: the options' points
+  /// (Options), points shared with another piece (SharedPoint) and, with lockBorderCorners,
+  /// the border corners (BorderCorner).
+  void Load(PreparedMesh& prepared, double cornerAngleDegrees, bool lockBorderCorners, const ExecutionContext& context);
 
   std::int32_t NumberOfPoints() const { return static_cast<std::int32_t>(this->Points.size()); }
   std::int32_t NumberOfTriangles() const { return static_cast<std::int32_t>(this->Alive.size()); }

@@ -28,7 +28,8 @@ std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText
     "would remove or move a point locked by the options (PreserveBoundary or the locked points)",
     "would remove or move a point shared with another piece", "would remove or move a non-manifold vertex",
     "would remove or move a border corner (the border turns there by more than BoundaryCornerAngle)",
-    "would move a vertex off its hinge (an edge of three or more triangles)" };
+    "would move a vertex off its hinge (an edge of three or more triangles)",
+    "would remove or move a seam point (a border point with a twin at its position)" };
   static_assert(sizeof(LockText) / sizeof(LockText[0]) == NumberOfLockReasons, "one text per LockReason");
   std::vector<std::pair<std::int64_t, const char*>> refusals;
   for (std::size_t c = 0; c < NumberOfCollapseChecks; ++c)
@@ -57,7 +58,7 @@ std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText
 std::string DescribeLocked(const std::array<std::int64_t, NumberOfLockReasons>& counts)
 {
   static const char* const Name[] = { "by the options", "shared with another piece", "non-manifold",
-    "border corners", "" };
+    "border corners", "", "on seams" };
   static_assert(sizeof(Name) / sizeof(Name[0]) == NumberOfLockReasons, "one name per LockReason");
   const auto kinds = std::count_if(counts.begin(), counts.end(), [](std::int64_t c) { return c > 0; });
   std::ostringstream text;
@@ -70,6 +71,18 @@ std::string DescribeLocked(const std::array<std::int64_t, NumberOfLockReasons>& 
     }
   }
   return text.str();
+}
+
+std::string DescribeLeft(std::int64_t left, const char* noun, const std::array<std::int64_t, NumberOfLockReasons>& lockedBy,
+  const RefusalCounts& refused, const char* tried, const char* passedText)
+{
+  const std::int64_t locked = std::accumulate(lockedBy.begin(), lockedBy.end(), std::int64_t(0));
+  const std::int64_t collapses = refused.Total();
+  std::string text = ": of the " + std::to_string(left) + " " + noun + " left, " + std::to_string(locked) +
+    (locked == 1 ? " is locked" : " are locked") + (locked > 0 ? " (" + DescribeLocked(lockedBy) + ")" : std::string());
+  return collapses == 0 ? text
+                        : text + "; of the others' " + std::to_string(collapses) + " " + tried + ", " +
+      DescribeRefusals(refused, passedText);
 }
 
 } // namespace meshsimp

@@ -44,9 +44,10 @@ enum class LockReason : std::uint8_t
   SharedPoint = SharedPointLock, // a point shared with another piece of a distributed mesh
   NonManifold,                   // a non-manifold vertex (always locked)
   BorderCorner,                  // the filter's: the border turns there by more than BoundaryCornerAngle
-  OffHinge                       // a plan only: it moves a vertex off its hinge
+  OffHinge,                      // a plan only: it moves a vertex off its hinge
+  Seam                           // the filter's: a border point with a twin at its position (a seam)
 };
-constexpr std::size_t NumberOfLockReasons = 5;
+constexpr std::size_t NumberOfLockReasons = 6;
 /// The place of a LockReason in per-reason tables.
 constexpr std::size_t LockIndex(LockReason reason)
 {
@@ -73,6 +74,16 @@ std::string DescribeRefusals(const RefusalCounts& counts, const char* passedText
 /// "140 non-manifold, 6 border corners" (or "all non-manifold", or "non-manifold" for one):
 /// locked vertices counted by LockReason, for a report.
 std::string DescribeLocked(const std::array<std::int64_t, NumberOfLockReasons>& counts);
+
+/**
+ * What stops a collapse filter short of its target, as the continuation of its reason:
+ * ": of the 120 points left, 8 are locked (8 border corners); of the others' 560 half-edge
+ * collapses, 71 % would ..." — left points (noun: "points", "vertices"), the locked ones by
+ * reason, and the refusals of the collapses the others were tried with (tried: what they are),
+ * whose Passed count passedText says (DescribeRefusals).
+ */
+std::string DescribeLeft(std::int64_t left, const char* noun, const std::array<std::int64_t, NumberOfLockReasons>& lockedBy,
+  const RefusalCounts& refused, const char* tried, const char* passedText);
 
 } // namespace meshsimp
 

@@ -900,22 +900,14 @@ std::int64_t Decimator::Prepare(const TriangleMeshView& input, ParallelDecimatio
   this->InputVertex = std::move(prepared.Mesh.InputVertex);
   this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
   this->Normalised = prepared;
-  this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
+  this->Mesh.Load(prepared, this->Options.BoundaryCornerAngle, false, this->Context);
   this->Mesh.TrackMerges(); // for the output points' sources
-  this->Mesh.SetRegions(std::move(prepared.Regions));
   if (prepared.Bound >= 0.0)
   {
     this->Bound.Build(this->Mesh);
     this->BoundLimit = prepared.Bound;
   }
   const std::int32_t n = this->Mesh.NumberOfPoints();
-  for (std::int32_t v = 0; v < n; ++v)
-  {
-    if (prepared.Locks[v])
-    {
-      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock ? LockReason::SharedPoint : LockReason::Options);
-    }
-  }
   this->Importance.assign(n, Never);
   this->Types.assign(n, DecimationVertexType::Complex);
   this->Owner.assign(n, 0);
@@ -1161,7 +1153,7 @@ std::string Decimator::RefusalSummary() const
 {
   // Why no vertex can be removed: the locked ones (non-manifold ones always are), and what
   // refuses every half-edge collapse of the others (measured once, where the rounds stop).
-  std::int64_t left = 0, locked = 0;
+  std::int64_t left = 0;
   std::array<std::int64_t, NumberOfLockReasons> lockedBy{};
   RefusalCounts refused;
   std::vector<std::int32_t> neighbours;
@@ -1176,7 +1168,6 @@ std::string Decimator::RefusalSummary() const
     ++left;
     if (this->Mesh.IsLocked(v))
     {
-      ++locked;
       ++lockedBy[LockIndex(this->Mesh.WhyLocked(v))];
       continue;
     }
@@ -1189,13 +1180,9 @@ std::string Decimator::RefusalSummary() const
       this->Mesh.CountRefusal(plan, this->Mesh.FirstFailedCheck(plan), refused);
     }
   }
-  const std::int64_t tried = refused.Total();
-  std::string text = ": of the " + std::to_string(left) + " vertices left, " + std::to_string(locked) +
-    (locked == 1 ? " is locked" : " are locked") + (locked > 0 ? " (" + DescribeLocked(lockedBy) + ")" : std::string());
-  return tried == 0 ? text
-                    : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " +
-      DescribeRefusals(refused, "are refused by the filter's own rules (a feature corner or edge above FeatureAngle, a "
-        "normal turned by more than MaximumNormalDeviation)");
+  return DescribeLeft(left, "vertices", lockedBy, refused, "half-edge collapses",
+    "are refused by the filter's own rules (a feature corner or edge above FeatureAngle, a normal turned by more "
+    "than MaximumNormalDeviation)");
 }
 
 void Decimator::Judge(ParallelDecimationResult& result) const

@@ -124,4 +124,17 @@ void PlaneDistanceBound::Merge(const CollapsePlan& plan, double error)
   this->Errors[plan.Vertices[0]] = error;
 }
 
+void AddPlaneDistances(const PlaneDistanceBound& bound, const std::vector<std::int32_t>& survivors, double toInput,
+  SimplifiedMesh& result)
+{
+  std::vector<double> distance(survivors.size());
+  result.Report.MaximumError = 0.0;
+  for (std::size_t i = 0; i < survivors.size(); ++i)
+  {
+    distance[i] = bound.Error(survivors[i]) * toInput;
+    result.Report.MaximumError = std::max(result.Report.MaximumError, distance[i]);
+  }
+  result.AddPointArray("PlaneDistance", std::move(distance));
+}
+
 } // namespace meshsimp

@@ -18,6 +18,7 @@
 #define MeshSimplification_PlaneDistanceBound_h
 
 #include "CollapseMesh.h"
+#include "Simplification.h"
 
 #include <Eigen/Core>
 
@@ -55,6 +56,12 @@ private:
   std::vector<std::int32_t> Head;          // per vertex: a corner of its set, -1 when empty
   std::vector<double> Errors;              // per vertex
 };
+
+/// The point array "PlaneDistance": each output point's distance to its planes (survivors: the
+/// engine vertex of each output point), times toInput (input units per mesh unit); the largest
+/// as the report's MaximumError.
+void AddPlaneDistances(const PlaneDistanceBound& bound, const std::vector<std::int32_t>& survivors, double toInput,
+  SimplifiedMesh& result);
 
 } // namespace meshsimp
 

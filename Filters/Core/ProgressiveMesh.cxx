@@ -186,7 +186,7 @@ std::string ProgressiveBuilder::DescribeCoarsest()
 {
   // The heap is empty: every point left is fixed, or each of its collapses fails a check. The
   // fixed ones by why, and the others' collapses by the check that refuses them first.
-  std::int64_t left = 0, locked = 0;
+  std::int64_t left = 0;
   std::array<std::int64_t, NumberOfLockReasons> lockedBy{};
   RefusalCounts refused;
   for (std::int32_t x = 0; x < static_cast<std::int32_t>(this->P.size()); ++x)
@@ -198,7 +198,6 @@ std::string ProgressiveBuilder::DescribeCoarsest()
     ++left;
     if (this->Vertices[x].Lock)
     {
-      ++locked;
       ++lockedBy[LockIndex(static_cast<LockReason>(this->Vertices[x].Lock))];
       continue;
     }
@@ -210,12 +209,7 @@ std::string ProgressiveBuilder::DescribeCoarsest()
       ++refused.ByCheck[static_cast<std::size_t>(check)]; // x moves, so never its locks
     }
   }
-  const std::int64_t tried = refused.Total();
-  std::string text = ": of the " + std::to_string(left) + " points left, " + std::to_string(locked) +
-    (locked == 1 ? " is locked" : " are locked") + (locked > 0 ? " (" + DescribeLocked(lockedBy) + ")" : std::string());
-  return tried == 0 ? text
-                    : text + "; of the others' " + std::to_string(tried) + " half-edge collapses, " +
-      DescribeRefusals(refused, "would pass every check");
+  return DescribeLeft(left, "points", lockedBy, refused, "half-edge collapses", "would pass every check");
 }
 
 void ProgressiveBuilder::Prepare(PreparedMesh& prepared)

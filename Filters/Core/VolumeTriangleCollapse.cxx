@@ -1214,21 +1214,11 @@ std::int64_t VolumeCollapser::Prepare(const TriangleMeshView& input, VolumeColla
   this->GuardAngle = std::min(60.0, std::max(0.0, this->Options.MinimumAngle));
   result.FinalMinimumAngle = this->GuardAngle;
   this->Mesh.SetMinimumAngle(this->GuardAngle);
-  this->Mesh.Build(std::move(prepared.Mesh), this->Options.BoundaryCornerAngle, this->Context);
-  this->Mesh.SetRegions(std::move(prepared.Regions));
+  this->Mesh.Load(prepared, this->Options.BoundaryCornerAngle, true, this->Context);
   if (prepared.Bound >= 0.0)
   {
     this->Bound.Build(this->Mesh);
     this->BoundLimit = prepared.Bound;
-  }
-  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
-  {
-    if (prepared.Locks[v] || this->Mesh.Class(v) == VertexClass::Corner)
-    {
-      this->Mesh.Lock(v, prepared.Locks[v] == SharedPointLock ? LockReason::SharedPoint
-          : prepared.Locks[v]                                 ? LockReason::Options
-                                                              : LockReason::BorderCorner);
-    }
   }
   this->MeasureAll();
   this->QueueAll();
@@ -1634,14 +1624,7 @@ void VolumeCollapser::Output(const TriangleMeshView& input, VolumeCollapseResult
   result.AddPointArray("SquareVolumeError", std::move(pointError));
   if (this->BoundLimit >= 0.0)
   {
-    std::vector<double> distance(used.size());
-    result.Report.MaximumError = 0.0;
-    for (std::size_t i = 0; i < used.size(); ++i)
-    {
-      distance[i] = this->Bound.Error(used[i]) * this->Diagonal;
-      result.Report.MaximumError = std::max(result.Report.MaximumError, distance[i]);
-    }
-    result.AddPointArray("PlaneDistance", std::move(distance));
+    AddPlaneDistances(this->Bound, used, this->Diagonal, result);
   }
   AddCollapseSources(this->Mesh.Records(), used, this->InputVertex, result);
   result.SquareVolumeError = inInputUnits(result.SquareVolumeError);
