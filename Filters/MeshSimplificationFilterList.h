@@ -28,7 +28,8 @@
   X(OctreeVertexClustering, octree, OctreeClusteringParameters, 0.03, true, "Simplify, decimate (simplification): fastest, by space cells") \
   X(VolumeTriangleCollapse, volume, VolumeCollapseParameters, 0.01, true, "Simplify, decimate (simplification): shape and enclosed space") \
   X(ParallelDecimation, parallel, ParallelDecimationParameters, 0.02, false, "Simplify, decimate (simplification): rounds on every core") \
-  X(ProgressiveMesh, progressive, ProgressiveMeshParameters, 0.01, false, "Simplify, decimate (simplification): live levels of detail")
+  X(ProgressiveMesh, progressive, ProgressiveMeshParameters, 0.01, false, "Simplify, decimate (simplification): live levels of detail") \
+  X(AppearancePreservingCollapse, appearance, AppearanceCollapseParameters, 0.01, true, "Simplify, decimate (simplification): keeps colours and shading")
 // clang-format on
 
 #endif

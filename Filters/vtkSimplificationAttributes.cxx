@@ -170,7 +170,8 @@ Eigen::Vector3d UnitOrUp(const Eigen::Vector3d& n)
 }
 
 /// Area-weighted point normals and per-triangle normals of the output, into the active normal
-/// arrays the mapping made.
+/// arrays the mapping made; where the mesh carries its normals, the mapped point normals
+/// renormalised instead (the area-weighted one where a blend cancels out).
 void RecomputeNormals(const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
   vtkDataArray* pointNormals = output->GetPointData()->GetNormals();
@@ -194,7 +195,10 @@ void RecomputeNormals(const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
   }
   for (std::size_t i = 0; i < sums.size(); ++i)
   {
-    pointNormals->SetTuple(static_cast<vtkIdType>(i), UnitOrUp(sums[i]).data());
+    Eigen::Vector3d carried;
+    pointNormals->GetTuple(static_cast<vtkIdType>(i), carried.data());
+    const bool keep = mesh.CarriesNormals && carried.allFinite() && carried.norm() > 1e-6;
+    pointNormals->SetTuple(static_cast<vtkIdType>(i), UnitOrUp(keep ? carried : sums[i]).data());
   }
 }
 

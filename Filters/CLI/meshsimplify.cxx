@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // meshsimplify: run a MeshSimplification filter on a mesh file.
 //
-//   meshsimplify --method octree|volume|parallel|progressive [--reduction R |
+//   meshsimplify --method octree|volume|parallel|progressive|appearance [--reduction R |
 //                --target-triangles N | --max-error E [--relative-error]] [--threads T]
 //                [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT
 //   meshsimplify --method METHOD --settings

@@ -116,6 +116,10 @@ struct SimplifiedMesh
   std::vector<NamedArray> PointArrays;
   std::vector<std::pair<std::string, double>> FieldValues;
   Outcome Report;
+  /// Whether the input's point normals, blended by the sources' weights and renormalised, show
+  /// the output's shading (an algorithm that keeps the surface's shape at every point it places
+  /// says so), rather than normals recomputed from the output's triangles.
+  bool CarriesNormals = false;
 
   std::int64_t NumberOfPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }
   std::int64_t NumberOfTriangles() const { return static_cast<std::int64_t>(this->TriangleSource.size()); }

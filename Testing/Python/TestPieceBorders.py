@@ -20,6 +20,7 @@ vtkPartitionedDataSet of 8 and 6 partitions on the two processes (54 and 26 open
 when blocks went one by one through the executive without the exchange).
 """
 import os
+import re
 
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkFeatureEdges
@@ -124,9 +125,14 @@ check(written == 2, "two pieces written (run under mpiexec -n 2), got %d" % writ
 check(cells == 5804 and not open_edges, "the input pieces make the closed cow (%d, %d)" % (cells, len(open_edges)))
 cut = piece_points("input", 0) & piece_points("input", 1)
 check(len(cut) > 50, "the pieces share a cut, %d points" % len(cut))
-COLLAPSE_FILTERS = (("volume", VolumeTriangleCollapse), ("parallel", ParallelDecimation),
-                    ("progressive", ProgressiveMesh))
-for name, F in COLLAPSE_FILTERS + (("octree", OctreeVertexClustering),):
+# Every registered filter (Filters/MeshSimplificationFilterList.h), by its CLI method; all but the
+# octree's clustering collapse edges, and their pieces close up everywhere.
+with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Filters",
+                       "MeshSimplificationFilterList.h")) as registration:
+    FILTERS = tuple((method, globals()[name])
+                    for name, method in re.findall(r"\n  X\(([A-Za-z]+), ([a-z]+), [A-Za-z]+,", registration.read()))
+COLLAPSE_FILTERS = tuple(entry for entry in FILTERS if entry[0] != "octree")
+for name, F in FILTERS:
     written, cells, open_edges = merged(name, F(Input=pieces))
     check(written == 2 and abs(cells - 580) <= 12, "%s: 2 pieces, 580 +- 2 %% triangles, got %d" % (name, cells))
     on_cut = [e for e in open_edges if e[0] in cut and e[1] in cut]
@@ -184,7 +190,7 @@ for name, F in COLLAPSE_FILTERS:
 # takes each piece to its share again: every filter within 5 % of the count, still closed.
 wavelet = Wavelet(WholeExtent=[-20, 20, -20, 20, -20, 20])
 iso = Triangulate(Input=Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[200.0], ComputeScalars=0))
-for name, F in COLLAPSE_FILTERS + (("octree", OctreeVertexClustering),):
+for name, F in FILTERS:
     written, cells, open_edges = merged("iso_" + name, ExtractSurface(Input=MergeBlocks(
         Input=F(Input=iso, TargetMode="Triangle Count", TargetTriangleCount=318, ComputeDeviation=0))))
     check(abs(cells - 318) <= 16 and not open_edges,

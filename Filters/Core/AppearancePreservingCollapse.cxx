@@ -1,0 +1,747 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "AppearancePreservingCollapse.h"
+
+#include "CollapseLoop.h"
+#include "CollapseMesh.h"
+#include "PlaneDistanceBound.h"
+#include "Quadric.h"
+#include "VertexQueue.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace meshsimp
+{
+
+Eigen::Vector3d CurvePoint(const Eigen::Vector3d& p1, const Eigen::Vector3d& n1, const Eigen::Vector3d& p2,
+  const Eigen::Vector3d& n2, double t)
+{
+  // The tangents of eq. 7.7–7.8 (each the other normal's part across the own one) have the same
+  // squared length 1 − (n1·n2)²; the coefficients of eq. 7.10–7.13 enter f only as the chord's
+  // projections onto them (αβ T1 and α'β' T2), so nothing divides by T1·T2, which vanishes for
+  // normals at right angles.
+  const Eigen::Vector3d chord = p2 - p1;
+  const double c = n1.dot(n2);
+  const double across = 1.0 - c * c;
+  if (!(across > 1e-8)) // within 0.006° of parallel or opposite: no tangent
+  {
+    return p1 + t * chord;
+  }
+  const Eigen::Vector3d t1 = n2 - c * n1, t2 = c * n2 - n1;
+  const Eigen::Vector3d along1 = (chord.dot(t1) / across) * t1;
+  const Eigen::Vector3d along2 = (chord.dot(t2) / across) * t2;
+  const Eigen::Vector3d a = 0.5 * (along2 - along1); // eq. 7.14: f(t) = a t² + (chord − a) t + p1
+  return p1 + t * (chord - a + t * a);
+}
+
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+constexpr double Pi = 3.14159265358979323846;
+/// The importance of a vertex whose normals cancel (no mean direction at all).
+constexpr double CancelledImportance = 1e30;
+
+double Radians(double degrees)
+{
+  return degrees * Pi / 180.0;
+}
+
+/// An edge around the vertex being planned: its far end, and the far corners of its (up to
+/// two) triangles, for the second curve.
+struct EdgeAround
+{
+  std::int32_t Vertex;
+  std::int32_t Far[2];
+  int Triangles;
+};
+
+class AppearanceCollapser
+{
+public:
+  AppearanceCollapser(const AppearanceCollapseOptions& options, const ExecutionContext& context)
+    : Options(options)
+    , Context(context)
+    , ExtremeImportance(1.0 / std::max(1e-12, std::cos(Radians(0.5 * options.ExtremeAngle))))
+    , CosDeviation(std::cos(Radians(options.MaximumNormalDeviation)))
+    , CosFlatTurn(std::cos(Radians(180.0 - options.FlatEdgeAngle)))
+  {
+  }
+
+  bool Run(const TriangleMeshView& input, AppearanceCollapseResult& result);
+
+  /// The vertex queue's policy (VertexQueue.h): a star's normal and importance (Measure), the
+  /// order's key, the proposals, and the bookkeeping after a collapse.
+  void Measure(std::int32_t v);
+  double Key(std::int32_t v);
+  void Propose(std::int32_t x, std::vector<CollapseProposal>& out) { this->Proposals(x, out); }
+  /// No triangle turned by more than MaximumNormalDeviation, none left without area; the bound.
+  bool Accepts(const CollapsePlan& plan) const
+  {
+    return this->AreaChange(plan) >= 0.0 && !(this->BoundLimit >= 0.0 && this->Bound.Distance(plan) > this->BoundLimit);
+  }
+  const char* OwnRules() const
+  {
+    return "are refused by the filter's own rules (a normal turned by more than MaximumNormalDeviation, the error "
+           "bound)";
+  }
+  bool ScoresAreKeys() const { return this->Options.Order == AppearanceOrder::Quadric; }
+  void Collapsed(const CollapsePlan& plan);
+
+private:
+  /// The prepared mesh in the engine with its locks (seams among them), point data, quadrics
+  /// and bound; returns the count.
+  std::int64_t Prepare(const TriangleMeshView& input, AppearanceCollapseResult& result);
+  void LockSeams();
+  void ReadAttributes();
+  /// Each vertex's quadric: the area-weighted planes of its triangles (and of the planes through
+  /// its open-border edges perpendicular to them) and its point data's linear fields over them.
+  void BuildQuadrics();
+  void AddTriangleQuadric(std::int32_t t);
+  bool IsExtreme(std::int32_t v) const { return this->Importance[v] >= this->ExtremeImportance; }
+  /// Whether the edge's two triangles meet at more than FlatEdgeAngle.
+  bool IsFlatEdge(std::int32_t x, std::int32_t y) const;
+  /// Whether a half-edge collapse of removed into kept is one the vertex kinds allow.
+  bool MayMerge(std::int32_t removed, std::int32_t kept) const;
+  /// x's edges with their far corners, into Edges.
+  void GatherEdges(std::int32_t x);
+  /// The curve parameter of the edge (x, y) by the chapter's rules, or -1 where they refuse it.
+  double Parameter(std::int32_t x, std::int32_t y, bool onlyExtreme) const;
+  /// The contraction of the edge for x, at parameter t (see the top of the header).
+  void PlanEdge(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const;
+  Vec3 Place(std::int32_t x, const EdgeAround& edge, double t) const;
+  /// The plan's change of area, or -1 where a triangle would turn by more than
+  /// MaximumNormalDeviation or lose its area.
+  double AreaChange(const CollapsePlan& plan) const;
+  /// Quadric order: the plan (the chapter's, at parameter t) replaced by the placement of least
+  /// error among the chapter's candidates; returns that error.
+  double LeastErrorPlacement(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const;
+  /// The plan's point data weights re-fitted: the blend of its ends' of least field error at its
+  /// point (meshoptimizer's simplifyWithUpdate re-fits values freely; here within the blends,
+  /// which the output's point data follows). Returns the merged quadrics' error there.
+  double FitBlend(CollapsePlan& plan) const;
+  /// Replaces plan (of error best) by the quadric's point of least error where that is lower.
+  void ConsiderOptimum(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan, double& best) const;
+  /// x's contractions the chapter's and the borders' rules allow, scored by the order's measure
+  /// (the chapter's: the change of area, where the normals allow it).
+  void Proposals(std::int32_t x, std::vector<CollapseProposal>& out);
+  void Output(const TriangleMeshView& input, AppearanceCollapseResult& result) const;
+
+  const AppearanceCollapseOptions& Options;
+  const ExecutionContext& Context;
+  const double ExtremeImportance, CosDeviation, CosFlatTurn;
+  CollapseMesh Mesh;
+  Frame Normalised;
+  double Diagonal = 1.0;
+  std::vector<std::int32_t> InputVertex, InputTriangle;
+  std::vector<Vec3> UnitNormal;    // eq. 7.6's mean, normalised (zero where the normals cancel)
+  std::vector<double> Importance;  // its inverse length
+  // Point data: Dimension values per vertex, blended through the collapses, and the quadrics'
+  // parts for it (Hoppe's): per vertex and component the area-weighted sums of each linear
+  // field's gradient and offset (4 values), and one area sum per vertex.
+  int Dimension = 0;
+  std::vector<double> Attributes, Gradients, FieldArea;
+  std::vector<Quadric> Quadrics, FieldQuadrics; // the planes; the fields' part in the position
+  std::vector<std::uint8_t> Moved; // a collapse gave the vertex a new position
+  PlaneDistanceBound Bound;
+  double BoundLimit = -1.0;        // in mesh units; < 0: no bound
+  std::vector<std::int32_t> Ring;
+  std::vector<EdgeAround> Edges;
+  std::vector<std::int32_t> EdgeSlot; // per vertex, its place in Edges while gathered (-1: none)
+  std::vector<CollapseProposal> KeyProposals;
+};
+
+void AppearanceCollapser::Measure(std::int32_t v)
+{
+  // Eq. 7.6: the triangles' unit normals weighted by their apical angles at v, which makes the
+  // mean independent of how the fan is cut into triangles (Fig. 7-6).
+  const Vec3& p = this->Mesh.Point(v);
+  Vec3 sum = Vec3::Zero();
+  double angles = 0.0;
+  this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+    const Vec3 a = this->Mesh.Point(next) - p, b = this->Mesh.Point(previous) - p;
+    const Vec3 cross = a.cross(b);
+    const double length = cross.norm();
+    if (length > 0.0)
+    {
+      const double angle = std::atan2(length, a.dot(b));
+      sum += (angle / length) * cross;
+      angles += angle;
+    }
+  });
+  const double length = angles > 0.0 ? sum.norm() / angles : 0.0;
+  this->UnitNormal[v] = length > 0.0 ? Vec3(sum / sum.norm()) : Vec3::Zero();
+  this->Importance[v] = length > 0.0 ? std::min(CancelledImportance, 1.0 / length) : CancelledImportance;
+}
+
+double AppearanceCollapser::Key(std::int32_t v)
+{
+  if (this->Options.Order == AppearanceOrder::NormalSpread)
+  {
+    return this->Importance[v];
+  }
+  // The error of v's cheapest contraction, before the checks (which run when v is on top).
+  std::vector<CollapseProposal>& proposals = this->KeyProposals;
+  this->Proposals(v, proposals);
+  double best = std::numeric_limits<double>::infinity();
+  for (const CollapseProposal& proposal : proposals)
+  {
+    best = std::min(best, proposal.Score);
+  }
+  return best;
+}
+
+bool AppearanceCollapser::IsFlatEdge(std::int32_t x, std::int32_t y) const
+{
+  Vec3 normals[2];
+  int count = 0;
+  this->Mesh.ForEachTriangleOnEdge(x, y, [&](std::int32_t t) {
+    if (count < 2)
+    {
+      normals[count] = this->Mesh.Normal(t);
+    }
+    ++count;
+  });
+  // Triangles meeting at an angle φ have normals π − φ apart.
+  return count == 2 && normals[0].dot(normals[1]) > this->CosFlatTurn;
+}
+
+bool AppearanceCollapser::MayMerge(std::int32_t removed, std::int32_t kept) const
+{
+  if (this->Mesh.IsLocked(removed))
+  {
+    return false;
+  }
+  const VertexClass kind = this->Mesh.Class(removed);
+  const CollapseRule rule = HalfEdgeRule(kind, this->Mesh.Class(kept));
+  return rule == CollapseRule::Free ||
+    (rule == CollapseRule::AlongEdge && IsOwnEdge(kind, this->Mesh.TrianglesOnEdge(removed, kept)));
+}
+
+void AppearanceCollapser::GatherEdges(std::int32_t x)
+{
+  // One walk around x: the edge (x, next) has the far corner previous in the triangle, the
+  // edge (x, previous) the far corner next.
+  this->Edges.clear();
+  const auto add = [this](std::int32_t y, std::int32_t far) {
+    std::int32_t& slot = this->EdgeSlot[y];
+    if (slot < 0)
+    {
+      slot = static_cast<std::int32_t>(this->Edges.size());
+      this->Edges.push_back({ y, { far, -1 }, 0 });
+    }
+    EdgeAround& edge = this->Edges[slot];
+    if (edge.Triangles < 2)
+    {
+      edge.Far[edge.Triangles] = far;
+    }
+    ++edge.Triangles;
+  };
+  this->Mesh.ForEachCorner(x, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+    add(next, previous);
+    add(previous, next);
+  });
+  for (const EdgeAround& edge : this->Edges)
+  {
+    this->EdgeSlot[edge.Vertex] = -1;
+  }
+}
+
+double AppearanceCollapser::Parameter(std::int32_t x, std::int32_t y, bool onlyExtreme) const
+{
+  // Extreme ends stay (the more important of two); an edge of two extreme ends goes only if it
+  // is sharp; an extreme vertex with an extreme neighbour only along such an edge. Otherwise the
+  // importance puts the point (t = 0 at x, 1 at y), and an end that may not move (a border, a
+  // lock, a hinge) takes it.
+  const bool xExtreme = this->IsExtreme(x), yExtreme = this->IsExtreme(y);
+  if (onlyExtreme && !yExtreme)
+  {
+    return -1.0;
+  }
+  double t = this->Importance[y] / (this->Importance[x] + this->Importance[y]);
+  if (xExtreme && yExtreme)
+  {
+    if (this->IsFlatEdge(x, y))
+    {
+      return -1.0;
+    }
+    t = this->Importance[x] >= this->Importance[y] ? 0.0 : 1.0;
+  }
+  else if (xExtreme || yExtreme)
+  {
+    t = xExtreme ? 0.0 : 1.0;
+  }
+  const bool xFree = this->Mesh.Class(x) == VertexClass::Interior && !this->Mesh.IsLocked(x);
+  const bool yFree = this->Mesh.Class(y) == VertexClass::Interior && !this->Mesh.IsLocked(y);
+  if (t > 0.0 && t < 1.0 && !(xFree && yFree))
+  {
+    t = xFree ? 1.0 : yFree ? 0.0 : this->MayMerge(x, y) ? 1.0 : 0.0;
+  }
+  const bool allowed = t <= 0.0 ? this->MayMerge(y, x) : t >= 1.0 ? this->MayMerge(x, y) : true;
+  return allowed ? t : -1.0;
+}
+
+Vec3 AppearanceCollapser::Place(std::int32_t x, const EdgeAround& edge, double t) const
+{
+  // The first curve over the edge; the second across the far corners of its two triangles when
+  // their quad is not arrow-shaped (the edge's ends on the two sides of the corners' line), its
+  // parameter from their importance over their distance to the first point; the new point
+  // midway between the two (Fig. 7-9).
+  const std::int32_t y = edge.Vertex;
+  const Vec3& p1 = this->Mesh.Point(x);
+  const Vec3& p2 = this->Mesh.Point(y);
+  const Vec3 first = CurvePoint(p1, this->UnitNormal[x], p2, this->UnitNormal[y], t);
+  Vec3 point = first;
+  if (edge.Triangles == 2)
+  {
+    const std::int32_t a = edge.Far[0], b = edge.Far[1];
+    const Vec3& c1 = this->Mesh.Point(a);
+    const Vec3& c2 = this->Mesh.Point(b);
+    const Vec3 up = this->UnitNormal[x] + this->UnitNormal[y];
+    const Vec3 line = c2 - c1;
+    if (up.dot(line.cross(p1 - c1)) * up.dot(line.cross(p2 - c1)) < 0.0)
+    {
+      const double w1 = this->Importance[a] / std::max(1e-300, (c1 - first).norm());
+      const double w2 = this->Importance[b] / std::max(1e-300, (c2 - first).norm());
+      const double across = w1 + w2 > 0.0 && std::isfinite(w1 + w2) ? w2 / (w1 + w2) : 0.5;
+      point = 0.5 * (first + CurvePoint(c1, this->UnitNormal[a], c2, this->UnitNormal[b], across));
+    }
+  }
+  return this->Normalised.InBox(point);
+}
+
+void AppearanceCollapser::PlanEdge(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const
+{
+  // The end nearer the new point is kept: its id, and its data first in the output's sources.
+  const std::int32_t y = edge.Vertex;
+  const bool keepX = t <= 0.5;
+  plan.Count = 2;
+  plan.Vertices[0] = keepX ? x : y;
+  plan.Vertices[1] = keepX ? y : x;
+  plan.Vertices[2] = -1;
+  plan.Weights[0] = keepX ? 1.0 - t : t;
+  plan.Weights[1] = 1.0 - plan.Weights[0];
+  plan.Weights[2] = 0.0;
+  plan.Position = t <= 0.0 ? this->Mesh.Point(x) : t >= 1.0 ? this->Mesh.Point(y) : this->Place(x, edge, t);
+}
+
+double AppearanceCollapser::AreaChange(const CollapsePlan& plan) const
+{
+  // The triangles around both ends: those on the edge go, the others get the new point (each
+  // visited once: from the removed end, those without the kept one).
+  const std::int32_t kept = plan.Vertices[0], removed = plan.Vertices[1];
+  double before = 0.0, after = 0.0;
+  bool allowed = true;
+  for (const std::int32_t v : { kept, removed })
+  {
+    this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+      const bool onEdge = next == kept || next == removed || previous == kept || previous == removed;
+      if (v == removed && onEdge)
+      {
+        return; // the triangle on the edge, counted from the kept end
+      }
+      const Vec3& p = this->Mesh.Point(v);
+      const Vec3& q = this->Mesh.Point(next);
+      const Vec3& r = this->Mesh.Point(previous);
+      const Vec3 old = (q - p).cross(r - p);
+      before += 0.5 * old.norm();
+      if (onEdge)
+      {
+        return; // removed
+      }
+      const Vec3 moved = (q - plan.Position).cross(r - plan.Position);
+      const double length = moved.norm();
+      allowed = allowed && length > 0.0 && moved.dot(old) >= this->CosDeviation * length * old.norm();
+      after += 0.5 * length;
+    });
+  }
+  return allowed ? std::abs(after - before) : -1.0;
+}
+
+double AppearanceCollapser::FitBlend(CollapsePlan& plan) const
+{
+  // The point data at the plan's point: the blend s = (1 − u) s_a + u s_b of least field error,
+  // E(u) = Σ_k area s_k(u)² − 2 s_k(u) F_k(p), a parabola in u (F_k: the fields' sum at p); the
+  // plan's whole error with it, from the same sums.
+  const std::int32_t a = plan.Vertices[0], b = plan.Vertices[1];
+  Quadric q = this->Quadrics[a];
+  q += this->Quadrics[b];
+  double error = q.Evaluate(plan.Position);
+  if (this->Dimension == 0)
+  {
+    return std::max(0.0, error);
+  }
+  Quadric fields = this->FieldQuadrics[a];
+  fields += this->FieldQuadrics[b];
+  error += fields.Evaluate(plan.Position);
+  const double area = this->FieldArea[a] + this->FieldArea[b];
+  const double* ga = this->Gradients.data() + 4 * static_cast<std::int64_t>(a) * this->Dimension;
+  const double* gb = this->Gradients.data() + 4 * static_cast<std::int64_t>(b) * this->Dimension;
+  const double* sa = this->Attributes.data() + static_cast<std::int64_t>(a) * this->Dimension;
+  const double* sb = this->Attributes.data() + static_cast<std::int64_t>(b) * this->Dimension;
+  const Vec3& p = plan.Position;
+  double fromFrom = 0.0, fromField = 0.0, fromChange = 0.0, changeChange = 0.0, changeField = 0.0;
+  for (int k = 0; k < this->Dimension; ++k)
+  {
+    const double* u = ga + 4 * k;
+    const double* w = gb + 4 * k;
+    const double field = (u[0] + w[0]) * p.x() + (u[1] + w[1]) * p.y() + (u[2] + w[2]) * p.z() + u[3] + w[3];
+    const double from = sa[k], change = sb[k] - sa[k];
+    fromFrom += from * from;
+    fromField += from * field;
+    fromChange += from * change;
+    changeChange += change * change;
+    changeField += change * field;
+  }
+  const double curvature = area * changeChange;
+  const double u = curvature > 0.0 ? std::min(1.0, std::max(0.0, (changeField - area * fromChange) / curvature)) : 0.0;
+  if (curvature > 0.0)
+  {
+    plan.Weights[0] = 1.0 - u;
+    plan.Weights[1] = u;
+  }
+  const double blend = plan.Weights[1]; // u, or the plan's own weight where the ends agree
+  error += area * (fromFrom + 2.0 * blend * fromChange + blend * blend * changeChange) -
+    2.0 * (fromField + blend * changeField);
+  return std::max(0.0, error);
+}
+
+double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const
+{
+  // The chapter's point (plan, as PlanEdge made it), the first curve's alone (the second, across
+  // the far corners, pulls a point on a colour border off it), and the ends the kinds allow:
+  // the one of least error.
+  double best = this->FitBlend(plan);
+  CollapsePlan other;
+  const auto consider = [&](double at) {
+    this->PlanEdge(x, edge, at, other);
+    if (at > 0.0 && at < 1.0)
+    {
+      other.Position = this->Normalised.InBox(
+        CurvePoint(this->Mesh.Point(x), this->UnitNormal[x], this->Mesh.Point(edge.Vertex), this->UnitNormal[edge.Vertex], at));
+    }
+    const double error = this->FitBlend(other);
+    if (error < best)
+    {
+      best = error;
+      plan = other;
+    }
+  };
+  if (t > 0.0 && t < 1.0)
+  {
+    if (edge.Triangles == 2)
+    {
+      consider(t);
+    }
+    this->ConsiderOptimum(x, edge, t, plan, best);
+    if (this->MayMerge(edge.Vertex, x))
+    {
+      consider(0.0);
+    }
+    if (this->MayMerge(x, edge.Vertex))
+    {
+      consider(1.0);
+    }
+  }
+  return best;
+}
+
+void AppearanceCollapser::ConsiderOptimum(
+  std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan, double& best) const
+{
+  // The point of least distance to the merged planes (Garland and Heckbert's placement, as
+  // meshoptimizer's simplifyWithUpdate re-fits positions), where they fix one within the edge's
+  // length of the chapter's point; the point data blended at its place along the edge. (The fields are left
+  // out of the minimisation: with them the point would leave the surface to meet a colour.)
+  const std::int32_t y = edge.Vertex;
+  Quadric q = this->Quadrics[x];
+  q += this->Quadrics[y];
+  const Vec3& p1 = this->Mesh.Point(x);
+  const Vec3& p2 = this->Mesh.Point(y);
+  const Vec3 chord = p2 - p1;
+  const double length2 = chord.squaredNorm();
+  if (!(length2 > 0.0))
+  {
+    return;
+  }
+  Vec3 optimum;
+  if (!MinimizeQuadric(q, optimum) || (optimum - plan.Position).squaredNorm() > length2)
+  {
+    return; // the planes fix no point near the edge (a flat region, a crease): the others stand
+  }
+  const double along = std::min(1.0, std::max(0.0, (optimum - p1).dot(chord) / length2));
+  CollapsePlan other;
+  this->PlanEdge(x, edge, along > 0.0 && along < 1.0 ? along : t, other);
+  other.Position = this->Normalised.InBox(optimum);
+  const double error = this->FitBlend(other);
+  if (error < best)
+  {
+    best = error;
+    plan = other;
+  }
+}
+
+void AppearanceCollapser::Proposals(std::int32_t x, std::vector<CollapseProposal>& out)
+{
+  out.clear();
+  this->GatherEdges(x);
+  const bool onlyExtreme = this->IsExtreme(x) && std::any_of(this->Edges.begin(), this->Edges.end(),
+    [this](const EdgeAround& edge) { return this->IsExtreme(edge.Vertex); });
+  const bool chapter = this->Options.Order == AppearanceOrder::NormalSpread;
+  CollapseProposal proposal;
+  for (const EdgeAround& edge : this->Edges)
+  {
+    const double t = this->Parameter(x, edge.Vertex, onlyExtreme);
+    if (t < 0.0)
+    {
+      continue;
+    }
+    this->PlanEdge(x, edge, t, proposal.Plan);
+    proposal.Score = chapter ? this->AreaChange(proposal.Plan) : this->LeastErrorPlacement(x, edge, t, proposal.Plan);
+    if (proposal.Score >= 0.0)
+    {
+      out.push_back(proposal);
+    }
+  }
+}
+
+void AppearanceCollapser::Collapsed(const CollapsePlan& plan)
+{
+  const std::int32_t kept = plan.Vertices[0], removed = plan.Vertices[1];
+  this->Moved[kept] |= plan.Position != this->Mesh.Point(kept) ? 1 : 0; // before the engine applies it
+  for (int k = 0; k < this->Dimension; ++k)
+  {
+    double& value = this->Attributes[kept * this->Dimension + k];
+    value = plan.Weights[0] * value + plan.Weights[1] * this->Attributes[removed * this->Dimension + k];
+  }
+  if (!this->Quadrics.empty())
+  {
+    this->Quadrics[kept] += this->Quadrics[removed];
+  }
+  if (this->Dimension > 0)
+  {
+    this->FieldQuadrics[kept] += this->FieldQuadrics[removed];
+    this->FieldArea[kept] += this->FieldArea[removed];
+    double* into = this->Gradients.data() + 4 * static_cast<std::int64_t>(kept) * this->Dimension;
+    const double* from = this->Gradients.data() + 4 * static_cast<std::int64_t>(removed) * this->Dimension;
+    for (int i = 0; i < 4 * this->Dimension; ++i)
+    {
+      into[i] += from[i];
+    }
+  }
+  if (this->BoundLimit >= 0.0)
+  {
+    this->Bound.Merge(plan, this->Bound.Distance(plan));
+  }
+}
+
+void AppearanceCollapser::LockSeams()
+{
+  // Border points at the same position as another point (after cracks are closed, those whose
+  // point data differ: a texture, colour or normal seam) stay where they are, on both sides.
+  std::vector<std::int32_t> border;
+  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
+  {
+    if (this->Mesh.OnBoundary(v) && this->Mesh.NumberOfTrianglesAround(v) > 0)
+    {
+      border.push_back(v);
+    }
+  }
+  const auto before = [this](std::int32_t a, std::int32_t b) {
+    const Vec3& p = this->Mesh.Point(a);
+    const Vec3& q = this->Mesh.Point(b);
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3) || (p == q && a < b);
+  };
+  std::sort(border.begin(), border.end(), before);
+  for (std::size_t i = 1; i < border.size(); ++i)
+  {
+    if (this->Mesh.Point(border[i]) == this->Mesh.Point(border[i - 1]))
+    {
+      for (const std::int32_t v : { border[i], border[i - 1] })
+      {
+        if (!this->Mesh.IsLocked(v))
+        {
+          this->Mesh.Lock(v, LockReason::Seam);
+        }
+      }
+    }
+  }
+}
+
+void AppearanceCollapser::ReadAttributes()
+{
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  this->Dimension = this->Options.AttributeCoordinates && this->Options.Order == AppearanceOrder::Quadric
+    ? std::max(0, this->Options.AttributeDimension)
+    : 0;
+  this->Attributes.resize(static_cast<std::size_t>(n) * this->Dimension);
+  for (std::int32_t v = 0; v < n && this->Dimension > 0; ++v)
+  {
+    const double* values =
+      this->Options.AttributeCoordinates + static_cast<std::int64_t>(this->InputVertex[v]) * this->Dimension;
+    std::copy(values, values + this->Dimension, this->Attributes.begin() + static_cast<std::int64_t>(v) * this->Dimension);
+  }
+}
+
+void AppearanceCollapser::AddTriangleQuadric(std::int32_t t)
+{
+  // The plane, area-weighted, at each corner; for each component its linear field over the
+  // triangle, g·p + d with g in the plane, weighted by area times AttributeWeight² (so that a
+  // deviation of 1 counts as that distance); the planes through open-border edges.
+  const std::int32_t* tri = this->Mesh.Triangle(t);
+  const Vec3& p0 = this->Mesh.Point(tri[0]);
+  const Vec3 e1 = this->Mesh.Point(tri[1]) - p0, e2 = this->Mesh.Point(tri[2]) - p0;
+  const Vec3 cross = e1.cross(e2);
+  const double area = 0.5 * cross.norm();
+  if (!(area > 0.0))
+  {
+    return;
+  }
+  const Vec3 n = cross.normalized();
+  const Quadric plane = Quadric::FromPlane(n, -n.dot(p0), area);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Quadrics[tri[k]] += plane;
+    const std::int32_t a = tri[k], b = tri[(k + 1) % 3];
+    Quadric border;
+    if (this->Mesh.OnBoundary(a) && this->Mesh.OnBoundary(b) && this->Mesh.TrianglesOnEdge(a, b) == 1 &&
+      Quadric::FromBorderEdge(this->Mesh.Point(a), this->Mesh.Point(b), n, border))
+    {
+      this->Quadrics[a] += border;
+      this->Quadrics[b] += border;
+    }
+  }
+  if (this->Dimension == 0)
+  {
+    return;
+  }
+  const double weight = area * this->Options.AttributeWeight * this->Options.AttributeWeight;
+  const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2);
+  const double det = g11 * g22 - g12 * g12;
+  for (int c = 0; c < this->Dimension; ++c)
+  {
+    const double s0 = this->Attributes[tri[0] * this->Dimension + c];
+    const double d1 = this->Attributes[tri[1] * this->Dimension + c] - s0;
+    const double d2 = this->Attributes[tri[2] * this->Dimension + c] - s0;
+    // g = α e1 + β e2 with g·e1 = d1 and g·e2 = d2.
+    const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
+    const Vec3 g = alpha * e1 + beta * e2;
+    const double offset = s0 - g.dot(p0);
+    const Quadric field = Quadric::FromPlane(g, offset, weight);
+    for (int k = 0; k < 3; ++k)
+    {
+      this->FieldQuadrics[tri[k]] += field;
+      double* gradient = this->Gradients.data() + 4 * (static_cast<std::int64_t>(tri[k]) * this->Dimension + c);
+      gradient[0] += weight * g.x();
+      gradient[1] += weight * g.y();
+      gradient[2] += weight * g.z();
+      gradient[3] += weight * offset;
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    this->FieldArea[tri[k]] += weight;
+  }
+}
+
+void AppearanceCollapser::BuildQuadrics()
+{
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  this->Quadrics.assign(n, Quadric());
+  this->FieldQuadrics.assign(this->Dimension > 0 ? n : 0, Quadric());
+  this->Gradients.assign(4 * static_cast<std::size_t>(n) * this->Dimension, 0.0);
+  this->FieldArea.assign(this->Dimension > 0 ? n : 0, 0.0);
+  for (std::int32_t t = 0; t < this->Mesh.NumberOfTriangles(); ++t)
+  {
+    if (this->Mesh.IsAlive(t))
+    {
+      this->AddTriangleQuadric(t);
+    }
+  }
+}
+
+std::int64_t AppearanceCollapser::Prepare(const TriangleMeshView& input, AppearanceCollapseResult& result)
+{
+  PreparedMesh prepared = PrepareMesh(input, this->Options, Normalization::CentreAndDiagonal, this->Context);
+  result.Report = prepared.Report();
+  this->InputVertex = std::move(prepared.Mesh.InputVertex);
+  this->InputTriangle = std::move(prepared.Mesh.InputTriangle);
+  this->Normalised = prepared;
+  this->Diagonal = prepared.Diagonal > 0.0 ? prepared.Diagonal : 1.0;
+  this->Mesh.Load(prepared, this->Options.BoundaryCornerAngle, true, this->Context);
+  if (prepared.Bound >= 0.0)
+  {
+    this->Bound.Build(this->Mesh);
+    this->BoundLimit = prepared.Bound;
+  }
+  const std::int32_t n = this->Mesh.NumberOfPoints();
+  this->LockSeams();
+  this->ReadAttributes();
+  if (this->Options.Order == AppearanceOrder::Quadric)
+  {
+    this->BuildQuadrics();
+  }
+  this->UnitNormal.assign(n, Vec3::Zero());
+  this->Importance.assign(n, 1.0);
+  this->Moved.assign(n, 0);
+  this->EdgeSlot.assign(n, -1);
+  return prepared.TargetTriangles;
+}
+
+void AppearanceCollapser::Output(const TriangleMeshView& input, AppearanceCollapseResult& result) const
+{
+  const std::vector<std::int32_t> used =
+    WriteSurvivors(this->Mesh, this->Moved, this->Normalised, input, this->InputVertex, this->InputTriangle, result);
+  std::vector<double> importance(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    importance[i] = this->Importance[used[i]];
+  }
+  result.AddPointArray("Importance", std::move(importance));
+  if (this->BoundLimit >= 0.0)
+  {
+    AddPlaneDistances(this->Bound, used, this->Diagonal, result);
+  }
+  AddCollapseSources(this->Mesh.Records(), used, this->InputVertex, result);
+  result.FieldValues.emplace_back("Passes", static_cast<double>(result.Passes));
+  result.CarriesNormals = true;
+}
+
+bool AppearanceCollapser::Run(const TriangleMeshView& input, AppearanceCollapseResult& result)
+{
+  result = AppearanceCollapseResult();
+  const std::int64_t target = this->Prepare(input, result);
+  if (!this->Context.Report(0.1))
+  {
+    result.Report.Stop = StopReason::Aborted;
+    return false;
+  }
+  VertexQueue<AppearanceCollapser> queue(this->Mesh, *this, this->Options.VertexMemory);
+  queue.QueueAll();
+  CollapseLoopEnd end;
+  if (result.Report.Stop != StopReason::AllLocked)
+  {
+    end = RunCollapseLoop(queue, target, { 0.1, 0.95 }, this->Context);
+  }
+  if (end.Why == CollapseLoopEnd::Reason::Aborted)
+  {
+    result.Report.Stop = StopReason::Aborted;
+    return false;
+  }
+  result.Passes = queue.Passes();
+  this->Output(input, result);
+  end.Judge(result.Report, this->BoundLimit >= 0.0, "no collapse is left that keeps the mesh valid");
+  return this->Context.Report(1.0);
+}
+
+} // namespace
+
+bool AppearancePreservingCollapse(const TriangleMeshView& input, const AppearanceCollapseOptions& options,
+  AppearanceCollapseResult& result, const ExecutionContext& context)
+{
+  return AppearanceCollapser(options, context).Run(input, result);
+}
+
+} // namespace meshsimp

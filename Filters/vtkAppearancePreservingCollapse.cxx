@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkAppearancePreservingCollapse.h"
+
+#include "AppearancePreservingCollapse.h"
+#include "vtkSimplificationInput.h"
+
+#include "vtkDataArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkAppearancePreservingCollapse);
+
+namespace
+{
+/// Appends array's components, each mapped onto [0, 1] (unsigned chars over 255, normals from
+/// [-1, 1], others over their range), to the attribute coordinates of every point.
+void AppendScaled(vtkDataArray* array, bool normals, std::vector<double>& columns, int& dimension)
+{
+  const vtkIdType n = array->GetNumberOfTuples();
+  for (int k = 0; k < array->GetNumberOfComponents(); ++k)
+  {
+    double low = 0.0, span = 1.0;
+    if (vtkUnsignedCharArray::SafeDownCast(array))
+    {
+      span = 255.0;
+    }
+    else if (normals)
+    {
+      low = -1.0;
+      span = 2.0;
+    }
+    else
+    {
+      double range[2];
+      array->GetRange(range, k);
+      low = range[0];
+      span = range[1] > range[0] ? range[1] - range[0] : 1.0;
+    }
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      const double value = (array->GetComponent(p, k) - low) / span;
+      columns.push_back(std::isfinite(value) ? value : 0.0);
+    }
+    ++dimension;
+  }
+}
+
+/// The point data the Quadric order weighs (see the class's notes), one row per point.
+std::vector<double> AttributeCoordinates(vtkAlgorithm* filter, vtkPolyData* input, int& dimension)
+{
+  std::vector<double> columns;
+  dimension = 0;
+  vtkPointData* data = input->GetPointData();
+  if (vtkDataArray* normals = data->GetNormals())
+  {
+    AppendScaled(normals, true, columns, dimension);
+  }
+  for (int i = 0; i < data->GetNumberOfArrays(); ++i)
+  {
+    auto* colours = vtkUnsignedCharArray::SafeDownCast(data->GetArray(i));
+    if (colours && (colours->GetNumberOfComponents() == 3 || colours->GetNumberOfComponents() == 4))
+    {
+      AppendScaled(colours, false, columns, dimension);
+    }
+  }
+  if (vtkDataArray* coordinates = data->GetTCoords())
+  {
+    AppendScaled(coordinates, false, columns, dimension);
+  }
+  vtkDataArray* scalars = data->GetScalars();
+  if (scalars && !vtkUnsignedCharArray::SafeDownCast(scalars)) // colours are in already
+  {
+    AppendScaled(scalars, false, columns, dimension);
+  }
+  if (auto* chosen = vtkDataArray::SafeDownCast(
+        vtkSimplification::SelectedPointArray(filter, 2, input, "attribute coordinates")))
+  {
+    AppendScaled(chosen, false, columns, dimension);
+  }
+  // Column by column, as gathered, to a row per point.
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<double> rows(columns.size());
+  for (int k = 0; k < dimension; ++k)
+  {
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      rows[p * dimension + k] = columns[k * n + p];
+    }
+  }
+  return rows;
+}
+}
+
+vtkAppearancePreservingCollapse::vtkAppearancePreservingCollapse()
+{
+  this->TargetTolerance = meshsimp::AppearanceCollapseOptions().Goal.Tolerance;
+}
+
+bool vtkAppearancePreservingCollapse::RunCore(const PieceCall& piece, meshsimp::SimplifiedMesh& result)
+{
+  meshsimp::AppearanceCollapseOptions options;
+  static_cast<meshsimp::SimplificationOptions&>(options) = piece.Common;
+  static_cast<meshsimp::AppearanceCollapseParameters&>(options) = *this;
+  // The input's point data, unless the core runs on a piece's first result (the border round's
+  // last stage), whose points are not the input's.
+  std::vector<double> attributes;
+  if (!piece.OnFirstResult && this->AttributeWeight > 0.0 && this->Order == meshsimp::AppearanceOrder::Quadric)
+  {
+    attributes = AttributeCoordinates(this, piece.Input, options.AttributeDimension);
+    options.AttributeCoordinates = attributes.empty() ? nullptr : attributes.data();
+  }
+  meshsimp::AppearanceCollapseResult full;
+  const bool finished = meshsimp::AppearancePreservingCollapse(piece.Mesh, options, full, piece.Execution);
+  result = std::move(static_cast<meshsimp::SimplifiedMesh&>(full));
+  return finished;
+}
+
+void vtkAppearancePreservingCollapse::SetOrder(int order)
+{
+  static_assert(NORMAL_SPREAD == static_cast<int>(meshsimp::AppearanceOrder::NormalSpread) &&
+      QUADRIC == static_cast<int>(meshsimp::AppearanceOrder::Quadric),
+    "the property values are the core's");
+  const auto clamped = static_cast<meshsimp::AppearanceOrder>(std::clamp(order, 0, static_cast<int>(QUADRIC)));
+  if (this->Order != clamped)
+  {
+    this->Order = clamped;
+    this->Modified();
+  }
+}
+
+int vtkAppearancePreservingCollapse::GetOrder() const
+{
+  return static_cast<int>(this->Order);
+}
+
+void vtkAppearancePreservingCollapse::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  meshsimp::PrintParameters<meshsimp::AppearanceCollapseParameters>(*this, os, indent);
+}
+
+void vtkAppearancePreservingCollapse::ForEachOwnSetting(const meshsimp::SettingVisit& visit)
+{
+  meshsimp::VisitParameters<meshsimp::AppearanceCollapseParameters>(*this, visit);
+}

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkAppearancePreservingCollapse on real meshes: counts within 1 %, closed stays closed, every
+// point-data array carried, the Importance array, a colour border kept where the geometry alone
+// would blur it, a texture seam that stays closed, thread independence, input untouched.
+#include "vtkAppearancePreservingCollapse.h"
+
+#include "vtkCellArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkPoints.h"
+#include "vtkSphereSource.h"
+
+#include "TestVTKHelpers.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace
+{
+void TestTargetsAndAttributes(vtkPolyData* cow)
+{
+  const double inputTriangles = cow->GetNumberOfPolys();
+  for (const double reduction : { 0.5, 0.9, 0.95 })
+  {
+    vtkNew<vtkAppearancePreservingCollapse> filter;
+    filter->SetInputData(cow);
+    filter->SetTargetReduction(reduction);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    const double target = std::round(inputTriangles * (1 - reduction));
+    CHECK(std::abs(out->GetNumberOfPolys() - target) <= 0.01 * target + 1);
+    CHECK(meshsimp_test::OpenEdges(out) == 0);
+    meshsimp_test::CheckCarriedData(cow, out);
+    vtkDataArray* importance = out->GetPointData()->GetArray("Importance");
+    CHECK(importance && importance->GetNumberOfTuples() == out->GetNumberOfPoints());
+    for (vtkIdType i = 0; importance && i < importance->GetNumberOfTuples(); ++i)
+    {
+      CHECK(importance->GetTuple1(i) >= 1.0);
+    }
+    CHECK(out->GetFieldData()->GetArray("Passes") != nullptr);
+  }
+}
+
+/// A sphere whose colour array is red above z = 0.2 and blue below.
+vtkSmartPointer<vtkPolyData> TwoColourSphere()
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(80);
+  source->SetPhiResolution(80);
+  source->Update();
+  auto sphere = vtkSmartPointer<vtkPolyData>::New();
+  sphere->DeepCopy(source->GetOutput());
+  vtkNew<vtkUnsignedCharArray> colours;
+  colours->SetName("Colour");
+  colours->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    const bool red = sphere->GetPoint(i)[2] > 0.2;
+    colours->InsertNextTuple3(red ? 255 : 0, 0, red ? 0 : 255);
+  }
+  sphere->GetPointData()->SetScalars(colours);
+  return sphere;
+}
+
+/// Output points whose colour is a blend (neither red nor blue within 32 of 255).
+vtkIdType BlendedPoints(vtkPolyData* mesh)
+{
+  vtkDataArray* colours = mesh->GetPointData()->GetArray("Colour");
+  vtkIdType blended = 0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const double red = colours->GetComponent(i, 0), blue = colours->GetComponent(i, 2);
+    blended += (red > 223 && blue < 32) || (blue > 223 && red < 32) ? 0 : 1;
+  }
+  return blended;
+}
+
+void TestColourBorder()
+{
+  // The colours weigh in the order: their border keeps its points, and fewer output points
+  // carry a blend of the two colours than with the geometry alone (AttributeWeight 0).
+  vtkSmartPointer<vtkPolyData> sphere = TwoColourSphere();
+  vtkIdType blended[2] = { 0, 0 };
+  for (const int weighted : { 0, 1 })
+  {
+    vtkNew<vtkAppearancePreservingCollapse> filter;
+    filter->SetInputData(sphere);
+    filter->SetTargetReduction(0.95);
+    filter->SetAttributeWeight(weighted);
+    filter->Update();
+    CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) == 0);
+    blended[weighted] = BlendedPoints(filter->GetOutput());
+  }
+  std::cout << "two-colour sphere at 95 %: blended points " << blended[1] << " (geometry alone " << blended[0]
+            << ")\n";
+  CHECK(blended[1] < blended[0]);
+}
+
+/// A bumpy square whose right half has its own copies of the points on x = 0.5, with other
+/// texture coordinates (a texture seam, as an atlas makes one): 2 × 20 × 40 triangles.
+vtkSmartPointer<vtkPolyData> SeamedSquare()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  vtkNew<vtkCellArray> triangles;
+  const int n = 40;
+  for (int half = 0; half < 2; ++half)
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n / 2; ++i)
+      {
+        const double x = 0.5 * half + double(i) / n, y = double(j) / n;
+        points->InsertNextPoint(x, y, 0.03 * std::sin(9 * x) * std::sin(7 * y));
+        tcoords->InsertNextTuple2(x + half, y);
+      }
+    }
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n / 2; ++i)
+      {
+        const vtkIdType a = first + j * (n / 2 + 1) + i, b = a + 1, c = a + n / 2 + 1, d = c + 1;
+        triangles->InsertNextCell({ a, b, d });
+        triangles->InsertNextCell({ a, d, c });
+      }
+    }
+  }
+  auto square = vtkSmartPointer<vtkPolyData>::New();
+  square->SetPoints(points);
+  square->SetPolys(triangles);
+  square->GetPointData()->SetTCoords(tcoords);
+  return square;
+}
+
+void TestTextureSeam()
+{
+  // The seam's points stay on both sides (each position twice, or not at all), so no crack opens.
+  vtkSmartPointer<vtkPolyData> square = SeamedSquare();
+  vtkNew<vtkAppearancePreservingCollapse> filter;
+  filter->SetInputData(square);
+  filter->SetTargetReduction(0.9);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  std::map<std::array<double, 3>, int> inputCount, outputCount;
+  for (vtkIdType i = 0; i < square->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    square->GetPoint(i, p.data());
+    ++inputCount[p];
+  }
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    out->GetPoint(i, p.data());
+    ++outputCount[p];
+  }
+  int seams = 0;
+  for (const auto& entry : inputCount)
+  {
+    if (entry.second == 2)
+    {
+      ++seams;
+      const auto found = outputCount.find(entry.first);
+      CHECK(found == outputCount.end() || found->second == 2);
+    }
+  }
+  CHECK(seams == 41);
+  CHECK(std::abs(out->GetNumberOfPolys() - 320) <= 4);
+}
+
+void TestThreadsAndInput(vtkPolyData* cow)
+{
+  meshsimp_test::CheckThreadIndependence(cow, [cow](int threads) {
+    vtkNew<vtkAppearancePreservingCollapse> filter;
+    filter->SetInputData(cow);
+    filter->SetTargetReduction(0.9);
+    filter->SetNumberOfThreads(threads);
+    filter->Update();
+    return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
+  });
+}
+}
+
+int TestAppearancePreservingCollapse(int, char*[])
+{
+  vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
+  TestTargetsAndAttributes(cow);
+  TestColourBorder();
+  TestTextureSeam();
+  TestThreadsAndInput(cow);
+  meshsimp_test::CheckPreservedRim<vtkAppearancePreservingCollapse>(0.01);
+  meshsimp_test::CheckPartitionedInput<vtkAppearancePreservingCollapse>(cow);
+  meshsimp_test::CheckPointLabels<vtkAppearancePreservingCollapse>(cow);
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
