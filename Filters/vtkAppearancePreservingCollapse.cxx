@@ -51,38 +51,33 @@ void AppendScaled(vtkDataArray* array, bool normals, std::vector<double>& column
   }
 }
 
-/// The point data the Quadric order weighs (see the class's notes), one row per point.
+/// The point data the Quadric order weighs (see the class's notes), one row per point: each
+/// array once.
 std::vector<double> AttributeCoordinates(vtkAlgorithm* filter, vtkPolyData* input, int& dimension)
 {
   std::vector<double> columns;
   dimension = 0;
   vtkPointData* data = input->GetPointData();
-  if (vtkDataArray* normals = data->GetNormals())
-  {
-    AppendScaled(normals, true, columns, dimension);
-  }
+  std::vector<vtkDataArray*> weighed;
+  const auto weigh = [&](vtkDataArray* array, bool normals) {
+    if (array && std::find(weighed.begin(), weighed.end(), array) == weighed.end())
+    {
+      weighed.push_back(array);
+      AppendScaled(array, normals, columns, dimension);
+    }
+  };
+  weigh(data->GetNormals(), true);
   for (int i = 0; i < data->GetNumberOfArrays(); ++i)
   {
     auto* colours = vtkUnsignedCharArray::SafeDownCast(data->GetArray(i));
     if (colours && (colours->GetNumberOfComponents() == 3 || colours->GetNumberOfComponents() == 4))
     {
-      AppendScaled(colours, false, columns, dimension);
+      weigh(colours, false);
     }
   }
-  if (vtkDataArray* coordinates = data->GetTCoords())
-  {
-    AppendScaled(coordinates, false, columns, dimension);
-  }
-  vtkDataArray* scalars = data->GetScalars();
-  if (scalars && !vtkUnsignedCharArray::SafeDownCast(scalars)) // colours are in already
-  {
-    AppendScaled(scalars, false, columns, dimension);
-  }
-  if (auto* chosen = vtkDataArray::SafeDownCast(
-        vtkSimplification::SelectedPointArray(filter, 2, input, "attribute coordinates")))
-  {
-    AppendScaled(chosen, false, columns, dimension);
-  }
+  weigh(data->GetTCoords(), false);
+  weigh(data->GetScalars(), false);
+  weigh(vtkDataArray::SafeDownCast(vtkSimplification::SelectedPointArray(filter, 2, input, "attribute coordinates")), false);
   // Column by column, as gathered, to a row per point.
   const vtkIdType n = input->GetNumberOfPoints();
   std::vector<double> rows(columns.size());

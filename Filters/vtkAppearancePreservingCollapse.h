@@ -124,7 +124,7 @@ public:
    * QUADRIC order: the weight of the point data against the geometry, in bounding-box diagonals
    * per unit of deviation (each component scaled to [0, 1]); default 0.1, 0: geometry alone.
    */
-  vtkSetClampMacro(AttributeWeight, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetClampMacro(AttributeWeight, double, 0.0, 1e6);
   vtkGetMacro(AttributeWeight, double);
   ///@}
 

@@ -77,7 +77,7 @@ struct AppearanceCollapseParameters
       "spreads over the surface (off by default).");
     visit("BoundaryCornerAngle", self.BoundaryCornerAngle, 0.0, 180.0,
       "Degrees: where an open border turns by more than this, its point is kept.");
-    visit("AttributeWeight", self.AttributeWeight, 0.0, Unbounded,
+    visit("AttributeWeight", self.AttributeWeight, 0.0, 1e6,
       "Quadric order: the weight of the point data (colours, texture coordinates, normals, scaled to [0, 1]) "
       "against the geometry, in bounding-box diagonals per unit of deviation.");
   }

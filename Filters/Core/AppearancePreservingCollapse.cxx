@@ -85,7 +85,7 @@ public:
   const char* OwnRules() const
   {
     return "are refused by the filter's own rules (a normal turned by more than MaximumNormalDeviation, the error "
-           "bound)";
+           "bound) or wait for a hub's next measure";
   }
   bool ScoresAreKeys() const { return this->Options.Order == AppearanceOrder::Quadric; }
   void Collapsed(const CollapsePlan& plan);
@@ -371,7 +371,7 @@ double AppearanceCollapser::FitBlend(CollapsePlan& plan) const
   double error = q.Evaluate(plan.Position);
   if (this->Dimension == 0)
   {
-    return std::max(0.0, error);
+    return std::isfinite(error) ? std::max(0.0, error) : std::numeric_limits<double>::infinity();
   }
   Quadric fields = this->FieldQuadrics[a];
   fields += this->FieldQuadrics[b];
@@ -405,7 +405,7 @@ double AppearanceCollapser::FitBlend(CollapsePlan& plan) const
   const double blend = plan.Weights[1]; // u, or the plan's own weight where the ends agree
   error += area * (fromFrom + 2.0 * blend * fromChange + blend * blend * changeChange) -
     2.0 * (fromField + blend * changeField);
-  return std::max(0.0, error);
+  return std::isfinite(error) ? std::max(0.0, error) : std::numeric_limits<double>::infinity();
 }
 
 double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const
@@ -513,8 +513,9 @@ void AppearanceCollapser::Collapsed(const CollapsePlan& plan)
   this->Moved[kept] |= plan.Position != this->Mesh.Point(kept) ? 1 : 0; // before the engine applies it
   for (int k = 0; k < this->Dimension; ++k)
   {
-    double& value = this->Attributes[kept * this->Dimension + k];
-    value = plan.Weights[0] * value + plan.Weights[1] * this->Attributes[removed * this->Dimension + k];
+    double& value = this->Attributes[static_cast<std::int64_t>(kept) * this->Dimension + k];
+    value = plan.Weights[0] * value +
+      plan.Weights[1] * this->Attributes[static_cast<std::int64_t>(removed) * this->Dimension + k];
   }
   if (!this->Quadrics.empty())
   {
@@ -619,16 +620,22 @@ void AppearanceCollapser::AddTriangleQuadric(std::int32_t t)
   }
   const double weight = area * this->Options.AttributeWeight * this->Options.AttributeWeight;
   const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2);
-  const double det = g11 * g22 - g12 * g12;
+  // |e1 × e2|² is the Gram determinant without its cancellation; a sliver thinner than about
+  // 1e-6 radians fixes no gradient across it: its field is the corners' mean, constant.
+  const double det = cross.squaredNorm();
+  const bool flat = !(det > 1e-12 * g11 * g22);
+  const std::int64_t row[3] = { static_cast<std::int64_t>(tri[0]) * this->Dimension,
+    static_cast<std::int64_t>(tri[1]) * this->Dimension, static_cast<std::int64_t>(tri[2]) * this->Dimension };
   for (int c = 0; c < this->Dimension; ++c)
   {
-    const double s0 = this->Attributes[tri[0] * this->Dimension + c];
-    const double d1 = this->Attributes[tri[1] * this->Dimension + c] - s0;
-    const double d2 = this->Attributes[tri[2] * this->Dimension + c] - s0;
+    const double s0 = this->Attributes[row[0] + c];
+    const double d1 = this->Attributes[row[1] + c] - s0;
+    const double d2 = this->Attributes[row[2] + c] - s0;
     // g = α e1 + β e2 with g·e1 = d1 and g·e2 = d2.
-    const double alpha = (d1 * g22 - d2 * g12) / det, beta = (d2 * g11 - d1 * g12) / det;
+    const double alpha = flat ? 0.0 : (d1 * g22 - d2 * g12) / det;
+    const double beta = flat ? 0.0 : (d2 * g11 - d1 * g12) / det;
     const Vec3 g = alpha * e1 + beta * e2;
-    const double offset = s0 - g.dot(p0);
+    const double offset = flat ? s0 + (d1 + d2) / 3.0 : s0 - g.dot(p0);
     const Quadric field = Quadric::FromPlane(g, offset, weight);
     for (int k = 0; k < 3; ++k)
     {

@@ -86,9 +86,11 @@ bool AppearancePreservingCollapse(const TriangleMeshView& input, const Appearanc
   AppearanceCollapseResult& result, const ExecutionContext& context = {});
 
 /**
- * Eq. 7.7–7.14: the point at parameter t of the quadric curve from p1 (t = 0) to p2 (t = 1)
- * whose tangents come from the unit normals n1 and n2 by Gram–Schmidt; the straight segment's
- * point where the normals are (nearly) parallel, or opposite.
+ * Eq. 7.7–7.14 as printed: the point at parameter t of the quadric curve from p1 (t = 0) to p2
+ * (t = 1) built from the Gram–Schmidt tangents of the unit normals n1 and n2 (the curve is not
+ * tangent to them: on a circular arc its midpoint rises 95, 81 and 60 % of the arc's height
+ * over the chord for normals 30, 60 and 90 degrees apart); the straight segment's point where
+ * the normals are (nearly) parallel, or opposite.
  */
 Eigen::Vector3d CurvePoint(const Eigen::Vector3d& p1, const Eigen::Vector3d& n1, const Eigen::Vector3d& p2,
   const Eigen::Vector3d& n2, double t);

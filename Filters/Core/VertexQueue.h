@@ -23,19 +23,22 @@
  *   for the refusal summary ("are refused by ...");
  * - `bool ScoresAreKeys() const`: whether a proposal's score is in the key's measure (v's key then
  *   is its best proposal's score before the engine's checks): a vertex whose best legal
- *   proposal scores above the next vertex's key then waits at that score, so the order stays
- *   the order of the collapses made; and a collapse keys only its kept vertex again at once,
- *   its queued neighbours when they reach the top (lazily, as Progressive Mesh's builder does);
+ *   proposal scores above the next vertex's key then waits at that score; and a collapse keys
+ *   only its kept vertex again at once, its queued neighbours when they reach the top (lazily,
+ *   as Progressive Mesh's builder does: a neighbour whose key fell waits at its older one), so
+ *   the order is that of the collapses made but for such neighbours;
  * - `void Collapsed(const CollapsePlan& plan)`: the collapse is made (the visitor: what the
  *   removed vertices held goes to the kept one); called just before the engine applies it, so
  *   the mesh is still as the plan found it.
  * The queue owns the rest: the heap (equal keys in the order they were set, vertex order at the
  * start, so the result is deterministic), the engine's ordered checks on each proposal in score order (the first that
  * passes is made; a vertex with none leaves the queue until a collapse changes its star), the
- * keys after a collapse and, with deferral on, the chapter's vertex memory: a vertex whose star
- * a collapse changed is not removed in the same pass over the queue but set aside, and the
- * vertices set aside make the next pass when the queue runs dry. Reduction then spreads over
- * the whole surface instead of eating flat regions first (ch. 7, Fig. 7-12).
+ * keys after a collapse (a hub's, the centre of a large fan, only now and then: HubTriangles)
+ * and, with deferral on, the chapter's vertex memory: no collapse in a pass over the queue
+ * involves a vertex whose star an earlier one in that pass changed; such a vertex, or one whose
+ * proposals all involve one, is set aside, and the vertices set aside make the next pass when
+ * the queue runs dry. Reduction then spreads over the whole surface instead of eating flat
+ * regions first (ch. 7, Fig. 7-12).
  */
 #ifndef MeshSimplification_VertexQueue_h
 #define MeshSimplification_VertexQueue_h
@@ -72,6 +75,7 @@ public:
     , Defer(defer)
     , Heap(mesh.NumberOfPoints())
     , Touched(defer ? mesh.NumberOfPoints() : 0, 0u)
+    , MeasuredCount(mesh.NumberOfPoints(), 0)
   {
   }
 
@@ -80,7 +84,8 @@ public:
   {
     for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
     {
-      if (this->Mesh.NumberOfTrianglesAround(v) > 0)
+      this->MeasuredCount[v] = this->Mesh.NumberOfTrianglesAround(v);
+      if (this->MeasuredCount[v] > 0)
       {
         this->Rules.Measure(v);
       }
@@ -112,8 +117,14 @@ public:
     this->Rules.Propose(v, this->Proposals);
     std::stable_sort(this->Proposals.begin(), this->Proposals.end(),
       [](const CollapseProposal& a, const CollapseProposal& b) { return a.Score < b.Score; });
+    bool waits = false; // a proposal with a vertex changed in this pass (memory)
     for (const CollapseProposal& proposal : this->Proposals)
     {
+      if (this->Defer && this->ChangedInThisPass(proposal.Plan))
+      {
+        waits = true;
+        continue;
+      }
       if (!this->Rules.Accepts(proposal.Plan) || this->Mesh.FirstFailedCheck(proposal.Plan) != CollapseCheck::Passed)
       {
         continue;
@@ -126,7 +137,11 @@ public:
       this->Collapse(proposal.Plan);
       return true;
     }
-    return true; // v waits outside the queue for a change around it
+    if (waits)
+    {
+      this->SetAside.push_back(v); // its next pass may make one
+    }
+    return true; // else v waits outside the queue for a change around it
   }
 
   /// With deferral, the next pass: the vertices set aside go back into the queue.
@@ -179,11 +194,42 @@ public:
   }
 
 private:
+  /// A star of more triangles than this is a hub's: measured and keyed again after a collapse
+  /// only once it has lost an eighth of its triangles since it was last, so that the collapses
+  /// around the centre of a fan of n triangles cost n log n, not n².
+  static constexpr std::int32_t HubTriangles = 64;
+
+  bool ChangedInThisPass(const CollapsePlan& plan) const
+  {
+    for (int i = 0; i < plan.Count; ++i)
+    {
+      if (this->Touched[plan.Vertices[i]] == this->Pass)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// Whether w's star, changed by a collapse, is to be measured again now (see HubTriangles;
+  /// always where force).
+  bool MeasureAgain(std::int32_t w, bool force)
+  {
+    const std::int32_t count = this->Mesh.NumberOfTrianglesAround(w);
+    if (force || count <= HubTriangles || 8 * count <= 7 * this->MeasuredCount[w])
+    {
+      this->MeasuredCount[w] = count;
+      return true;
+    }
+    return false;
+  }
+
   void Requeue(std::int32_t v)
   {
-    const double key =
-      this->Mesh.NumberOfTrianglesAround(v) == 0 ? std::numeric_limits<double>::infinity() : this->Rules.Key(v);
-    if (key < std::numeric_limits<double>::infinity() && !this->Mesh.IsLocked(v))
+    const double key = this->Mesh.NumberOfTrianglesAround(v) == 0 || this->Mesh.IsLocked(v)
+      ? std::numeric_limits<double>::infinity()
+      : this->Rules.Key(v);
+    if (key < std::numeric_limits<double>::infinity())
     {
       this->Heap.Set(v, key);
     }
@@ -204,16 +250,22 @@ private:
     }
     this->Mesh.Neighbours(kept, this->Ring);
     this->Ring.push_back(kept);
-    for (const std::int32_t w : this->Ring)
-    {
-      this->Rules.Measure(w);
-    }
+    std::size_t measured = 0;
     for (const std::int32_t w : this->Ring)
     {
       if (this->Defer)
       {
         this->Touched[w] = this->Pass;
       }
+      if (this->MeasureAgain(w, w == kept))
+      {
+        this->Rules.Measure(w);
+        this->Ring[measured++] = w;
+      }
+    }
+    this->Ring.resize(measured);
+    for (const std::int32_t w : this->Ring)
+    {
       // Keyed by score, a neighbour still queued keeps its key until it is on top, where its
       // proposals are scored again (and it waits if dearer than the next): only the kept vertex
       // and the neighbours out of the queue are keyed now.
@@ -229,6 +281,7 @@ private:
   const bool Defer;
   CollapseHeap Heap;
   std::vector<std::uint32_t> Touched; // the pass in which a collapse last changed the star
+  std::vector<std::int32_t> MeasuredCount; // the star's triangles when it was last measured
   std::uint32_t Pass = 1;
   std::vector<std::int32_t> SetAside, Ring;
   std::vector<CollapseProposal> Proposals;
