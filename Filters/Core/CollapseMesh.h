@@ -359,6 +359,29 @@ public:
   /// The number of neighbours of v.
   std::int32_t Valence(std::int32_t v) const { return this->Valence(v, this->Scratch); }
 
+  /// For a report of what is left: counts the vertices with triangles (returned) and the locked
+  /// ones among them by LockReason (into lockedBy), and calls f(v) for each of the others.
+  template <typename F>
+  std::int64_t ForEachUnlockedLeft(std::array<std::int64_t, NumberOfLockReasons>& lockedBy, F&& f) const
+  {
+    std::int64_t left = 0;
+    for (std::int32_t v = 0; v < this->NumberOfPoints(); ++v)
+    {
+      if (this->NumberOfTrianglesAround(v) == 0)
+      {
+        continue;
+      }
+      ++left;
+      if (this->IsLocked(v))
+      {
+        ++lockedBy[LockIndex(this->WhyLocked(v))];
+        continue;
+      }
+      f(v);
+    }
+    return left;
+  }
+
   /**
    * Applies plans that touch disjoint neighbourhoods (no vertex within one edge of a plan's
    * vertices is within one edge of another's, e.g. the half-edge collapses of a super-independent

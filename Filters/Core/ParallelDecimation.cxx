@@ -1153,24 +1153,12 @@ std::string Decimator::RefusalSummary() const
 {
   // Why no vertex can be removed: the locked ones (non-manifold ones always are), and what
   // refuses every half-edge collapse of the others (measured once, where the rounds stop).
-  std::int64_t left = 0;
   std::array<std::int64_t, NumberOfLockReasons> lockedBy{};
   RefusalCounts refused;
   std::vector<std::int32_t> neighbours;
   CollapsePlan plan;
   plan.Count = 2;
-  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
-  {
-    if (this->Mesh.NumberOfTrianglesAround(v) == 0)
-    {
-      continue;
-    }
-    ++left;
-    if (this->Mesh.IsLocked(v))
-    {
-      ++lockedBy[LockIndex(this->Mesh.WhyLocked(v))];
-      continue;
-    }
+  const std::int64_t left = this->Mesh.ForEachUnlockedLeft(lockedBy, [&](std::int32_t v) {
     this->Mesh.Neighbours(v, neighbours);
     for (const std::int32_t u : neighbours)
     {
@@ -1179,7 +1167,7 @@ std::string Decimator::RefusalSummary() const
       plan.Position = this->Mesh.Point(u);
       this->Mesh.CountRefusal(plan, this->Mesh.FirstFailedCheck(plan), refused);
     }
-  }
+  });
   return DescribeLeft(left, "vertices", lockedBy, refused, "half-edge collapses",
     "are refused by the filter's own rules (a feature corner or edge above FeatureAngle, a normal turned by more "
     "than MaximumNormalDeviation)");

@@ -166,21 +166,9 @@ public:
   /// ": of the N points left, L are locked (...); of the others' M proposed collapses, x % ...".
   std::string RefusalSummary()
   {
-    std::int64_t left = 0;
     std::array<std::int64_t, NumberOfLockReasons> lockedBy{};
     RefusalCounts refused;
-    for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
-    {
-      if (this->Mesh.NumberOfTrianglesAround(v) == 0)
-      {
-        continue;
-      }
-      ++left;
-      if (this->Mesh.IsLocked(v))
-      {
-        ++lockedBy[LockIndex(this->Mesh.WhyLocked(v))];
-        continue;
-      }
+    const std::int64_t left = this->Mesh.ForEachUnlockedLeft(lockedBy, [&](std::int32_t v) {
       this->Rules.Propose(v, this->Proposals);
       for (const CollapseProposal& proposal : this->Proposals)
       {
@@ -189,7 +177,7 @@ public:
           this->Rules.Accepts(proposal.Plan) ? this->Mesh.FirstFailedCheck(proposal.Plan) : CollapseCheck::Passed;
         this->Mesh.CountRefusal(proposal.Plan, failed, refused);
       }
-    }
+    });
     return DescribeLeft(left, "points", lockedBy, refused, "proposed collapses", this->Rules.OwnRules());
   }
 
