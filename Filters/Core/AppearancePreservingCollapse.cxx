@@ -80,7 +80,9 @@ public:
   /// No triangle turned by more than MaximumNormalDeviation, none left without area; the bound.
   bool Accepts(const CollapsePlan& plan) const
   {
-    return this->AreaChange(plan) >= 0.0 && !(this->BoundLimit >= 0.0 && this->Bound.Distance(plan) > this->BoundLimit);
+    // The chapter's proposals are scored by their change of area, which checked the normals.
+    const bool normals = this->Options.Order == AppearanceOrder::NormalSpread || this->AreaChange(plan) >= 0.0;
+    return normals && !(this->BoundLimit >= 0.0 && this->Bound.Distance(plan) > this->BoundLimit);
   }
   const char* OwnRules() const
   {
@@ -111,6 +113,8 @@ private:
   double Parameter(std::int32_t x, std::int32_t y, bool onlyExtreme) const;
   /// The contraction of the edge for x, at parameter t (see the top of the header).
   void PlanEdge(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const;
+  /// PlanEdge's ends and weights alone: the end nearer parameter t kept (x at 0, y at 1).
+  static void SetEnds(std::int32_t x, std::int32_t y, double t, CollapsePlan& plan);
   Vec3 Place(std::int32_t x, const EdgeAround& edge, double t) const;
   /// The plan's change of area, or -1 where a triangle would turn by more than
   /// MaximumNormalDeviation or lose its area.
@@ -314,8 +318,14 @@ Vec3 AppearanceCollapser::Place(std::int32_t x, const EdgeAround& edge, double t
 
 void AppearanceCollapser::PlanEdge(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const
 {
-  // The end nearer the new point is kept: its id, and its data first in the output's sources.
   const std::int32_t y = edge.Vertex;
+  SetEnds(x, y, t, plan);
+  plan.Position = t <= 0.0 ? this->Mesh.Point(x) : t >= 1.0 ? this->Mesh.Point(y) : this->Place(x, edge, t);
+}
+
+void AppearanceCollapser::SetEnds(std::int32_t x, std::int32_t y, double t, CollapsePlan& plan)
+{
+  // The end nearer the new point is kept: its id, and its data first in the output's sources.
   const bool keepX = t <= 0.5;
   plan.Count = 2;
   plan.Vertices[0] = keepX ? x : y;
@@ -324,7 +334,6 @@ void AppearanceCollapser::PlanEdge(std::int32_t x, const EdgeAround& edge, doubl
   plan.Weights[0] = keepX ? 1.0 - t : t;
   plan.Weights[1] = 1.0 - plan.Weights[0];
   plan.Weights[2] = 0.0;
-  plan.Position = t <= 0.0 ? this->Mesh.Point(x) : t >= 1.0 ? this->Mesh.Point(y) : this->Place(x, edge, t);
 }
 
 double AppearanceCollapser::AreaChange(const CollapsePlan& plan) const
@@ -415,13 +424,13 @@ double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround
   // the one of least error.
   double best = this->FitBlend(plan);
   CollapsePlan other;
+  const std::int32_t y = edge.Vertex;
   const auto consider = [&](double at) {
-    this->PlanEdge(x, edge, at, other);
-    if (at > 0.0 && at < 1.0)
-    {
-      other.Position = this->Normalised.InBox(
-        CurvePoint(this->Mesh.Point(x), this->UnitNormal[x], this->Mesh.Point(edge.Vertex), this->UnitNormal[edge.Vertex], at));
-    }
+    SetEnds(x, y, at, other);
+    other.Position = at <= 0.0 ? this->Mesh.Point(x)
+      : at >= 1.0              ? this->Mesh.Point(y)
+                               : this->Normalised.InBox(
+                      CurvePoint(this->Mesh.Point(x), this->UnitNormal[x], this->Mesh.Point(y), this->UnitNormal[y], at));
     const double error = this->FitBlend(other);
     if (error < best)
     {
@@ -436,11 +445,11 @@ double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround
       consider(t);
     }
     this->ConsiderOptimum(x, edge, t, plan, best);
-    if (this->MayMerge(edge.Vertex, x))
+    if (this->MayMerge(y, x))
     {
       consider(0.0);
     }
-    if (this->MayMerge(x, edge.Vertex))
+    if (this->MayMerge(x, y))
     {
       consider(1.0);
     }
@@ -453,8 +462,9 @@ void AppearanceCollapser::ConsiderOptimum(
 {
   // The point of least distance to the merged planes (Garland and Heckbert's placement, as
   // meshoptimizer's simplifyWithUpdate re-fits positions), where they fix one within the edge's
-  // length of the chapter's point; the point data blended at its place along the edge. (The fields are left
-  // out of the minimisation: with them the point would leave the surface to meet a colour.)
+  // length of the best point so far (the chapter's or the first curve's); the point data blended
+  // at its place along the edge. (The fields are left out of the minimisation: with them the
+  // point would leave the surface to meet a colour.)
   const std::int32_t y = edge.Vertex;
   Quadric q = this->Quadrics[x];
   q += this->Quadrics[y];
@@ -473,7 +483,7 @@ void AppearanceCollapser::ConsiderOptimum(
   }
   const double along = std::min(1.0, std::max(0.0, (optimum - p1).dot(chord) / length2));
   CollapsePlan other;
-  this->PlanEdge(x, edge, along > 0.0 && along < 1.0 ? along : t, other);
+  SetEnds(x, y, along > 0.0 && along < 1.0 ? along : t, other);
   other.Position = this->Normalised.InBox(optimum);
   const double error = this->FitBlend(other);
   if (error < best)

@@ -88,9 +88,9 @@ bool AppearancePreservingCollapse(const TriangleMeshView& input, const Appearanc
 /**
  * Eq. 7.7–7.14 as printed: the point at parameter t of the quadric curve from p1 (t = 0) to p2
  * (t = 1) built from the Gram–Schmidt tangents of the unit normals n1 and n2 (the curve is not
- * tangent to them: on a circular arc its midpoint rises 95, 81 and 60 % of the arc's height
- * over the chord for normals 30, 60 and 90 degrees apart); the straight segment's point where
- * the normals are (nearly) parallel, or opposite.
+ * tangent to them, and rises less than a circular arc over its chord: see
+ * AppearancePreservingCollapse.md); the straight segment's point where the normals are (nearly)
+ * parallel, or opposite.
  */
 Eigen::Vector3d CurvePoint(const Eigen::Vector3d& p1, const Eigen::Vector3d& n1, const Eigen::Vector3d& p2,
   const Eigen::Vector3d& n2, double t);
