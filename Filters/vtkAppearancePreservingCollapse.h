@@ -87,7 +87,8 @@ public:
 
   ///@{
   /**
-   * Degrees (default 45): no triangle's normal turns by more than this in a collapse.
+   * Degrees (default 45): no triangle's normal turns by more than this in a collapse. Before a
+   * count target, when no collapse is left, it is raised by 15 degrees at a time, with a warning.
    */
   vtkSetClampMacro(MaximumNormalDeviation, double, 0.0, 180.0);
   vtkGetMacro(MaximumNormalDeviation, double);

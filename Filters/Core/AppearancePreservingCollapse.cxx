@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace meshsimp
@@ -65,8 +66,9 @@ public:
     : Options(options)
     , Context(context)
     , ExtremeImportance(1.0 / std::max(1e-12, std::cos(Radians(0.5 * options.ExtremeAngle))))
-    , CosDeviation(std::cos(Radians(options.MaximumNormalDeviation)))
     , CosFlatTurn(std::cos(Radians(180.0 - options.FlatEdgeAngle)))
+    , Deviation(options.MaximumNormalDeviation)
+    , CosDeviation(std::cos(Radians(options.MaximumNormalDeviation)))
   {
   }
 
@@ -88,6 +90,19 @@ public:
   {
     return "are refused by the filter's own rules (a normal turned by more than MaximumNormalDeviation, the error "
            "bound) or wait for a hub's next measure";
+  }
+  /// Before a count target, MaximumNormalDeviation raised by 15 degrees (up to 180) when no
+  /// collapse is left; never under an error bound, whose end that is.
+  bool Relax()
+  {
+    if (this->BoundLimit >= 0.0 || this->Deviation >= 180.0)
+    {
+      return false;
+    }
+    this->Deviation = std::min(180.0, this->Deviation + 15.0);
+    this->CosDeviation = std::cos(Radians(this->Deviation));
+    ++this->Relaxations;
+    return true;
   }
   bool ScoresAreKeys() const { return this->Options.Order == AppearanceOrder::Quadric; }
   void Collapsed(const CollapsePlan& plan);
@@ -135,7 +150,9 @@ private:
 
   const AppearanceCollapseOptions& Options;
   const ExecutionContext& Context;
-  const double ExtremeImportance, CosDeviation, CosFlatTurn;
+  const double ExtremeImportance, CosFlatTurn;
+  double Deviation, CosDeviation; // MaximumNormalDeviation in force (raised by Relax) and its cosine
+  int Relaxations = 0;
   CollapseMesh Mesh;
   Frame Normalised;
   double Diagonal = 1.0;
@@ -750,6 +767,11 @@ bool AppearanceCollapser::Run(const TriangleMeshView& input, AppearanceCollapseR
   result.Passes = queue.Passes();
   this->Output(input, result);
   end.Judge(result.Report, this->BoundLimit >= 0.0, "no collapse is left that keeps the mesh valid");
+  if (this->Relaxations > 0)
+  {
+    result.Report.Notes.push_back("MaximumNormalDeviation was raised by " + std::to_string(15 * this->Relaxations) +
+      " degrees to go on");
+  }
   return this->Context.Report(1.0);
 }
 

@@ -15,7 +15,9 @@
  *   second curve across its far corners, at a parameter from their importance weighted by the
  *   inverse of their distance to the first point, and the new point midway between the two
  *   curve points (Fig. 7-9). No triangle may turn by more than MaximumNormalDeviation, and the
- *   engine's checks hold (link condition, folds, locks, regions).
+ *   engine's checks hold (link condition, folds, locks, regions). Before a count target, when no
+ *   collapse is left, MaximumNormalDeviation is raised by 15 degrees at a time (up to 180), with
+ *   a note, as Parallel Decimation raises its angles.
  * - Order NormalSpread is the chapter's: the least important vertex first, along the edge whose
  *   contraction changes the area least.
  * - Order Quadric (default), beyond the chapter, because the chapter alone stays far from the

@@ -20,7 +20,9 @@
  * - `bool Accepts(const CollapsePlan& plan)`: the policy's own filter (a normal turned too far,
  *   an error bound), asked in score order before the engine's checks, so that a dear filter
  *   runs only until a proposal passes; `const char* OwnRules() const` says what it refuses,
- *   for the refusal summary ("are refused by ...");
+ *   for the refusal summary ("are refused by ..."); `bool Relax()` loosens those rules a step
+ *   when no collapse is left before the target (false: nothing left to loosen), as Parallel
+ *   Decimation raises its angles;
  * - `bool ScoresAreKeys() const`: whether a proposal's score is in the key's measure (v's key then
  *   is its best proposal's score before the engine's checks): a vertex whose best legal
  *   proposal scores above the next vertex's key then waits at that score; and a collapse keys
@@ -145,21 +147,31 @@ public:
   }
 
   /// With deferral, the next pass: the vertices set aside go back into the queue.
+  /// With nothing set aside, the policy's own rules relaxed a step (Relax) and every vertex keyed
+  /// again.
   bool Unstick(std::int64_t)
   {
-    if (this->SetAside.empty())
+    if (!this->SetAside.empty())
+    {
+      ++this->Pass;
+      for (const std::int32_t v : this->SetAside)
+      {
+        if (this->Mesh.NumberOfTrianglesAround(v) > 0)
+        {
+          this->Requeue(v);
+        }
+      }
+      this->SetAside.clear();
+      return true;
+    }
+    if (!this->Rules.Relax())
     {
       return false;
     }
-    ++this->Pass;
-    for (const std::int32_t v : this->SetAside)
+    for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
     {
-      if (this->Mesh.NumberOfTrianglesAround(v) > 0)
-      {
-        this->Requeue(v);
-      }
+      this->Requeue(v);
     }
-    this->SetAside.clear();
     return true;
   }
 

@@ -280,6 +280,21 @@ void SeamsStayClosed()
   CHECK(result.NumberOfTriangles() < static_cast<std::int64_t>(grid.Triangles.size() / 3) / 5);
 }
 
+void RelaxesTheNormalDeviation()
+{
+  // No normal may turn at all (MaximumNormalDeviation 0): before a count target the limit is
+  // raised a step at a time, with a note, until the count is met; under a bound it is not.
+  const Mesh sphere = Sphere(12);
+  AppearanceCollapseOptions options = Reduction(0.9);
+  options.MaximumNormalDeviation = 0.0;
+  const AppearanceCollapseResult result = Simplify(sphere, options);
+  const double target = std::round(0.1 * static_cast<double>(sphere.Triangles.size() / 3));
+  CHECK(std::abs(result.NumberOfTriangles() - target) <= 0.01 * target + 1);
+  CHECK(result.Report.Notes.size() == 1 && result.Report.Notes[0].find("MaximumNormalDeviation was raised") == 0);
+  options.Goal.SetMaximumError(0.05, true);
+  CHECK(Simplify(sphere, options).Report.Notes.empty());
+}
+
 void MemoryMakesPasses()
 {
   // With the vertex memory the queue is run in passes; without, in one.
@@ -358,6 +373,7 @@ int main()
     { "TwoColoursKeepTheirBorder", TwoColoursKeepTheirBorder },
     { "SliverKeepsTheFieldsFinite", SliverKeepsTheFieldsFinite },
     { "SeamsStayClosed", SeamsStayClosed },
+    { "RelaxesTheNormalDeviation", RelaxesTheNormalDeviation },
     { "MemoryMakesPasses", MemoryMakesPasses },
     { "KeepsErrorBound", KeepsErrorBound },
     { "ReportsProgressAndAborts", ReportsProgressAndAborts },
