@@ -59,6 +59,21 @@ struct EdgeAround
   int Triangles;
 };
 
+/// What the error of contracting the edge (x, y) at any point with any blend of its ends' point
+/// data needs (Hoppe's quadrics merged): the planes, the fields' part in the position and, with
+/// the blend s(v) = s_x + v (s_y − s_x) (v: y's share), the fields' sums
+/// E(p, v) = Σ_k area s_k(v)² − 2 s_k(v) F_k(p), F_k(p) = g_k·p + d_k summed over both ends, as
+/// the sums over k of s_x·s_x, s_x·Δ, Δ·Δ and of s_x (g, d) and Δ (g, d).
+struct EdgeError
+{
+  std::int32_t X = -1, Y = -1;
+  Quadric Planes;       // the geometric part alone, whose minimum places a candidate
+  Quadric Whole;        // the planes and the fields' part in the position
+  double Area = 0.0;    // the fields' area sum
+  double FromFrom = 0.0, FromChange = 0.0, ChangeChange = 0.0;
+  Eigen::Vector4d FromField = Eigen::Vector4d::Zero(), ChangeField = Eigen::Vector4d::Zero();
+};
+
 class AppearanceCollapser
 {
 public:
@@ -137,12 +152,15 @@ private:
   /// Quadric order: the plan (the chapter's, at parameter t) replaced by the placement of least
   /// error among the chapter's candidates; returns that error.
   double LeastErrorPlacement(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan) const;
+  /// The edge's merged quadrics and point data sums, which every candidate of the edge shares.
+  EdgeError ErrorTerms(std::int32_t x, std::int32_t y) const;
   /// The plan's point data weights re-fitted: the blend of its ends' of least field error at its
   /// point (meshoptimizer's simplifyWithUpdate re-fits values freely; here within the blends,
   /// which the output's point data follows). Returns the merged quadrics' error there.
-  double FitBlend(CollapsePlan& plan) const;
+  static double FitBlend(const EdgeError& terms, CollapsePlan& plan);
   /// Replaces plan (of error best) by the quadric's point of least error where that is lower.
-  void ConsiderOptimum(std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan, double& best) const;
+  void ConsiderOptimum(std::int32_t x, const EdgeAround& edge, const EdgeError& terms, double t, CollapsePlan& plan,
+    double& best) const;
   /// x's contractions the chapter's and the borders' rules allow, scored by the order's measure
   /// (the chapter's: the change of area, where the normals allow it).
   void Proposals(std::int32_t x, std::vector<CollapseProposal>& out);
@@ -386,51 +404,60 @@ double AppearanceCollapser::AreaChange(const CollapsePlan& plan) const
   return allowed ? std::abs(after - before) : -1.0;
 }
 
-double AppearanceCollapser::FitBlend(CollapsePlan& plan) const
+EdgeError AppearanceCollapser::ErrorTerms(std::int32_t x, std::int32_t y) const
 {
-  // The point data at the plan's point: the blend s = (1 − u) s_a + u s_b of least field error,
-  // E(u) = Σ_k area s_k(u)² − 2 s_k(u) F_k(p), a parabola in u (F_k: the fields' sum at p); the
-  // plan's whole error with it, from the same sums.
-  const std::int32_t a = plan.Vertices[0], b = plan.Vertices[1];
-  Quadric q = this->Quadrics[a];
-  q += this->Quadrics[b];
-  double error = q.Evaluate(plan.Position);
+  EdgeError terms;
+  terms.X = x;
+  terms.Y = y;
+  terms.Planes = this->Quadrics[x];
+  terms.Planes += this->Quadrics[y];
+  terms.Whole = terms.Planes;
   if (this->Dimension == 0)
   {
-    return std::isfinite(error) ? std::max(0.0, error) : std::numeric_limits<double>::infinity();
+    return terms;
   }
-  Quadric fields = this->FieldQuadrics[a];
-  fields += this->FieldQuadrics[b];
-  error += fields.Evaluate(plan.Position);
-  const double area = this->FieldArea[a] + this->FieldArea[b];
-  const double* ga = this->Gradients.data() + 4 * static_cast<std::int64_t>(a) * this->Dimension;
-  const double* gb = this->Gradients.data() + 4 * static_cast<std::int64_t>(b) * this->Dimension;
-  const double* sa = this->Attributes.data() + static_cast<std::int64_t>(a) * this->Dimension;
-  const double* sb = this->Attributes.data() + static_cast<std::int64_t>(b) * this->Dimension;
-  const Vec3& p = plan.Position;
-  double fromFrom = 0.0, fromField = 0.0, fromChange = 0.0, changeChange = 0.0, changeField = 0.0;
+  terms.Whole += this->FieldQuadrics[x];
+  terms.Whole += this->FieldQuadrics[y];
+  terms.Area = this->FieldArea[x] + this->FieldArea[y];
+  const double* gx = this->Gradients.data() + 4 * static_cast<std::int64_t>(x) * this->Dimension;
+  const double* gy = this->Gradients.data() + 4 * static_cast<std::int64_t>(y) * this->Dimension;
+  const double* sx = this->Attributes.data() + static_cast<std::int64_t>(x) * this->Dimension;
+  const double* sy = this->Attributes.data() + static_cast<std::int64_t>(y) * this->Dimension;
   for (int k = 0; k < this->Dimension; ++k)
   {
-    const double* u = ga + 4 * k;
-    const double* w = gb + 4 * k;
-    const double field = (u[0] + w[0]) * p.x() + (u[1] + w[1]) * p.y() + (u[2] + w[2]) * p.z() + u[3] + w[3];
-    const double from = sa[k], change = sb[k] - sa[k];
-    fromFrom += from * from;
-    fromField += from * field;
-    fromChange += from * change;
-    changeChange += change * change;
-    changeField += change * field;
+    const Eigen::Vector4d field = Eigen::Map<const Eigen::Vector4d>(gx + 4 * k) + Eigen::Map<const Eigen::Vector4d>(gy + 4 * k);
+    const double from = sx[k], change = sy[k] - sx[k];
+    terms.FromFrom += from * from;
+    terms.FromChange += from * change;
+    terms.ChangeChange += change * change;
+    terms.FromField += from * field;
+    terms.ChangeField += change * field;
   }
-  const double curvature = area * changeChange;
-  const double u = curvature > 0.0 ? std::min(1.0, std::max(0.0, (changeField - area * fromChange) / curvature)) : 0.0;
-  if (curvature > 0.0)
+  return terms;
+}
+
+double AppearanceCollapser::FitBlend(const EdgeError& terms, CollapsePlan& plan)
+{
+  // The point data at the plan's point: the blend of least E(p, v), a parabola in v; the plan's
+  // whole error with it.
+  const Vec3& p = plan.Position;
+  double error = terms.Whole.Evaluate(p);
+  const double curvature = terms.Area * terms.ChangeChange;
+  if (terms.Area > 0.0)
   {
-    plan.Weights[0] = 1.0 - u;
-    plan.Weights[1] = u;
+    const Eigen::Vector4d at(p.x(), p.y(), p.z(), 1.0);
+    const double fromField = terms.FromField.dot(at), changeField = terms.ChangeField.dot(at);
+    const bool keepsX = plan.Vertices[0] == terms.X;
+    double share = keepsX ? plan.Weights[1] : plan.Weights[0]; // y's, where the ends agree
+    if (curvature > 0.0)
+    {
+      share = std::min(1.0, std::max(0.0, (changeField - terms.Area * terms.FromChange) / curvature));
+      plan.Weights[0] = keepsX ? 1.0 - share : share;
+      plan.Weights[1] = 1.0 - plan.Weights[0];
+    }
+    error += terms.Area * (terms.FromFrom + 2.0 * share * terms.FromChange + share * share * terms.ChangeChange) -
+      2.0 * (fromField + share * changeField);
   }
-  const double blend = plan.Weights[1]; // u, or the plan's own weight where the ends agree
-  error += area * (fromFrom + 2.0 * blend * fromChange + blend * blend * changeChange) -
-    2.0 * (fromField + blend * changeField);
   return std::isfinite(error) ? std::max(0.0, error) : std::numeric_limits<double>::infinity();
 }
 
@@ -439,16 +466,17 @@ double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround
   // The chapter's point (plan, as PlanEdge made it), the first curve's alone (the second, across
   // the far corners, pulls a point on a colour border off it), and the ends the kinds allow:
   // the one of least error.
-  double best = this->FitBlend(plan);
-  CollapsePlan other;
   const std::int32_t y = edge.Vertex;
+  const EdgeError terms = this->ErrorTerms(x, y);
+  double best = FitBlend(terms, plan);
+  CollapsePlan other;
   const auto consider = [&](double at) {
     SetEnds(x, y, at, other);
     other.Position = at <= 0.0 ? this->Mesh.Point(x)
       : at >= 1.0              ? this->Mesh.Point(y)
                                : this->Normalised.InBox(
                       CurvePoint(this->Mesh.Point(x), this->UnitNormal[x], this->Mesh.Point(y), this->UnitNormal[y], at));
-    const double error = this->FitBlend(other);
+    const double error = FitBlend(terms, other);
     if (error < best)
     {
       best = error;
@@ -461,7 +489,7 @@ double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround
     {
       consider(t);
     }
-    this->ConsiderOptimum(x, edge, t, plan, best);
+    this->ConsiderOptimum(x, edge, terms, t, plan, best);
     if (this->MayMerge(y, x))
     {
       consider(0.0);
@@ -475,7 +503,7 @@ double AppearanceCollapser::LeastErrorPlacement(std::int32_t x, const EdgeAround
 }
 
 void AppearanceCollapser::ConsiderOptimum(
-  std::int32_t x, const EdgeAround& edge, double t, CollapsePlan& plan, double& best) const
+  std::int32_t x, const EdgeAround& edge, const EdgeError& terms, double t, CollapsePlan& plan, double& best) const
 {
   // The point of least distance to the merged planes (Garland and Heckbert's placement, as
   // meshoptimizer's simplifyWithUpdate re-fits positions), where they fix one within the edge's
@@ -483,8 +511,6 @@ void AppearanceCollapser::ConsiderOptimum(
   // at its place along the edge. (The fields are left out of the minimisation: with them the
   // point would leave the surface to meet a colour.)
   const std::int32_t y = edge.Vertex;
-  Quadric q = this->Quadrics[x];
-  q += this->Quadrics[y];
   const Vec3& p1 = this->Mesh.Point(x);
   const Vec3& p2 = this->Mesh.Point(y);
   const Vec3 chord = p2 - p1;
@@ -494,7 +520,7 @@ void AppearanceCollapser::ConsiderOptimum(
     return;
   }
   Vec3 optimum;
-  if (!MinimizeQuadric(q, optimum) || (optimum - plan.Position).squaredNorm() > length2)
+  if (!MinimizeQuadric(terms.Planes, optimum) || (optimum - plan.Position).squaredNorm() > length2)
   {
     return; // the planes fix no point near the edge (a flat region, a crease): the others stand
   }
@@ -502,7 +528,7 @@ void AppearanceCollapser::ConsiderOptimum(
   CollapsePlan other;
   SetEnds(x, y, along > 0.0 && along < 1.0 ? along : t, other);
   other.Position = this->Normalised.InBox(optimum);
-  const double error = this->FitBlend(other);
+  const double error = FitBlend(terms, other);
   if (error < best)
   {
     best = error;
