@@ -164,6 +164,13 @@ private:
   /// x's contractions the chapter's and the borders' rules allow, scored by the order's measure
   /// (the chapter's: the change of area, where the normals allow it).
   void Proposals(std::int32_t x, std::vector<CollapseProposal>& out);
+  /// Each free interior vertex moved along its normal to the least distance from its merged
+  /// planes, where no triangle turns by more than MaximumNormalDeviation and the move stays
+  /// within its star (see the header).
+  void SettleAlongNormals();
+  /// v's move along normal n to its planes' least distance, or false where the planes do not
+  /// fix one or a triangle would turn too far.
+  bool SettledPoint(std::int32_t v, const Vec3& n, Vec3& point) const;
   void Output(const TriangleMeshView& input, AppearanceCollapseResult& result) const;
 
   const AppearanceCollapseOptions& Options;
@@ -750,6 +757,55 @@ std::int64_t AppearanceCollapser::Prepare(const TriangleMeshView& input, Appeara
   return prepared.TargetTriangles;
 }
 
+bool AppearanceCollapser::SettledPoint(std::int32_t v, const Vec3& n, Vec3& point) const
+{
+  // Q(p + s n) is least at s = −(A p + b)·n / nᵀA n.
+  const Vec3& p = this->Mesh.Point(v);
+  const Quadric& q = this->Quadrics[v];
+  const Eigen::Matrix3d a = q.A();
+  const double curvature = n.dot(a * n);
+  if (!(curvature > 0.0))
+  {
+    return false;
+  }
+  point = this->Normalised.InBox(p - ((a * p + q.B()).dot(n) / curvature) * n);
+  double reach = 0.0;
+  bool allowed = point.allFinite();
+  this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
+    const Vec3& b = this->Mesh.Point(next);
+    const Vec3& c = this->Mesh.Point(previous);
+    reach = std::max(reach, (b - p).squaredNorm());
+    const Vec3 before = (b - p).cross(c - p), after = (b - point).cross(c - point);
+    const double length = after.norm();
+    allowed = allowed && length > 0.0 && after.dot(before) >= this->CosDeviation * length * before.norm();
+  });
+  return allowed && (point - p).squaredNorm() <= reach;
+}
+
+void AppearanceCollapser::SettleAlongNormals()
+{
+  // The triangles of a coarse curved surface cut under it while its points stay on it; moved
+  // along their normals to the planes of the input triangles merged into them, the points share
+  // the distance on both sides (meshoptimizer's simplifyWithUpdate moves its kept vertices to
+  // their quadrics' minimum at the end; along the normal alone, a point on a colour border
+  // stays on that border). Border, seam and locked points stay.
+  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
+  {
+    if (this->Mesh.NumberOfTrianglesAround(v) == 0 || this->Mesh.IsLocked(v) ||
+      this->Mesh.Class(v) != VertexClass::Interior)
+    {
+      continue;
+    }
+    this->Measure(v);
+    Vec3 point;
+    if (this->UnitNormal[v] != Vec3::Zero() && this->SettledPoint(v, this->UnitNormal[v], point))
+    {
+      this->Mesh.SetPoint(v, point);
+      this->Moved[v] = 1;
+    }
+  }
+}
+
 void AppearanceCollapser::Output(const TriangleMeshView& input, AppearanceCollapseResult& result) const
 {
   const std::vector<std::int32_t> used =
@@ -791,6 +847,10 @@ bool AppearanceCollapser::Run(const TriangleMeshView& input, AppearanceCollapseR
     return false;
   }
   result.Passes = queue.Passes();
+  if (this->Options.Order == AppearanceOrder::Quadric && this->BoundLimit < 0.0)
+  {
+    this->SettleAlongNormals();
+  }
   this->Output(input, result);
   end.Judge(result.Report, this->BoundLimit >= 0.0, "no collapse is left that keeps the mesh valid");
   if (this->Relaxations > 0)

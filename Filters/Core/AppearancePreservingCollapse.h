@@ -32,6 +32,13 @@
  *   corners, pulls a point on a colour border off it), the ends and the planes' nearest point
  *   within the edge's reach; the point data the blend of the ends' of least error there (as
  *   meshoptimizer's simplifyWithUpdate re-fits values, within the blends the output follows).
+ *   At the end each free interior point (not on a border or seam, not locked) moves along its
+ *   normal to the least distance from its merged planes, where no triangle turns by more than
+ *   MaximumNormalDeviation and the move stays within its star: the triangles of a coarse curved
+ *   surface cut under it while their points stay on it, and moved out the points share the
+ *   distance on both sides (simplifyWithUpdate moves its points to their quadrics' minimum at
+ *   the end; along the normal alone, a point on a colour border stays on it). Not under an
+ *   error bound, which the collapses' points meet.
  * - Extreme vertices (importance at least 1 / cos(ExtremeAngle / 2)) stay where they are: an
  *   edge with one extreme end collapses onto it, one with two onto the more important; an
  *   extreme vertex with an extreme neighbour may go only along an edge to an extreme neighbour,
