@@ -22,9 +22,12 @@
  *   chapter's, the first curve's, the edge's ends and the planes' nearest point, and its point
  *   data the blend of the ends' of least error there; so colour and shading edges keep their
  *   points and lines.
- * - Extreme vertices (their normals spread as a crease of ExtremeAngle does) stay where they
- *   are; an edge between two of them is contracted only where it is sharp (FlatEdgeAngle), so
- *   creases lose points along their line.
+ *   At the end each free interior point moves along its normal to the least distance from the
+ *   planes merged into it, so that the coarse triangles straddle a curved surface.
+ * - In the Normal Spread order, extreme vertices (their normals spread as a crease of
+ *   ExtremeAngle does) stay where they are; an edge between two of them is contracted only
+ *   where it is sharp (FlatEdgeAngle), so creases lose points along their line. (In the Quadric
+ *   order the planes merged into a feature's point keep it.)
  * - VertexMemory (default off): a vertex next to a collapse waits for the next pass, which keeps
  *   the triangles even over the surface.
  * - Seams (points at one position with different point data, which crack closing keeps apart)
@@ -78,8 +81,8 @@ public:
 
   ///@{
   /**
-   * Degrees (default 60): a vertex whose triangles' normals spread as those of a crease of this
-   * angle is extreme, a feature kept where it is.
+   * Normal Spread order, degrees (default 60): a vertex whose triangles' normals spread as those
+   * of a crease of this angle is extreme, a feature kept where it is.
    */
   vtkSetClampMacro(ExtremeAngle, double, 0.0, 180.0);
   vtkGetMacro(ExtremeAngle, double);
@@ -96,8 +99,9 @@ public:
 
   ///@{
   /**
-   * Degrees (default 150): an edge between two extreme vertices whose triangles meet at more than
-   * this is flat and never contracted; below it, a sharp edge, along which extreme vertices go.
+   * Normal Spread order, degrees (default 150): an edge between two extreme vertices whose
+   * triangles meet at more than this is flat and never contracted; below it, a sharp edge, along
+   * which extreme vertices go.
    */
   vtkSetClampMacro(FlatEdgeAngle, double, 0.0, 180.0);
   vtkGetMacro(FlatEdgeAngle, double);

@@ -34,16 +34,19 @@ struct AppearanceCollapseParameters
   /// (Hoppe, "New quadric metric for simplifying meshes with appearance attributes"); the
   /// chapter's placement, extreme vertices and memory in both.
   AppearanceOrder Order = AppearanceOrder::Quadric;
-  /// A vertex is extreme (a feature kept where it is) when the normals of its triangles spread
-  /// as those of a crease of this dihedral turn do: its importance, the inverse length of their
-  /// apical-angle-weighted mean (eq. 7.6), is then at least 1 / cos(ExtremeAngle / 2). Degrees.
+  /// NormalSpread order: a vertex is extreme (a feature kept where it is) when the normals of its
+  /// triangles spread as those of a crease of this dihedral turn do: its importance, the inverse
+  /// length of their apical-angle-weighted mean (eq. 7.6), is then at least
+  /// 1 / cos(ExtremeAngle / 2). Degrees. The Quadric order has no extreme vertices: the planes
+  /// merged into a feature's point keep it, and pinned where they are, the points of a rough
+  /// surface (most of a fractal terrain's) would leave no placement to the quadric.
   double ExtremeAngle = 60.0;
   /// No triangle's normal may turn by more than this in a collapse (degrees): the chapter's
   /// second parameter, against folds and for a smooth result.
   double MaximumNormalDeviation = 45.0;
-  /// An edge between two extreme vertices is a flat edge, never contracted, when its two
-  /// triangles meet at more than this angle (degrees; 180 is flat); below it, a sharp edge, the
-  /// only one an extreme vertex with an extreme neighbour may go along.
+  /// NormalSpread order: an edge between two extreme vertices is a flat edge, never contracted,
+  /// when its two triangles meet at more than this angle (degrees; 180 is flat); below it, a
+  /// sharp edge, the only one an extreme vertex with an extreme neighbour may go along.
   double FlatEdgeAngle = 150.0;
   /// The chapter's vertex memory: a vertex whose neighbourhood a collapse changed waits for the
   /// next pass over the queue, which spreads the reduction over the surface (its Fig. 7-12).
@@ -65,12 +68,12 @@ struct AppearanceCollapseParameters
       "0: the chapter's order and edge choice (least important vertex, least area change), geometry alone; "
       "1 (default): the contraction of least quadric error, point data included.");
     visit("ExtremeAngle", self.ExtremeAngle, 0.0, 180.0,
-      "Degrees: a vertex whose triangles' normals spread as a crease of this angle is extreme, a feature "
+      "Normal Spread order, degrees: a vertex whose triangles' normals spread as a crease of this angle is extreme, a feature "
       "kept where it is.");
     visit("MaximumNormalDeviation", self.MaximumNormalDeviation, 0.0, 180.0,
       "Degrees: no triangle's normal turns by more than this in a collapse.");
     visit("FlatEdgeAngle", self.FlatEdgeAngle, 0.0, 180.0,
-      "Degrees: an edge between two extreme vertices whose triangles meet at more than this is flat and "
+      "Normal Spread order, degrees: an edge between two extreme vertices whose triangles meet at more than this is flat and "
       "never contracted; below it, a sharp edge, along which extreme vertices go.");
     visit("VertexMemory", self.VertexMemory, 0.0, 1.0,
       "A vertex whose neighbourhood a collapse changed waits for the next pass, so that the reduction "

@@ -80,7 +80,9 @@ public:
   AppearanceCollapser(const AppearanceCollapseOptions& options, const ExecutionContext& context)
     : Options(options)
     , Context(context)
-    , ExtremeImportance(1.0 / std::max(1e-12, std::cos(Radians(0.5 * options.ExtremeAngle))))
+    , ExtremeImportance(options.Order == AppearanceOrder::NormalSpread
+          ? 1.0 / std::max(1e-12, std::cos(Radians(0.5 * options.ExtremeAngle)))
+          : std::numeric_limits<double>::infinity())
     , CosFlatTurn(std::cos(Radians(180.0 - options.FlatEdgeAngle)))
     , Deviation(options.MaximumNormalDeviation)
     , CosDeviation(std::cos(Radians(options.MaximumNormalDeviation)))
@@ -132,6 +134,7 @@ private:
   /// its open-border edges perpendicular to them) and its point data's linear fields over them.
   void BuildQuadrics();
   void AddTriangleQuadric(std::int32_t t);
+  /// The chapter's order only: in the Quadric order a feature's planes keep its point.
   bool IsExtreme(std::int32_t v) const { return this->Importance[v] >= this->ExtremeImportance; }
   /// Whether the edge's two triangles meet at more than FlatEdgeAngle.
   bool IsFlatEdge(std::int32_t x, std::int32_t y) const;

@@ -39,10 +39,11 @@
  *   distance on both sides (simplifyWithUpdate moves its points to their quadrics' minimum at
  *   the end; along the normal alone, a point on a colour border stays on it). Not under an
  *   error bound, which the collapses' points meet.
- * - Extreme vertices (importance at least 1 / cos(ExtremeAngle / 2)) stay where they are: an
- *   edge with one extreme end collapses onto it, one with two onto the more important; an
- *   extreme vertex with an extreme neighbour may go only along an edge to an extreme neighbour,
- *   and only a sharp one (its triangles meet at less than FlatEdgeAngle).
+ * - In the NormalSpread order, extreme vertices (importance at least 1 / cos(ExtremeAngle / 2))
+ *   stay where they are: an edge with one extreme end collapses onto it, one with two onto the
+ *   more important; an extreme vertex with an extreme neighbour may go only along an edge to an
+ *   extreme neighbour, and only a sharp one (its triangles meet at less than FlatEdgeAngle).
+ *   The Quadric order has none: the planes merged into a feature's point keep it.
  * - VertexMemory: a vertex whose star a collapse changed waits for the next pass.
  * - Beyond the chapter: open borders. A border vertex goes only along its border, onto the
  *   neighbour (a half-edge collapse), and an interior vertex next to a border onto the border
