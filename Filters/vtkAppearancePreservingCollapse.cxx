@@ -19,8 +19,9 @@ vtkStandardNewMacro(vtkAppearancePreservingCollapse);
 namespace
 {
 /// Appends array's components, each mapped onto [0, 1] (unsigned chars over 255, normals from
-/// [-1, 1], others over their range), to the attribute coordinates of every point.
-void AppendScaled(vtkDataArray* array, bool normals, std::vector<double>& columns, int& dimension)
+/// [-1, 1], others over their range) and times factor, to the attribute coordinates of every
+/// point.
+void AppendScaled(vtkDataArray* array, bool normals, double factor, std::vector<double>& columns, int& dimension)
 {
   const vtkIdType n = array->GetNumberOfTuples();
   for (int k = 0; k < array->GetNumberOfComponents(); ++k)
@@ -44,7 +45,7 @@ void AppendScaled(vtkDataArray* array, bool normals, std::vector<double>& column
     }
     for (vtkIdType p = 0; p < n; ++p)
     {
-      const double value = (array->GetComponent(p, k) - low) / span;
+      const double value = factor * (array->GetComponent(p, k) - low) / span;
       columns.push_back(std::isfinite(value) ? value : 0.0);
     }
     ++dimension;
@@ -52,32 +53,37 @@ void AppendScaled(vtkDataArray* array, bool normals, std::vector<double>& column
 }
 
 /// The point data the Quadric order weighs (see the class's notes), one row per point: each
-/// array once.
-std::vector<double> AttributeCoordinates(vtkAlgorithm* filter, vtkPolyData* input, int& dimension)
+/// array once, the first time it is met, times its kind's factor (kinds of factor 0 left out).
+std::vector<double> AttributeCoordinates(
+  vtkAlgorithm* filter, const meshsimp::AppearanceCollapseParameters& weights, vtkPolyData* input, int& dimension)
 {
   std::vector<double> columns;
   dimension = 0;
   vtkPointData* data = input->GetPointData();
   std::vector<vtkDataArray*> weighed;
-  const auto weigh = [&](vtkDataArray* array, bool normals) {
+  const auto weigh = [&](vtkDataArray* array, bool normals, double factor) {
     if (array && std::find(weighed.begin(), weighed.end(), array) == weighed.end())
     {
       weighed.push_back(array);
-      AppendScaled(array, normals, columns, dimension);
+      if (factor > 0.0)
+      {
+        AppendScaled(array, normals, factor, columns, dimension);
+      }
     }
   };
-  weigh(data->GetNormals(), true);
+  weigh(data->GetNormals(), true, weights.NormalWeight);
   for (int i = 0; i < data->GetNumberOfArrays(); ++i)
   {
     auto* colours = vtkUnsignedCharArray::SafeDownCast(data->GetArray(i));
     if (colours && (colours->GetNumberOfComponents() == 3 || colours->GetNumberOfComponents() == 4))
     {
-      weigh(colours, false);
+      weigh(colours, false, weights.ColorWeight);
     }
   }
-  weigh(data->GetTCoords(), false);
-  weigh(data->GetScalars(), false);
-  weigh(vtkDataArray::SafeDownCast(vtkSimplification::SelectedPointArray(filter, 2, input, "attribute coordinates")), false);
+  weigh(data->GetTCoords(), false, weights.TextureCoordinateWeight);
+  weigh(data->GetScalars(), false, weights.ScalarWeight);
+  weigh(vtkDataArray::SafeDownCast(vtkSimplification::SelectedPointArray(filter, 2, input, "attribute coordinates")),
+    false, weights.ScalarWeight);
   // Column by column, as gathered, to a row per point.
   const vtkIdType n = input->GetNumberOfPoints();
   std::vector<double> rows(columns.size());
@@ -107,7 +113,7 @@ bool vtkAppearancePreservingCollapse::RunCore(const PieceCall& piece, meshsimp::
   std::vector<double> attributes;
   if (!piece.OnFirstResult && this->AttributeWeight > 0.0 && this->Order == meshsimp::AppearanceOrder::Quadric)
   {
-    attributes = AttributeCoordinates(this, piece.Input, options.AttributeDimension);
+    attributes = AttributeCoordinates(this, *this, piece.Input, options.AttributeDimension);
     options.AttributeCoordinates = attributes.empty() ? nullptr : attributes.data();
   }
   meshsimp::AppearanceCollapseResult full;

@@ -133,6 +133,22 @@ public:
   vtkGetMacro(AttributeWeight, double);
   ///@}
 
+  ///@{
+  /**
+   * QUADRIC order: each kind of point data's factor on AttributeWeight (default 1; 0 leaves the
+   * kind out): the active point normals, the unsigned-char colours (3 or 4 components), the
+   * active texture coordinates, and the active scalars with the Attribute Coordinates array.
+   */
+  vtkSetClampMacro(NormalWeight, double, 0.0, 1e3);
+  vtkGetMacro(NormalWeight, double);
+  vtkSetClampMacro(ColorWeight, double, 0.0, 1e3);
+  vtkGetMacro(ColorWeight, double);
+  vtkSetClampMacro(TextureCoordinateWeight, double, 0.0, 1e3);
+  vtkGetMacro(TextureCoordinateWeight, double);
+  vtkSetClampMacro(ScalarWeight, double, 0.0, 1e3);
+  vtkGetMacro(ScalarWeight, double);
+  ///@}
+
 protected:
   vtkAppearancePreservingCollapse();
   ~vtkAppearancePreservingCollapse() override = default;

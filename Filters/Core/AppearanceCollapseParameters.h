@@ -59,6 +59,14 @@ struct AppearanceCollapseParameters
   /// component scaled to [0, 1]) against the geometry, in bounding-box diagonals: a component's
   /// deviation of 1 from its field counts as a distance of this many diagonals from the planes.
   double AttributeWeight = 0.1;
+  /// Quadric order: each kind of point data's factor on AttributeWeight (0 leaves it out): the
+  /// active point normals, the unsigned-char colours (3 or 4 components), the active texture
+  /// coordinates, and the active scalars with the Attribute Coordinates array. meshoptimizer's
+  /// advice, for instance, is half the colours' weight for normals.
+  double NormalWeight = 1.0;
+  double ColorWeight = 1.0;
+  double TextureCoordinateWeight = 1.0;
+  double ScalarWeight = 1.0;
 
   /// The settings above by name (see ParameterTable.h): visit(name, member, minimum, maximum, help).
   template <class Self, class Visit>
@@ -83,6 +91,15 @@ struct AppearanceCollapseParameters
     visit("AttributeWeight", self.AttributeWeight, 0.0, 1e6,
       "Quadric order: the weight of the point data (colours, texture coordinates, normals, scaled to [0, 1]) "
       "against the geometry, in bounding-box diagonals per unit of deviation.");
+    visit("NormalWeight", self.NormalWeight, 0.0, 1e3,
+      "Quadric order: the point normals' factor on AttributeWeight (0: left out).");
+    visit("ColorWeight", self.ColorWeight, 0.0, 1e3,
+      "Quadric order: the unsigned-char colours' factor on AttributeWeight (0: left out).");
+    visit("TextureCoordinateWeight", self.TextureCoordinateWeight, 0.0, 1e3,
+      "Quadric order: the texture coordinates' factor on AttributeWeight (0: left out).");
+    visit("ScalarWeight", self.ScalarWeight, 0.0, 1e3,
+      "Quadric order: the factor on AttributeWeight of the active scalars and the Attribute Coordinates array "
+      "(0: left out).");
   }
 };
 

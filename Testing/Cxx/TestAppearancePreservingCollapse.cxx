@@ -81,22 +81,41 @@ vtkIdType BlendedPoints(vtkPolyData* mesh)
 void TestColourBorder()
 {
   // The colours weigh in the order: their border keeps its points, and fewer output points
-  // carry a blend of the two colours than with the geometry alone (AttributeWeight 0).
+  // carry a blend of the two colours than with the geometry alone (AttributeWeight 0) or with
+  // the colours' factor at 0 (ColorWeight; the sphere's normals still weigh). With the normals'
+  // factor at 0 too, nothing is weighed: the output is the geometry-alone one, point for point.
+  struct Weights
+  {
+    double Attribute, Normal, Color;
+  };
+  const std::array<Weights, 4> runs = { { { 0.0, 1.0, 1.0 }, { 0.1, 1.0, 0.0 }, { 0.1, 1.0, 1.0 }, { 0.1, 0.0, 0.0 } } };
   vtkSmartPointer<vtkPolyData> sphere = TwoColourSphere();
-  vtkIdType blended[2] = { 0, 0 };
-  for (const int weighted : { 0, 1 })
+  std::array<vtkSmartPointer<vtkPolyData>, 4> outputs;
+  std::array<vtkIdType, 4> blended{};
+  for (std::size_t run = 0; run < runs.size(); ++run)
   {
     vtkNew<vtkAppearancePreservingCollapse> filter;
     filter->SetInputData(sphere);
     filter->SetTargetReduction(0.95);
-    filter->SetAttributeWeight(weighted);
+    filter->SetAttributeWeight(runs[run].Attribute);
+    filter->SetNormalWeight(runs[run].Normal);
+    filter->SetColorWeight(runs[run].Color);
     filter->Update();
-    CHECK(meshsimp_test::OpenEdges(filter->GetOutput()) == 0);
-    blended[weighted] = BlendedPoints(filter->GetOutput());
+    outputs[run] = filter->GetOutput();
+    CHECK(meshsimp_test::OpenEdges(outputs[run]) == 0);
+    blended[run] = BlendedPoints(outputs[run]);
   }
-  std::cout << "two-colour sphere at 95 %: blended points " << blended[1] << " (geometry alone " << blended[0]
-            << ")\n";
-  CHECK(blended[1] < blended[0]);
+  std::cout << "two-colour sphere at 95 %: blended points " << blended[2] << " (geometry alone " << blended[0]
+            << ", colours left out " << blended[1] << ")\n";
+  CHECK(blended[2] < blended[0] && blended[2] < blended[1]);
+  CHECK(outputs[3]->GetNumberOfPoints() == outputs[0]->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < outputs[0]->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    outputs[3]->GetPoint(i, a);
+    outputs[0]->GetPoint(i, b);
+    CHECK(std::equal(a, a + 3, b));
+  }
 }
 
 /// A bumpy square whose right half has its own copies of the points on x = 0.5, with other

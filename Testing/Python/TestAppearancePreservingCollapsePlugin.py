@@ -21,7 +21,9 @@ cow = OFFReader(FileName=os.path.join(args.data, "cow.off"))
 collapsed = AppearancePreservingCollapse(Input=cow)
 check(collapsed.TargetReduction == 0.9, "default TargetReduction is 0.9")
 check(collapsed.Order == "Quadric" and collapsed.ExtremeAngle == 60 and collapsed.MaximumNormalDeviation == 45
-      and collapsed.FlatEdgeAngle == 150 and collapsed.VertexMemory == 0 and collapsed.AttributeWeight == 0.1,
+      and collapsed.FlatEdgeAngle == 150 and collapsed.VertexMemory == 0 and collapsed.AttributeWeight == 0.1
+      and collapsed.NormalWeight == 1 and collapsed.ColorWeight == 1 and collapsed.TextureCoordinateWeight == 1
+      and collapsed.ScalarWeight == 1,
       "defaults")
 collapsed.UpdatePipeline()
 cells = collapsed.GetDataInformation().GetNumberOfCells()
