@@ -31,7 +31,8 @@
  * - VertexMemory (default off): a vertex next to a collapse waits for the next pass, which keeps
  *   the triangles even over the surface.
  * - Seams (points at one position with different point data, which crack closing keeps apart)
- *   and open borders: seam points stay, border points go only along their border.
+ *   and open borders: border points go only along their border; a seam point and its twin go
+ *   together, along the seam onto a neighbour and its twin, so no crack opens.
  *
  * The target, the constraints, the input and the output mapping are the common ones of
  * vtkMeshSimplificationFilter: every point array is carried (floating arrays blended as each

@@ -128,7 +128,13 @@ private:
   /// The prepared mesh in the engine with its locks (seams among them), point data, quadrics
   /// and bound; returns the count.
   std::int64_t Prepare(const TriangleMeshView& input, AppearanceCollapseResult& result);
-  void LockSeams();
+  /// Border points at one position pair up as seam twins (Twin); where more than two meet, they
+  /// are locked.
+  void FindSeams();
+  /// The seam's other side of a proposal: where it removes a seam point, the same half-edge
+  /// collapse of the twins, its error added to the score. False where the twins cannot follow
+  /// (no twin edge, a kind that may not go, stars that touch) or the proposal moves a seam point.
+  bool AddTwin(CollapseProposal& proposal) const;
   void ReadAttributes();
   /// Each vertex's quadric: the area-weighted planes of its triangles (and of the planes through
   /// its open-border edges perpendicular to them) and its point data's linear fields over them.
@@ -194,6 +200,7 @@ private:
   std::vector<double> Attributes, Gradients, FieldArea;
   std::vector<Quadric> Quadrics, FieldQuadrics; // the planes; the fields' part in the position
   std::vector<std::uint8_t> Moved; // a collapse gave the vertex a new position
+  std::vector<std::int32_t> Twin;  // a seam point's twin on the seam's other side (-1: none)
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0;        // in mesh units; < 0: no bound
   std::vector<std::int32_t> Ring;
@@ -563,7 +570,7 @@ void AppearanceCollapser::Proposals(std::int32_t x, std::vector<CollapseProposal
     }
     this->PlanEdge(x, edge, t, proposal.Plan);
     proposal.Score = chapter ? this->AreaChange(proposal.Plan) : this->LeastErrorPlacement(x, edge, t, proposal.Plan);
-    if (proposal.Score >= 0.0)
+    if (proposal.Score >= 0.0 && this->AddTwin(proposal))
     {
       out.push_back(proposal);
     }
@@ -601,10 +608,10 @@ void AppearanceCollapser::Collapsed(const CollapsePlan& plan)
   }
 }
 
-void AppearanceCollapser::LockSeams()
+void AppearanceCollapser::FindSeams()
 {
   // Border points at the same position as another point (after cracks are closed, those whose
-  // point data differ: a texture, colour or normal seam) stay where they are, on both sides.
+  // point data differ: a texture, colour or normal seam).
   std::vector<std::int32_t> border;
   for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
   {
@@ -619,19 +626,54 @@ void AppearanceCollapser::LockSeams()
     return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3) || (p == q && a < b);
   };
   std::sort(border.begin(), border.end(), before);
-  for (std::size_t i = 1; i < border.size(); ++i)
+  this->Twin.assign(this->Mesh.NumberOfPoints(), -1);
+  for (std::size_t first = 0, last = 0; first < border.size(); first = last)
   {
-    if (this->Mesh.Point(border[i]) == this->Mesh.Point(border[i - 1]))
+    while (last < border.size() && this->Mesh.Point(border[last]) == this->Mesh.Point(border[first]))
     {
-      for (const std::int32_t v : { border[i], border[i - 1] })
+      ++last;
+    }
+    if (last - first == 2)
+    {
+      this->Twin[border[first]] = border[first + 1];
+      this->Twin[border[first + 1]] = border[first];
+    }
+    for (std::size_t i = first; last - first > 2 && i < last; ++i)
+    {
+      if (!this->Mesh.IsLocked(border[i]))
       {
-        if (!this->Mesh.IsLocked(v))
-        {
-          this->Mesh.Lock(v, LockReason::Seam);
-        }
+        this->Mesh.Lock(border[i], LockReason::Seam);
       }
     }
   }
+}
+
+bool AppearanceCollapser::AddTwin(CollapseProposal& proposal) const
+{
+  const CollapsePlan& plan = proposal.Plan;
+  CollapsePlan& twin = proposal.Twin;
+  twin.Count = 0;
+  const std::int32_t kept = plan.Vertices[0], removed = plan.Vertices[1];
+  const bool keptStays = plan.Position == this->Mesh.Point(kept);
+  if (this->Twin[removed] < 0)
+  {
+    return this->Twin[kept] < 0 || keptStays;
+  }
+  const std::int32_t twinKept = this->Twin[kept], twinRemoved = this->Twin[removed];
+  const auto apart = [this](std::int32_t a, std::int32_t b) { return this->Mesh.TrianglesOnEdge(a, b) == 0; };
+  if (!keptStays || twinKept < 0 || this->Mesh.TrianglesOnEdge(twinRemoved, twinKept) != 1 ||
+    !this->MayMerge(twinRemoved, twinKept) || !apart(twinKept, kept) || !apart(twinKept, removed) ||
+    !apart(twinRemoved, kept) || !apart(twinRemoved, removed))
+  {
+    return false;
+  }
+  SetEnds(twinKept, twinRemoved, 0.0, twin);
+  twin.Position = this->Mesh.Point(twinKept);
+  if (this->Options.Order == AppearanceOrder::Quadric)
+  {
+    proposal.Score += FitBlend(this->ErrorTerms(twinKept, twinRemoved), twin);
+  }
+  return true;
 }
 
 void AppearanceCollapser::ReadAttributes()
@@ -747,7 +789,7 @@ std::int64_t AppearanceCollapser::Prepare(const TriangleMeshView& input, Appeara
     this->BoundLimit = prepared.Bound;
   }
   const std::int32_t n = this->Mesh.NumberOfPoints();
-  this->LockSeams();
+  this->FindSeams();
   this->ReadAttributes();
   if (this->Options.Order == AppearanceOrder::Quadric)
   {

@@ -48,8 +48,11 @@
  * - Beyond the chapter: open borders. A border vertex goes only along its border, onto the
  *   neighbour (a half-edge collapse), and an interior vertex next to a border onto the border
  *   point; border corners (BoundaryCornerAngle) and locked points stay; a hinge vertex only
- *   along its hinge (the engine's rules). A seam, where points share a position but not their
- *   point data, is two borders: their points stay where they are, so no crack opens.
+ *   along its hinge (the engine's rules). A seam, where two border points share a position but
+ *   not their point data, is two borders that go together: a seam point goes only along the
+ *   seam onto its neighbour, and its twin onto its neighbour's twin in the same step, or
+ *   neither (VertexQueue's twin plans), so no crack opens; where more than two points meet,
+ *   they stay.
  * - Beyond the chapter (MaximumError): a collapse whose point would lie farther than the bound
  *   from a plane of the input triangles merged into it (PlaneDistanceBound) is not made.
  * - The output's point normals are the sources' blended (CarriesNormals): the curve and quadric

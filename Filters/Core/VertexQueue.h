@@ -16,7 +16,9 @@
  *   until a collapse changes its star). Called after Measure, for the same vertices; locked ones
  *   are measured but never keyed;
  * - `void Propose(std::int32_t v, std::vector<CollapseProposal>& out)`: v's candidate collapses
- *   (plans that remove v, with scores, least best);
+ *   (plans that remove v, with scores, least best). A proposal may carry a twin plan, made with
+ *   it or not at all (a seam's other side: points at the same positions, with other point
+ *   data, collapsing alike so that no crack opens); the twin's stars must not touch the plan's;
  * - `bool Accepts(const CollapsePlan& plan)`: the policy's own filter (a normal turned too far,
  *   an error bound), asked in score order before the engine's checks, so that a dear filter
  *   runs only until a proposal passes; `const char* OwnRules() const` says what it refuses,
@@ -59,10 +61,12 @@
 namespace meshsimp
 {
 
-/// A collapse a policy proposes for a vertex, with its score (least best).
+/// A collapse a policy proposes for a vertex, with its score (least best), and the twin plan
+/// made with it (Count 0: none).
 struct CollapseProposal
 {
   CollapsePlan Plan;
+  CollapsePlan Twin;
   double Score = 0.0;
 };
 
@@ -122,12 +126,12 @@ public:
     bool waits = false; // a proposal with a vertex changed in this pass (memory)
     for (const CollapseProposal& proposal : this->Proposals)
     {
-      if (this->Defer && this->ChangedInThisPass(proposal.Plan))
+      if (this->Defer && (this->ChangedInThisPass(proposal.Plan) || this->ChangedInThisPass(proposal.Twin)))
       {
         waits = true;
         continue;
       }
-      if (!this->Rules.Accepts(proposal.Plan) || this->Mesh.FirstFailedCheck(proposal.Plan) != CollapseCheck::Passed)
+      if (!this->Passes(proposal.Plan) || (proposal.Twin.Count > 0 && !this->Passes(proposal.Twin)))
       {
         continue;
       }
@@ -137,6 +141,10 @@ public:
         return true;
       }
       this->Collapse(proposal.Plan);
+      if (proposal.Twin.Count > 0)
+      {
+        this->Collapse(proposal.Twin);
+      }
       return true;
     }
     if (waits)
@@ -198,6 +206,12 @@ private:
   /// only once it has lost an eighth of its triangles since it was last, so that the collapses
   /// around the centre of a fan of n triangles cost n log n, not n².
   static constexpr std::int32_t HubTriangles = 64;
+
+  /// The policy's own filter, then the engine's checks.
+  bool Passes(const CollapsePlan& plan)
+  {
+    return this->Rules.Accepts(plan) && this->Mesh.FirstFailedCheck(plan) == CollapseCheck::Passed;
+  }
 
   bool ChangedInThisPass(const CollapsePlan& plan) const
   {
