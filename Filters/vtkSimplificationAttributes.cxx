@@ -8,6 +8,7 @@
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -171,9 +172,19 @@ Eigen::Vector3d UnitOrUp(const Eigen::Vector3d& n)
 
 /// Area-weighted point normals and per-triangle normals of the output, into the active normal
 /// arrays the mapping made; where the mesh carries its normals, the mapped point normals
-/// renormalised instead (the area-weighted one where a blend cancels out).
+/// renormalised instead (the area-weighted one where a blend cancels out), and where the input
+/// had none (nor a point array named Normals), new area-weighted ones named Normals.
 void RecomputeNormals(const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
 {
+  if (mesh.CarriesNormals && !output->GetPointData()->GetNormals() && !output->GetPointData()->GetArray("Normals"))
+  {
+    vtkNew<vtkFloatArray> added;
+    added->SetName("Normals");
+    added->SetNumberOfComponents(3);
+    added->SetNumberOfTuples(output->GetNumberOfPoints());
+    added->Fill(0.0);
+    output->GetPointData()->SetNormals(added);
+  }
   vtkDataArray* pointNormals = output->GetPointData()->GetNormals();
   vtkDataArray* cellNormals = output->GetCellData()->GetNormals();
   if (!pointNormals && !cellNormals)

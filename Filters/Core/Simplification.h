@@ -118,7 +118,9 @@ struct SimplifiedMesh
   Outcome Report;
   /// Whether the input's point normals, blended by the sources' weights and renormalised, show
   /// the output's shading (an algorithm that keeps the surface's shape at every point it places
-  /// says so), rather than normals recomputed from the output's triangles.
+  /// says so), rather than normals recomputed from the output's triangles; and whether, where
+  /// the input has no point normals, the output gets them, recomputed from its triangles
+  /// (area-weighted), so that a coarse mesh is drawn smooth as the fine one looked, not faceted.
   bool CarriesNormals = false;
 
   std::int64_t NumberOfPoints() const { return static_cast<std::int64_t>(this->Points.size() / 3); }

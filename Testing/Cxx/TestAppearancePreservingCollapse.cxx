@@ -6,10 +6,12 @@
 
 #include "vtkCell.h"
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSphereSource.h"
 
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
 
 namespace
 {
@@ -234,6 +237,54 @@ void TestThreadsAndInput(vtkPolyData* cow)
 }
 }
 
+void TestNormalsWhereTheInputHadNone(vtkPolyData* cow)
+{
+  // Without point normals in the input, the output gets them (active, named Normals): each the
+  // area-weighted mean of its triangles' normals, so that the coarse mesh is drawn smooth. The
+  // input stays without.
+  vtkNew<vtkPolyData> bare;
+  bare->DeepCopy(cow);
+  bare->GetPointData()->SetNormals(nullptr);
+  bare->GetPointData()->RemoveArray("Normals");
+  bare->GetCellData()->Initialize();
+  CHECK(!bare->GetPointData()->GetNormals() && !bare->GetPointData()->GetArray("Normals"));
+  vtkNew<vtkAppearancePreservingCollapse> filter;
+  filter->SetInputData(bare);
+  filter->SetTargetReduction(0.9);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  CHECK(normals && std::string(normals->GetName()) == "Normals" && !bare->GetPointData()->GetNormals());
+  std::vector<std::array<double, 3>> sums(out->GetNumberOfPoints(), { 0.0, 0.0, 0.0 });
+  vtkCellArray* polys = out->GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    double a[3], b[3], c[3];
+    out->GetPoint(ids[0], a);
+    out->GetPoint(ids[1], b);
+    out->GetPoint(ids[2], c);
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        sums[ids[k]][i] += n[i];
+      }
+    }
+  }
+  for (vtkIdType p = 0; normals && p < out->GetNumberOfPoints(); ++p)
+  {
+    const double* n = normals->GetTuple3(p);
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const std::array<double, 3>& m = sums[p];
+    const double mean = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    CHECK(std::abs(length - 1.0) < 1e-6 && (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]) > 0.9999 * mean);
+  }
+}
+
 int TestAppearancePreservingCollapse(int, char*[])
 {
   vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
@@ -241,6 +292,7 @@ int TestAppearancePreservingCollapse(int, char*[])
   TestColourBorder();
   TestTextureSeam();
   TestThreadsAndInput(cow);
+  TestNormalsWhereTheInputHadNone(cow);
   meshsimp_test::CheckPreservedRim<vtkAppearancePreservingCollapse>(0.01);
   meshsimp_test::CheckPartitionedInput<vtkAppearancePreservingCollapse>(cow);
   meshsimp_test::CheckPointLabels<vtkAppearancePreservingCollapse>(cow);
