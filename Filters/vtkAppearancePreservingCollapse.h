@@ -22,8 +22,9 @@
  *   chapter's, the first curve's, the edge's ends and the planes' nearest point, and its point
  *   data the blend of the ends' of least error there; so colour and shading edges keep their
  *   points and lines.
- *   At the end each free interior point moves along its normal to the least distance from the
- *   planes merged into it, so that the coarse triangles straddle a curved surface.
+ *   At the end each free interior point (not on a border or seam, not locked) moves along its
+ *   normal to the least distance from the planes merged into it, so that the coarse triangles
+ *   straddle a curved surface (not in MaximumError mode).
  * - In the Normal Spread order, extreme vertices (their normals spread as a crease of
  *   ExtremeAngle does) stay where they are; an edge between two of them is contracted only
  *   where it is sharp (FlatEdgeAngle), so creases lose points along their line. (In the Quadric
@@ -32,12 +33,14 @@
  *   the triangles even over the surface.
  * - Seams (points at one position with different point data, which crack closing keeps apart)
  *   and open borders: border points go only along their border; a seam point and its twin go
- *   together, along the seam onto a neighbour and its twin, so no crack opens.
+ *   together, along the seam onto a neighbour and its twin, so no crack opens; where more than
+ *   two points meet, they stay.
  *
  * The target, the constraints, the input and the output mapping are the common ones of
  * vtkMeshSimplificationFilter: every point array is carried (floating arrays blended as each
  * collapse's point data; the active normals blended and renormalised, not recomputed, so the
- * shading stays the input's), and the point array "Importance" holds each output point's
+ * shading stays the input's, or, where the input has none, area-weighted ones added as the
+ * active "Normals"), and the point array "Importance" holds each output point's
  * importance; the field data holds "Passes". Under MPI, the stage after the border round
  * weighs geometry alone. A
  * triangle count is met within 1 %. In MaximumError mode it removes, in the same order, as far

@@ -61,8 +61,9 @@ struct AppearanceCollapseParameters
   double AttributeWeight = 0.1;
   /// Quadric order: each kind of point data's factor on AttributeWeight (0 leaves it out): the
   /// active point normals, the unsigned-char colours (3 or 4 components), the active texture
-  /// coordinates, and the active scalars with the Attribute Coordinates array. meshoptimizer's
-  /// advice, for instance, is half the colours' weight for normals.
+  /// coordinates, and the active scalars with the Attribute Coordinates array (active scalars
+  /// that are unsigned-char colours count as colours). meshoptimizer's advice, for instance, is
+  /// half the colours' weight for normals.
   double NormalWeight = 1.0;
   double ColorWeight = 1.0;
   double TextureCoordinateWeight = 1.0;

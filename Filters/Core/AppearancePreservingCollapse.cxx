@@ -135,6 +135,9 @@ private:
   /// collapse of the twins, its error added to the score. False where the twins cannot follow
   /// (no twin edge, a kind that may not go, stars that touch) or the proposal moves a seam point.
   bool AddTwin(CollapseProposal& proposal) const;
+  /// Whether the twins' stars share no point with the plan's (then the checks of one do not
+  /// depend on the other being made).
+  bool StarsApart(const CollapsePlan& plan, std::int32_t twinKept, std::int32_t twinRemoved) const;
   void ReadAttributes();
   /// Each vertex's quadric: the area-weighted planes of its triangles (and of the planes through
   /// its open-border edges perpendicular to them) and its point data's linear fields over them.
@@ -178,8 +181,9 @@ private:
   /// within its star (see the header).
   void SettleAlongNormals();
   /// v's move along normal n to its planes' least distance, or false where the planes do not
-  /// fix one or a triangle would turn too far.
-  bool SettledPoint(std::int32_t v, const Vec3& n, Vec3& point) const;
+  /// fix one, it would leave the ball of v's farthest neighbour or a triangle would turn by more
+  /// than MaximumNormalDeviation (as set) from where it was before the pass (unsettled).
+  bool SettledPoint(std::int32_t v, const Vec3& n, const std::vector<Vec3>& unsettled, Vec3& point) const;
   void Output(const TriangleMeshView& input, AppearanceCollapseResult& result) const;
 
   const AppearanceCollapseOptions& Options;
@@ -201,6 +205,7 @@ private:
   std::vector<Quadric> Quadrics, FieldQuadrics; // the planes; the fields' part in the position
   std::vector<std::uint8_t> Moved; // a collapse gave the vertex a new position
   std::vector<std::int32_t> Twin;  // a seam point's twin on the seam's other side (-1: none)
+  mutable std::vector<std::int32_t> Around; // StarsApart's scratch
   PlaneDistanceBound Bound;
   double BoundLimit = -1.0;        // in mesh units; < 0: no bound
   std::vector<std::int32_t> Ring;
@@ -442,7 +447,8 @@ EdgeError AppearanceCollapser::ErrorTerms(std::int32_t x, std::int32_t y) const
   const double* sy = this->Attributes.data() + static_cast<std::int64_t>(y) * this->Dimension;
   for (int k = 0; k < this->Dimension; ++k)
   {
-    const Eigen::Vector4d field = Eigen::Map<const Eigen::Vector4d>(gx + 4 * k) + Eigen::Map<const Eigen::Vector4d>(gy + 4 * k);
+    using Row = Eigen::Map<const Eigen::Vector4d>;
+    const Eigen::Vector4d field = Row(gx + 4 * k) + Row(gy + 4 * k);
     const double from = sx[k], change = sy[k] - sx[k];
     terms.FromFrom += from * from;
     terms.FromChange += from * change;
@@ -648,6 +654,28 @@ void AppearanceCollapser::FindSeams()
   }
 }
 
+bool AppearanceCollapser::StarsApart(const CollapsePlan& plan, std::int32_t twinKept, std::int32_t twinRemoved) const
+{
+  // The twins' checks are made before the plan is: no point may be in both stars (nor the
+  // twins in the plan's), or the plan's collapse would change what the twin's checks saw.
+  std::vector<std::int32_t>& around = this->Around;
+  around.clear();
+  for (const std::int32_t v : { plan.Vertices[0], plan.Vertices[1] })
+  {
+    this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t) { around.push_back(next); });
+    around.push_back(v);
+  }
+  bool apart = true;
+  for (const std::int32_t v : { twinKept, twinRemoved })
+  {
+    apart = apart && std::find(around.begin(), around.end(), v) == around.end();
+    this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t) {
+      apart = apart && std::find(around.begin(), around.end(), next) == around.end();
+    });
+  }
+  return apart;
+}
+
 bool AppearanceCollapser::AddTwin(CollapseProposal& proposal) const
 {
   const CollapsePlan& plan = proposal.Plan;
@@ -660,20 +688,18 @@ bool AppearanceCollapser::AddTwin(CollapseProposal& proposal) const
     return this->Twin[kept] < 0 || keptStays;
   }
   const std::int32_t twinKept = this->Twin[kept], twinRemoved = this->Twin[removed];
-  const auto apart = [this](std::int32_t a, std::int32_t b) { return this->Mesh.TrianglesOnEdge(a, b) == 0; };
   if (!keptStays || twinKept < 0 || this->Mesh.TrianglesOnEdge(twinRemoved, twinKept) != 1 ||
-    !this->MayMerge(twinRemoved, twinKept) || !apart(twinKept, kept) || !apart(twinKept, removed) ||
-    !apart(twinRemoved, kept) || !apart(twinRemoved, removed))
+    !this->MayMerge(twinRemoved, twinKept) || !this->StarsApart(plan, twinKept, twinRemoved))
   {
     return false;
   }
   SetEnds(twinKept, twinRemoved, 0.0, twin);
   twin.Position = this->Mesh.Point(twinKept);
-  if (this->Options.Order == AppearanceOrder::Quadric)
-  {
-    proposal.Score += FitBlend(this->ErrorTerms(twinKept, twinRemoved), twin);
-  }
-  return true;
+  const double twinScore = this->Options.Order == AppearanceOrder::Quadric
+    ? FitBlend(this->ErrorTerms(twinKept, twinRemoved), twin)
+    : this->AreaChange(twin); // the chapter's measure, which also holds it to the normal limit
+  proposal.Score += twinScore;
+  return twinScore >= 0.0;
 }
 
 void AppearanceCollapser::ReadAttributes()
@@ -802,7 +828,8 @@ std::int64_t AppearanceCollapser::Prepare(const TriangleMeshView& input, Appeara
   return prepared.TargetTriangles;
 }
 
-bool AppearanceCollapser::SettledPoint(std::int32_t v, const Vec3& n, Vec3& point) const
+bool AppearanceCollapser::SettledPoint(
+  std::int32_t v, const Vec3& n, const std::vector<Vec3>& unsettled, Vec3& point) const
 {
   // Q(p + s n) is least at s = −(A p + b)·n / nᵀA n.
   const Vec3& p = this->Mesh.Point(v);
@@ -816,13 +843,18 @@ bool AppearanceCollapser::SettledPoint(std::int32_t v, const Vec3& n, Vec3& poin
   point = this->Normalised.InBox(p - ((a * p + q.B()).dot(n) / curvature) * n);
   double reach = 0.0;
   bool allowed = point.allFinite();
+  // Each triangle's turn is measured from where it was before any point settled, against the
+  // limit as set (not as Relax raised it), so that no triangle turns farther however many of its
+  // corners move.
+  const double cosLimit = std::cos(Radians(this->Options.MaximumNormalDeviation));
   this->Mesh.ForEachCorner(v, [&](std::int32_t, std::int32_t next, std::int32_t previous) {
     const Vec3& b = this->Mesh.Point(next);
     const Vec3& c = this->Mesh.Point(previous);
     reach = std::max(reach, (b - p).squaredNorm());
-    const Vec3 before = (b - p).cross(c - p), after = (b - point).cross(c - point);
+    const Vec3 before = (unsettled[next] - unsettled[v]).cross(unsettled[previous] - unsettled[v]);
+    const Vec3 after = (b - point).cross(c - point);
     const double length = after.norm();
-    allowed = allowed && length > 0.0 && after.dot(before) >= this->CosDeviation * length * before.norm();
+    allowed = allowed && length > 0.0 && after.dot(before) >= cosLimit * length * before.norm();
   });
   return allowed && (point - p).squaredNorm() <= reach;
 }
@@ -834,6 +866,11 @@ void AppearanceCollapser::SettleAlongNormals()
   // the distance on both sides (meshoptimizer's simplifyWithUpdate moves its kept vertices to
   // their quadrics' minimum at the end; along the normal alone, a point on a colour border
   // stays on that border). Border, seam and locked points stay.
+  std::vector<Vec3> unsettled(static_cast<std::size_t>(this->Mesh.NumberOfPoints()));
+  for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
+  {
+    unsettled[v] = this->Mesh.Point(v);
+  }
   for (std::int32_t v = 0; v < this->Mesh.NumberOfPoints(); ++v)
   {
     if (this->Mesh.NumberOfTrianglesAround(v) == 0 || this->Mesh.IsLocked(v) ||
@@ -843,7 +880,7 @@ void AppearanceCollapser::SettleAlongNormals()
     }
     this->Measure(v);
     Vec3 point;
-    if (this->UnitNormal[v] != Vec3::Zero() && this->SettledPoint(v, this->UnitNormal[v], point))
+    if (this->UnitNormal[v] != Vec3::Zero() && this->SettledPoint(v, this->UnitNormal[v], unsettled, point))
     {
       this->Mesh.SetPoint(v, point);
       this->Moved[v] = 1;

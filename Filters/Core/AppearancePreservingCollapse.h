@@ -34,7 +34,8 @@
  *   meshoptimizer's simplifyWithUpdate re-fits values, within the blends the output follows).
  *   At the end each free interior point (not on a border or seam, not locked) moves along its
  *   normal to the least distance from its merged planes, where no triangle turns by more than
- *   MaximumNormalDeviation and the move stays within its star: the triangles of a coarse curved
+ *   MaximumNormalDeviation (as set, not as relaxed) from where it was before any point settled
+ *   and the point stays within the ball of its farthest neighbour: the triangles of a coarse curved
  *   surface cut under it while their points stay on it, and moved out the points share the
  *   distance on both sides (simplifyWithUpdate moves its points to their quadrics' minimum at
  *   the end; along the normal alone, a point on a colour border stays on it). Not under an
@@ -56,7 +57,8 @@
  * - Beyond the chapter (MaximumError): a collapse whose point would lie farther than the bound
  *   from a plane of the input triangles merged into it (PlaneDistanceBound) is not made.
  * - The output's point normals are the sources' blended (CarriesNormals): the curve and quadric
- *   points stay on the surface the normals describe.
+ *   points stay on the surface the normals describe. Where the input has none, the front end
+ *   gives the output area-weighted ones.
  */
 #ifndef MeshSimplification_AppearancePreservingCollapse_h
 #define MeshSimplification_AppearancePreservingCollapse_h

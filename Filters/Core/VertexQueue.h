@@ -131,7 +131,7 @@ public:
         waits = true;
         continue;
       }
-      if (!this->Passes(proposal.Plan) || (proposal.Twin.Count > 0 && !this->Passes(proposal.Twin)))
+      if (!this->PassesChecks(proposal.Plan) || (proposal.Twin.Count > 0 && !this->PassesChecks(proposal.Twin)))
       {
         continue;
       }
@@ -208,7 +208,7 @@ private:
   static constexpr std::int32_t HubTriangles = 64;
 
   /// The policy's own filter, then the engine's checks.
-  bool Passes(const CollapsePlan& plan)
+  bool PassesChecks(const CollapsePlan& plan)
   {
     return this->Rules.Accepts(plan) && this->Mesh.FirstFailedCheck(plan) == CollapseCheck::Passed;
   }

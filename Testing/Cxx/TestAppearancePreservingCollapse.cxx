@@ -235,7 +235,6 @@ void TestThreadsAndInput(vtkPolyData* cow)
     return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
   });
 }
-}
 
 void TestNormalsWhereTheInputHadNone(vtkPolyData* cow)
 {
@@ -283,6 +282,7 @@ void TestNormalsWhereTheInputHadNone(vtkPolyData* cow)
     const double mean = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
     CHECK(std::abs(length - 1.0) < 1e-6 && (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]) > 0.9999 * mean);
   }
+}
 }
 
 int TestAppearancePreservingCollapse(int, char*[])
