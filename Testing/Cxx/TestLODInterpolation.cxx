@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkLODInterpolation: a sphere morphed towards its simplification. t = 0 is the detailed
+// sphere exactly; at t = 1 every point lies on the coarse surface; the distance to the detailed
+// surface never falls as t grows; no triangle turns over; a point array of both inputs morphs;
+// the correspondence is built once for 11 frames; bad inputs give one-line errors. With -V, the
+// cow at t = 0.5 against its baseline image.
+#include "vtkAppearancePreservingCollapse.h"
+#include "vtkLODInterpolation.h"
+#include "vtkOFFMeshReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkGenericCell.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkSphereSource.h"
+#include "vtkStaticCellLocator.h"
+
+#include "TestBadInput.h"
+#include "TestImageHelpers.h"
+#include "TestVTKHelpers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace
+{
+/// A sphere with the point array "Height" (its z) and its simplification at 95 %, which carries
+/// the array (as z of its own points, so that the morph's value can be checked).
+void SphereAndCoarse(vtkSmartPointer<vtkPolyData>& detailed, vtkSmartPointer<vtkPolyData>& coarse)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(60);
+  source->SetPhiResolution(60);
+  source->Update();
+  detailed = vtkSmartPointer<vtkPolyData>::New();
+  detailed->DeepCopy(source->GetOutput());
+  for (vtkPolyData* mesh : { detailed.GetPointer() })
+  {
+    vtkNew<vtkDoubleArray> height;
+    height->SetName("Height");
+    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    {
+      height->InsertNextValue(mesh->GetPoint(p)[2]);
+    }
+    mesh->GetPointData()->AddArray(height);
+  }
+  vtkNew<vtkAppearancePreservingCollapse> simplify;
+  simplify->SetInputData(detailed);
+  simplify->SetTargetReduction(0.95);
+  simplify->Update();
+  coarse = vtkSmartPointer<vtkPolyData>::New();
+  coarse->DeepCopy(simplify->GetOutput());
+  vtkDataArray* height = coarse->GetPointData()->GetArray("Height");
+  for (vtkIdType p = 0; p < coarse->GetNumberOfPoints(); ++p)
+  {
+    height->SetTuple1(p, coarse->GetPoint(p)[2]);
+  }
+}
+
+/// The largest and the mean distance of the mesh's points to the surface.
+std::pair<double, double> Distance(vtkPolyData* mesh, vtkPolyData* surface)
+{
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(surface);
+  locator->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  double largest = 0.0, sum = 0.0;
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    double closest[3], distance2 = 0.0;
+    vtkIdType id = -1;
+    int sub = 0;
+    locator->FindClosestPoint(mesh->GetPoint(p), closest, cell, id, sub, distance2);
+    largest = std::max(largest, std::sqrt(distance2));
+    sum += std::sqrt(distance2);
+  }
+  return { largest, sum / std::max<vtkIdType>(1, mesh->GetNumberOfPoints()) };
+}
+
+/// Output triangles whose normal turned by more than 90 degrees from their detailed triangle's
+/// (the output keeps the detailed triangles in order where no point merged).
+vtkIdType Folds(vtkPolyData* output, vtkPolyData* detailed)
+{
+  vtkIdType folds = 0;
+  for (vtkIdType t = 0; t < output->GetNumberOfCells() && output->GetNumberOfCells() == detailed->GetNumberOfCells(); ++t)
+  {
+    double n[2][3];
+    int k = 0;
+    for (vtkPolyData* mesh : { output, detailed })
+    {
+      vtkIdType count = 0;
+      const vtkIdType* ids = nullptr;
+      mesh->GetCellPoints(t, count, ids);
+      double a[3], b[3], c[3];
+      mesh->GetPoint(ids[0], a);
+      mesh->GetPoint(ids[1], b);
+      mesh->GetPoint(ids[2], c);
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] }, v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      n[k][0] = u[1] * v[2] - u[2] * v[1];
+      n[k][1] = u[2] * v[0] - u[0] * v[2];
+      n[k][2] = u[0] * v[1] - u[1] * v[0];
+      ++k;
+    }
+    folds += n[0][0] * n[1][0] + n[0][1] * n[1][1] + n[0][2] * n[1][2] < 0.0 ? 1 : 0;
+  }
+  return folds;
+}
+
+void TestMorph()
+{
+  vtkSmartPointer<vtkPolyData> detailed, coarse;
+  SphereAndCoarse(detailed, coarse);
+  vtkNew<vtkLODInterpolation> morph;
+  morph->SetInputData(0, detailed);
+  morph->SetCoarseData(coarse);
+  morph->SetMergeDistance(0.0);
+  double previous = -1.0;
+  for (int step = 0; step <= 10; ++step)
+  {
+    const double t = 0.1 * step;
+    morph->SetInterpolation(t);
+    morph->Update();
+    vtkPolyData* out = morph->GetOutput();
+    CHECK(out->GetNumberOfPoints() == detailed->GetNumberOfPoints() && out->GetNumberOfPolys() == detailed->GetNumberOfPolys());
+    if (step == 0)
+    {
+      for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+      {
+        double a[3], b[3];
+        out->GetPoint(p, a);
+        detailed->GetPoint(p, b);
+        CHECK(std::equal(a, a + 3, b));
+      }
+    }
+    const double away = Distance(out, detailed).second;
+    CHECK(away >= previous);
+    previous = away;
+    if (step % 3 == 1)
+    {
+      CHECK(Folds(out, detailed) == 0);
+    }
+    vtkDataArray* normals = out->GetPointData()->GetNormals();
+    CHECK(normals != nullptr);
+    for (vtkIdType p = 0; normals && p < normals->GetNumberOfTuples(); ++p)
+    {
+      const double* n = normals->GetTuple3(p);
+      CHECK(std::abs(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) - 1.0) < 1e-6);
+    }
+  }
+  vtkPolyData* out = morph->GetOutput();
+  CHECK(Distance(out, coarse).first < 1e-9);
+  vtkDataArray* height = out->GetPointData()->GetArray("Height");
+  for (vtkIdType p = 0; height && p < out->GetNumberOfPoints(); ++p)
+  {
+    CHECK(std::abs(height->GetTuple1(p) - out->GetPoint(p)[2]) < 1e-9); // morphed to the coarse values
+  }
+  CHECK(height != nullptr && out->GetPointData()->GetArray("Displacement") != nullptr);
+  auto* builds = vtkIntArray::SafeDownCast(out->GetFieldData()->GetArray("CorrespondenceBuilds"));
+  CHECK(builds && builds->GetValue(0) == 1 && morph->GetCorrespondenceBuilds() == 1);
+  // The paper's nearest vertices: at t = 1 the points stand on coarse points, and those that
+  // meet join, leaving about the coarse surface's triangles.
+  morph->SetCorrespondence(vtkLODInterpolation::NEAREST_VERTEX);
+  morph->SetMergeDistance(1e-6);
+  morph->Update();
+  CHECK(morph->GetCorrespondenceBuilds() == 2);
+  CHECK(morph->GetOutput()->GetNumberOfPolys() <= 1.1 * coarse->GetNumberOfPolys());
+  CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9);
+}
+
+/// The morph's errors (its own, then the executive's) for these inputs; the detailed input
+/// untouched.
+std::vector<std::string> MorphErrors(vtkPolyData* detailed, vtkPolyData* coarse)
+{
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(detailed);
+  vtkNew<meshsimp_test::MessageLog> log, executive;
+  vtkNew<vtkLODInterpolation> morph;
+  morph->AddObserver(vtkCommand::ErrorEvent, log);
+  morph->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+  morph->SetInputData(0, detailed);
+  if (coarse)
+  {
+    morph->SetCoarseData(coarse);
+  }
+  morph->Update();
+  meshsimp_test::CheckInputUntouched(detailed, copy);
+  std::vector<std::string> errors = log->Errors;
+  errors.insert(errors.end(), executive->Errors.begin(), executive->Errors.end());
+  return errors;
+}
+
+void TestBadInput()
+{
+  // An empty coarse surface, one of points alone: one error of the filter's (none of the
+  // executive's) that says which input has no triangles. No coarse input at all: VTK's own.
+  vtkSmartPointer<vtkPolyData> detailed, coarse;
+  SphereAndCoarse(detailed, coarse);
+  vtkNew<vtkPolyData> empty;
+  vtkNew<vtkPolyData> pointsOnly;
+  pointsOnly->SetPoints(coarse->GetPoints());
+  for (vtkPolyData* bad : { empty.GetPointer(), pointsOnly.GetPointer() })
+  {
+    const std::vector<std::string> errors = MorphErrors(detailed, bad);
+    CHECK(errors.size() == 1 && meshsimp_test::Mentions(errors[0], "Cannot morph: the coarse surface has no triangles."));
+  }
+  CHECK(!MorphErrors(detailed, nullptr).empty());
+}
+} // namespace
+
+int TestLODInterpolation(int argc, char* argv[])
+{
+  if (argc > 1 && std::strcmp(argv[1], "Image") == 0)
+  {
+    // The cow at t = 0.5 between itself and its simplification at 95 %.
+    vtkNew<vtkOFFMeshReader> cow;
+    cow->SetFileName(MESHSIMPLIFICATION_TEST_DATA "/cow.off");
+    vtkNew<vtkAppearancePreservingCollapse> simplify;
+    simplify->SetInputConnection(cow->GetOutputPort());
+    simplify->SetTargetReduction(0.95);
+    vtkNew<vtkLODInterpolation> morph;
+    morph->SetInputConnection(0, cow->GetOutputPort());
+    morph->SetCoarseConnection(simplify->GetOutputPort());
+    morph->SetInterpolation(0.5);
+    morph->Update();
+    return meshsimp_test::CompareWithBaseline(morph->GetOutput(), false, argc, argv);
+  }
+  TestMorph();
+  TestBadInput();
+  return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}

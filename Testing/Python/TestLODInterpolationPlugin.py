@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The plugin's LoD Interpolation (pvpython): the cow morphed towards its simplification at 95 %.
+Its defaults; t = 0 gives the cow's triangles; ten frames of an animated Interpolation build the
+correspondence once; at t = 1 the points stand on the coarse surface; the paper's nearest
+vertices at t = 1 leave about the coarse surface's triangles."""
+import os
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
+
+from plugintest import arguments, check, finish
+
+args = arguments()
+
+LoadPlugin(args.plugin, ns=globals())
+
+cow = OFFReader(FileName=os.path.join(args.data, "cow.off"))
+coarse = AppearancePreservingCollapse(Input=cow, TargetReduction=0.95)
+morph = LoDInterpolation(Detailed=cow, Coarse=coarse)
+check(morph.Interpolation == 0 and morph.Correspondence == "Nearest Surface Point" and morph.MergeDistance == 0.001,
+      "defaults")
+morph.UpdatePipeline()
+check(morph.GetDataInformation().GetNumberOfCells() == 5804, "t = 0 gives the cow's 5804 triangles")
+for frame in range(1, 11):
+    morph.Interpolation = frame / 10.0
+    morph.UpdatePipeline()
+output = servermanager.Fetch(morph)
+builds = output.GetFieldData().GetArray("CorrespondenceBuilds")
+check(builds is not None and builds.GetValue(0) == 1, "ten frames, one correspondence")
+check(output.GetPointData().GetArray("Displacement") is not None, "the Displacement array")
+coarse_cells = coarse.GetDataInformation().GetNumberOfCells()
+morph.Correspondence = "Nearest Vertex"
+morph.UpdatePipeline()
+cells = morph.GetDataInformation().GetNumberOfCells()
+check(cells <= 1.1 * coarse_cells, "nearest vertices at t = 1: %d triangles for the coarse %d" % (cells, coarse_cells))
+
+finish()
