@@ -20,9 +20,11 @@
 #include "vtkSMPTools.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -333,6 +335,27 @@ bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse)
   return true;
 }
 
+int vtkLODInterpolation::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputs)
+{
+  vtkInformation* info = outputs->GetInformationObject(0);
+  if (!this->InterpolationFromTime)
+  {
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+    return 1;
+  }
+  constexpr int steps = 21;
+  double times[steps];
+  for (int i = 0; i < steps; ++i)
+  {
+    times[i] = static_cast<double>(i) / (steps - 1);
+  }
+  const double range[2] = { 0.0, 1.0 };
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times, steps);
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
 int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   vtkPolyData* detailed = vtkPolyData::GetData(inputs[0]);
@@ -350,12 +373,15 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
     return 1;
   }
   this->UpdateProgress(0.5);
+  vtkInformation* request = outputs->GetInformationObject(0);
+  const double t = this->InterpolationFromTime && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? std::min(1.0, std::max(0.0, request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())))
+    : this->Interpolation;
   const Cache& built = *this->Built;
   meshsimp::MorphFrame frame;
-  meshsimp::Morph(
-    built.DetailedTriangles.View, built.Partners, this->Interpolation, this->MergeDistance * built.Diagonal, frame);
+  meshsimp::Morph(built.DetailedTriangles.View, built.Partners, t, this->MergeDistance * built.Diagonal, frame);
   WriteGeometry(detailed, built.DetailedTriangles, frame, output);
-  MorphPointData(detailed->GetPointData(), coarse->GetPointData(), built.Partners, frame, this->Interpolation,
+  MorphPointData(detailed->GetPointData(), coarse->GetPointData(), built.Partners, frame, t,
     output->GetPointData(), built.DetailedTriangles.View.NumberOfPoints);
   vtkNew<vtkDoubleArray> displacement;
   displacement->SetName("Displacement");
@@ -376,5 +402,6 @@ void vtkLODInterpolation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Interpolation: " << this->Interpolation << "\n";
   os << indent << "MergeDistance: " << this->MergeDistance << "\n";
   os << indent << "Correspondence: " << this->Correspondence << "\n";
+  os << indent << "InterpolationFromTime: " << this->InterpolationFromTime << "\n";
   os << indent << "CorrespondenceBuilds: " << this->CorrespondenceBuilds << "\n";
 }

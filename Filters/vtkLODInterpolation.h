@@ -13,7 +13,8 @@
  * triangles with each point at (1 − Interpolation) P_detailed + Interpolation P_partner;
  * adjacent points closer than Interpolation · MergeDistance (a fraction of the detailed
  * surface's diagonal) join and the triangles left without area go. Interpolation 0 gives the
- * detailed surface exactly. Changing Interpolation alone reuses the correspondence.
+ * detailed surface exactly. Changing Interpolation alone reuses the correspondence; with
+ * InterpolationFromTime the time asked for sets the frame (times 0 to 1 are reported).
  *
  * Point data: every numeric point array of the detailed surface, morphed towards the coarse
  * surface's array of the same name and number of components where it has one (colours and
@@ -71,6 +72,17 @@ public:
   vtkGetMacro(Correspondence, int);
   ///@}
 
+  ///@{
+  /**
+   * Off (default): Interpolation sets the frame. On: the time the pipeline asks for does (in
+   * [0, 1]), and the filter reports the times 0, 0.05, ..., 1, so that ParaView's Play button
+   * and Animation View morph the surface.
+   */
+  vtkSetMacro(InterpolationFromTime, bool);
+  vtkGetMacro(InterpolationFromTime, bool);
+  vtkBooleanMacro(InterpolationFromTime, bool);
+  ///@}
+
   /// The coarse surface (input 1).
   void SetCoarseConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetCoarseData(vtkDataObject* data) { this->SetInputData(1, data); }
@@ -83,6 +95,7 @@ protected:
   vtkLODInterpolation();
   ~vtkLODInterpolation() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
@@ -95,6 +108,7 @@ private:
   double Interpolation = 0.0;
   double MergeDistance = 0.001;
   int Correspondence = NEAREST_SURFACE_POINT;
+  bool InterpolationFromTime = false;
   int CorrespondenceBuilds = 0;
   struct Cache;
   std::unique_ptr<Cache> Built; // the correspondence and what it was built from

@@ -2,7 +2,8 @@
 // vtkLODInterpolation: a sphere morphed towards its simplification. t = 0 is the detailed
 // sphere exactly; at t = 1 every point lies on the coarse surface; the distance to the detailed
 // surface never falls as t grows; no triangle turns over; a point array of both inputs morphs;
-// the correspondence is built once for 11 frames; bad inputs give one-line errors. With -V, the
+// the correspondence is built once for 11 frames; the time can set the frame; bad inputs give
+// one-line errors. With -V, the
 // cow at t = 0.5 against its baseline image.
 #include "vtkAppearancePreservingCollapse.h"
 #include "vtkLODInterpolation.h"
@@ -15,7 +16,9 @@
 #include "vtkIntArray.h"
 #include "vtkPointData.h"
 #include "vtkSphereSource.h"
+#include "vtkInformation.h"
 #include "vtkStaticCellLocator.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "TestBadInput.h"
 #include "TestImageHelpers.h"
@@ -170,6 +173,39 @@ void TestMorph()
   CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9);
 }
 
+void TestTimeDrivesTheMorph()
+{
+  // With InterpolationFromTime the filter reports the times 0, 0.05, ..., 1 and the time asked
+  // for sets the frame: time 0.35 gives Interpolation 0.35's points, on one correspondence.
+  vtkSmartPointer<vtkPolyData> detailed, coarse;
+  SphereAndCoarse(detailed, coarse);
+  vtkNew<vtkLODInterpolation> byValue;
+  byValue->SetInputData(0, detailed);
+  byValue->SetCoarseData(coarse);
+  byValue->SetInterpolation(0.35);
+  byValue->Update();
+  vtkNew<vtkLODInterpolation> byTime;
+  byTime->SetInputData(0, detailed);
+  byTime->SetCoarseData(coarse);
+  byTime->InterpolationFromTimeOn();
+  byTime->UpdateInformation();
+  vtkInformation* info = byTime->GetOutputInformation(0);
+  CHECK(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) == 21);
+  byTime->UpdateTimeStep(0.35);
+  byTime->UpdateTimeStep(0.8);
+  byTime->UpdateTimeStep(0.35);
+  vtkPolyData* a = byValue->GetOutput();
+  vtkPolyData* b = byTime->GetOutput();
+  CHECK(a->GetNumberOfPoints() == b->GetNumberOfPoints() && byTime->GetCorrespondenceBuilds() == 1);
+  for (vtkIdType p = 0; p < std::min(a->GetNumberOfPoints(), b->GetNumberOfPoints()); ++p)
+  {
+    double x[3], y[3];
+    a->GetPoint(p, x);
+    b->GetPoint(p, y);
+    CHECK(std::equal(x, x + 3, y));
+  }
+}
+
 /// The morph's errors (its own, then the executive's) for these inputs; the detailed input
 /// untouched.
 std::vector<std::string> MorphErrors(vtkPolyData* detailed, vtkPolyData* coarse)
@@ -228,6 +264,7 @@ int TestLODInterpolation(int argc, char* argv[])
     return meshsimp_test::CompareWithBaseline(morph->GetOutput(), false, argc, argv);
   }
   TestMorph();
+  TestTimeDrivesTheMorph();
   TestBadInput();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -34,4 +34,16 @@ morph.UpdatePipeline()
 cells = morph.GetDataInformation().GetNumberOfCells()
 check(cells <= 1.1 * coarse_cells, "nearest vertices at t = 1: %d triangles for the coarse %d" % (cells, coarse_cells))
 
+# The Play button: with Interpolation From Time the filter has 21 times in [0, 1], and the time
+# 0.5 gives the frame Interpolation 0.5 gives.
+morph.Correspondence = "Nearest Surface Point"
+morph.Interpolation = 0.5
+by_value = servermanager.Fetch(morph).GetPointData().GetArray("Displacement").GetRange()
+morph.InterpolationFromTime = 1
+morph.UpdatePipelineInformation()
+check(len(morph.TimestepValues) == 21 and morph.TimestepValues[-1] == 1.0, "21 times in [0, 1]")
+morph.UpdatePipeline(0.5)
+by_time = servermanager.Fetch(morph).GetPointData().GetArray("Displacement").GetRange()
+check(by_time == by_value, "time 0.5 is Interpolation 0.5")
+
 finish()
