@@ -5,6 +5,8 @@
 //                --target-triangles N | --max-error E [--relative-error]] [--threads T]
 //                [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT
 //   meshsimplify --method METHOD --settings
+//   meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface]
+//                [--merge-distance D] [--json] DETAILED COARSE OUTPUT
 //
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
 // one JSON object; time_ms is the filter's own work (file I/O excluded), the median of N runs
@@ -12,7 +14,11 @@
 // only) builds the sequence once and writes the level of each reduction to OUTPUT with %l
 // replaced by the reduction; the JSON then has build_ms and each level's extract_ms.
 // --settings lists the method's settings for --set with their defaults, ranges and help.
+// --morph runs LoD Interpolation: DETAILED morphed towards COARSE, the frame at T (0.5 by
+// default) to OUTPUT, or N frames (t = 0 to 1) to OUTPUT with %f replaced by the frame's number;
+// the JSON has first_ms (the correspondence and a frame) and frame_ms (the later frames' median).
 #include "MeshFiles.h"
+#include "vtkLODInterpolation.h"
 #include "MeshSimplificationFilters.h"
 
 #include "vtkCallbackCommand.h"
@@ -110,13 +116,17 @@ std::string Usage()
     "  --settings  the method's settings for --set: name=default [range] and a line of help\n"
     "  --repeat N  run the filter N times; time_ms is the median\n"
     "  --levels    progressive: one build, the level of each reduction written to OUTPUT with\n"
-    "              %l replaced by the reduction\n";
+    "              %l replaced by the reduction\n"
+    "       meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface]\n"
+    "         [--merge-distance D] [--json] DETAILED COARSE OUTPUT\n"
+    "  --morph     LoD Interpolation: DETAILED on its way to COARSE at T (default 0.5), or N\n"
+    "              frames from 0 to 1 written to OUTPUT with %f replaced by the frame number\n";
 }
 
 /// The command line.
 struct Arguments
 {
-  std::string Method, Input, Output;
+  std::string Method, Input, Output, Coarse; // with --morph: DETAILED, OUTPUT, COARSE
   double Reduction = 0.9;
   std::optional<double> MaximumError;
   std::optional<long long> TargetTriangles;
@@ -124,6 +134,10 @@ struct Arguments
   int Threads = 0, Repeat = 1;
   std::vector<std::pair<std::string, double>> Settings;
   std::vector<std::pair<std::string, double>> Levels; // --levels: as typed (they name the files), and parsed
+  bool Morph = false;
+  double Interpolation = 0.5, MergeDistance = 0.001;
+  int Frames = 0;
+  std::string Correspondence = "surface";
 };
 
 /// An option's effect on the arguments; false for an unknown option.
@@ -147,6 +161,16 @@ bool ParseOption(const std::string& arg, const std::function<std::string()>& val
     a.Json = true;
   else if (arg == "--settings")
     a.ListSettings = true;
+  else if (arg == "--morph")
+    a.Morph = true;
+  else if (arg == "--t")
+    a.Interpolation = ParseNumber(arg, value());
+  else if (arg == "--frames")
+    a.Frames = static_cast<int>(ParseNumber(arg, value()));
+  else if (arg == "--merge-distance")
+    a.MergeDistance = ParseNumber(arg, value());
+  else if (arg == "--correspondence")
+    a.Correspondence = value();
   else if (arg == "--levels")
   {
     std::string list = value() + ",";
@@ -219,6 +243,11 @@ Arguments ParseArguments(int argc, char* argv[])
       a.Input = arg;
     else if (a.Output.empty())
       a.Output = arg;
+    else if (a.Morph && a.Coarse.empty())
+    {
+      a.Coarse = a.Output; // DETAILED COARSE OUTPUT
+      a.Output = arg;
+    }
     else
       Fail("unexpected argument " + arg);
   }
@@ -227,9 +256,21 @@ Arguments ParseArguments(int argc, char* argv[])
     PrintSettings(a.Method);
     std::exit(0);
   }
+  const bool morphTimed = a.Frames != 0;
   const std::pair<bool, std::string> checks[] = {
+    { a.Morph && (!a.Method.empty() || !a.Levels.empty() || !a.Settings.empty() || reductionGiven ||
+                   a.TargetTriangles || a.MaximumError),
+      "--morph takes no --method, --levels, --set or target" },
+    { a.Morph && a.Coarse.empty(), "--morph needs DETAILED, COARSE and OUTPUT files" },
+    { a.Morph && !(a.Interpolation >= 0.0 && a.Interpolation <= 1.0), "--t must be in [0, 1]" },
+    { a.Morph && (a.Frames < 0 || a.Frames == 1), "--frames must be 2 or more" },
+    { a.Morph && morphTimed && a.Output.find("%f") == std::string::npos, "--frames needs %f in OUTPUT" },
+    { a.Morph && !(a.MergeDistance >= 0.0 && a.MergeDistance <= 1.0), "--merge-distance must be in [0, 1]" },
+    { a.Morph && a.Correspondence != "surface" && a.Correspondence != "vertex",
+      "--correspondence is vertex or surface" },
+    { !a.Morph && (morphTimed || !a.Coarse.empty()), "--frames needs --morph" },
     { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },
-    { !FindMethod(a.Method), "unknown --method (available: " + MethodNames(", ") + ")" },
+    { !a.Morph && !FindMethod(a.Method), "unknown --method (available: " + MethodNames(", ") + ")" },
     { !a.Levels.empty() && a.Method != "progressive", "--levels needs --method progressive" },
     { !a.Levels.empty() && a.Output.find("%l") == std::string::npos, "--levels needs %l in OUTPUT" },
     { !a.Levels.empty() && (reductionGiven || a.TargetTriangles || a.MaximumError || a.Repeat != 1),
@@ -437,12 +478,83 @@ void RunLevels(const Arguments& a, vtkPolyData* mesh, vtkMeshSimplificationFilte
 }
 }
 
+namespace
+{
+/// --morph: DETAILED towards COARSE, one frame or --frames of them, each written; the first
+/// frame's time (the correspondence with it) and the later ones' median.
+void RunMorph(const Arguments& a)
+{
+  std::string fileError;
+  vtkSmartPointer<vtkPolyData> surfaces[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    const std::string& path = i == 0 ? a.Input : a.Coarse;
+    surfaces[i] = meshfiles::ReadMesh(path, fileError);
+    if (!surfaces[i])
+    {
+      Fail(fileError);
+    }
+  }
+  vtkNew<vtkLODInterpolation> morph;
+  morph->SetInputData(0, surfaces[0]);
+  morph->SetCoarseData(surfaces[1]);
+  morph->SetMergeDistance(a.MergeDistance);
+  morph->SetCorrespondence(
+    a.Correspondence == "vertex" ? vtkLODInterpolation::NEAREST_VERTEX : vtkLODInterpolation::NEAREST_SURFACE_POINT);
+  Messages messages;
+  vtkNew<vtkCallbackCommand> onMessage;
+  onMessage->SetClientData(&messages);
+  onMessage->SetCallback(Messages::Receive);
+  morph->AddObserver(vtkCommand::ErrorEvent, onMessage);
+  morph->AddObserver(vtkCommand::WarningEvent, onMessage);
+  const int frames = a.Frames > 0 ? a.Frames : 1;
+  std::vector<double> times;
+  for (int frame = 0; frame < frames; ++frame)
+  {
+    morph->SetInterpolation(a.Frames > 0 ? static_cast<double>(frame) / (frames - 1) : a.Interpolation);
+    const auto start = std::chrono::steady_clock::now();
+    morph->Update();
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (!messages.Error.empty())
+    {
+      Fail(messages.Error);
+    }
+    std::string path = a.Output;
+    if (a.Frames > 0)
+    {
+      path.replace(path.find("%f"), 2, std::to_string(frame));
+    }
+    if (!meshfiles::WriteMesh(morph->GetOutput(), path, fileError))
+    {
+      Fail(fileError);
+    }
+  }
+  morph->RemoveObservers(vtkCommand::ErrorEvent);
+  morph->RemoveObservers(vtkCommand::WarningEvent);
+  if (a.Json)
+  {
+    std::vector<double> later(times.begin() + 1, times.end());
+    std::nth_element(later.begin(), later.begin() + later.size() / 2, later.end());
+    std::printf("{\"method\": \"morph\", \"detailed_triangles\": %lld, \"coarse_triangles\": %lld, \"frames\": %d, "
+                "\"first_ms\": %.3f, \"frame_ms\": %.3f, \"output_triangles\": %lld, \"builds\": %d}\n",
+      CountTriangles(surfaces[0]), CountTriangles(surfaces[1]), frames, times.front(),
+      later.empty() ? times.front() : later[later.size() / 2], static_cast<long long>(morph->GetOutput()->GetNumberOfPolys()),
+      morph->GetCorrespondenceBuilds());
+  }
+}
+}
+
 int main(int argc, char* argv[])
 {
   // Past a file size limit (ulimit -f) a write fails with EFBIG, which is reported, rather
   // than the signal ending the process.
   std::signal(SIGXFSZ, SIG_IGN);
   const Arguments arguments = ParseArguments(argc, argv);
+  if (arguments.Morph)
+  {
+    RunMorph(arguments);
+    return 0;
+  }
   std::string fileError;
   vtkSmartPointer<vtkPolyData> mesh = meshfiles::ReadMesh(arguments.Input, fileError);
   if (!mesh)

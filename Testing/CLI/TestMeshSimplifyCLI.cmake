@@ -44,6 +44,23 @@ if (NOT builds EQUAL 1 OR NOT first EQUAL 2902 OR NOT second EQUAL 580 OR json_e
   message(FATAL_ERROR "--levels: ${out}")
 endif ()
 
+# --morph: the cow towards its simplification, three frames written, one correspondence; at
+# t = 0 the cow's triangles, with the paper's pairing at t = 1 about the coarse surface's.
+run_tool(--method volume --reduction 0.95 "${INPUT}" "${OUTPUT}.coarse.ply")
+run_tool(--morph --frames 3 --correspondence vertex --json "${INPUT}" "${OUTPUT}.coarse.ply" "${OUTPUT}.%f.ply")
+string(JSON builds GET "${out}" builds)
+string(JSON frames GET "${out}" frames)
+string(JSON last GET "${out}" output_triangles)
+if (NOT builds EQUAL 1 OR NOT frames EQUAL 3 OR last GREATER 400 OR NOT EXISTS "${OUTPUT}.0.ply" OR
+    NOT EXISTS "${OUTPUT}.2.ply")
+  message(FATAL_ERROR "--morph --frames: ${out}")
+endif ()
+run_tool(--morph --t 0 --json "${INPUT}" "${OUTPUT}.coarse.ply" "${OUTPUT}.morph.ply")
+string(JSON first GET "${out}" output_triangles)
+if (NOT first EQUAL 5804)
+  message(FATAL_ERROR "--morph --t 0: ${out}")
+endif ()
+
 # The volume method: counts within 1 %, its own error figure.
 run_tool(--method volume --target-triangles 1000 --json "${INPUT}" "${OUTPUT}")
 string(JSON output_triangles GET "${out}" output_triangles)
@@ -133,7 +150,14 @@ foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--method;volume;--levels;0.5;${INPUT};${OUTPUT}.%l.ply"
                       "--method;progressive;--levels;0.5;${INPUT};${OUTPUT}"
                       "--method;progressive;--levels;0.5,nan;${INPUT};${OUTPUT}.%l.ply"
-                      "--method;progressive;--levels;0.5;--reduction;0.3;${INPUT};${OUTPUT}.%l.ply")
+                      "--method;progressive;--levels;0.5;--reduction;0.3;${INPUT};${OUTPUT}.%l.ply"
+                      "--morph;--method;octree;${INPUT};${INPUT};${OUTPUT}"
+                      "--morph;${INPUT};${OUTPUT}"
+                      "--morph;--frames;3;${INPUT};${INPUT};${OUTPUT}"
+                      "--morph;--t;2;${INPUT};${INPUT};${OUTPUT}"
+                      "--morph;--correspondence;nope;${INPUT};${INPUT};${OUTPUT}"
+                      "--morph;${INPUT};/nonexistent/coarse.off;${OUTPUT}"
+                      "--frames;3;--method;octree;${INPUT};${OUTPUT}.%f.ply")
   execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
     message(FATAL_ERROR "expected a clean failure for '${bad}', got ${code}: ${err}")
