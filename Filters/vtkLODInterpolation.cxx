@@ -62,30 +62,20 @@ vtkMTimeType GeometryTime(vtkPolyData* mesh)
   return points && points->GetData() ? std::max(time, points->GetData()->GetMTime()) : time;
 }
 
-/// The points of a view as a vtkPolyData (with the view's triangles when triangles is set), for
-/// VTK's locators.
-vtkSmartPointer<vtkPolyData> AsPolyData(const meshsimp::TriangleMeshView& view, bool triangles)
+/// The surface's triangles as the view lists them (polygons triangulated), on the surface's own
+/// points, for VTK's cell locator: its cell ids are the view's triangle ids.
+vtkSmartPointer<vtkPolyData> Triangles(vtkPolyData* surface, const meshsimp::TriangleMeshView& view)
 {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(view.NumberOfPoints);
-  for (vtkIdType p = 0; p < view.NumberOfPoints; ++p)
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(view.NumberOfTriangles, 3 * view.NumberOfTriangles);
+  for (vtkIdType t = 0; t < view.NumberOfTriangles; ++t)
   {
-    points->SetPoint(p, view.Point(p).data());
+    const vtkIdType ids[3] = { view.Id(3 * t), view.Id(3 * t + 1), view.Id(3 * t + 2) };
+    cells->InsertNextCell(3, ids);
   }
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(points);
-  if (triangles)
-  {
-    vtkNew<vtkCellArray> cells;
-    cells->AllocateExact(view.NumberOfTriangles, 3 * view.NumberOfTriangles);
-    for (vtkIdType t = 0; t < view.NumberOfTriangles; ++t)
-    {
-      const vtkIdType ids[3] = { view.Id(3 * t), view.Id(3 * t + 1), view.Id(3 * t + 2) };
-      cells->InsertNextCell(3, ids);
-    }
-    mesh->SetPolys(cells);
-  }
+  mesh->SetPoints(surface->GetPoints());
+  mesh->SetPolys(cells);
   return mesh;
 }
 
@@ -122,16 +112,12 @@ Eigen::Vector3d Barycentric(const Eigen::Vector3d& x, const Eigen::Vector3d& a, 
 
 /// Per detailed point, the coarse triangle whose closest point it goes to and that point's
 /// barycentric weights (VTK's static cell locator).
-meshsimp::MorphPartners SurfacePartners(const meshsimp::TriangleMeshView& detailed, const meshsimp::TriangleMeshView& coarse)
+meshsimp::MorphPartners SurfacePartners(
+  const meshsimp::TriangleMeshView& detailed, vtkPolyData* coarseSurface, const meshsimp::TriangleMeshView& coarse)
 {
-  vtkSmartPointer<vtkPolyData> surface = AsPolyData(coarse, true);
   vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(surface);
+  locator->SetDataSet(Triangles(coarseSurface, coarse));
   locator->BuildLocator();
-  // The nearest coarse point bounds the search: the closest surface point is no farther.
-  vtkNew<vtkStaticPointLocator> points;
-  points->SetDataSet(surface);
-  points->BuildLocator();
   std::vector<std::int32_t> triangle(static_cast<std::size_t>(detailed.NumberOfPoints), -1);
   std::vector<double> barycentric(3 * triangle.size(), 0.0);
   vtkSMPThreadLocalObject<vtkGenericCell> cells;
@@ -142,14 +128,7 @@ meshsimp::MorphPartners SurfacePartners(const meshsimp::TriangleMeshView& detail
       double closest[3], distance2 = 0.0;
       vtkIdType id = -1;
       int sub = 0;
-      Eigen::Vector3d x = detailed.Point(p);
-      const vtkIdType vertex = points->FindClosestPoint(x.data());
-      const double radius = vertex < 0 ? 0.0 : (Eigen::Vector3d(surface->GetPoint(vertex)) - x).norm();
-      if (vertex < 0 ||
-        !locator->FindClosestPointWithinRadius(x.data(), radius * (1.0 + 1e-9) + 1e-300, closest, cell, id, sub, distance2))
-      {
-        locator->FindClosestPoint(x.data(), closest, cell, id, sub, distance2);
-      }
+      locator->FindClosestPoint(detailed.Point(p).data(), closest, cell, id, sub, distance2);
       if (id < 0)
       {
         continue;
@@ -251,7 +230,7 @@ void WriteGeometry(vtkPolyData* detailed, const vtkSimplification::TriangleInput
   const meshsimp::MorphFrame& frame, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
+  points->SetDataType(VTK_DOUBLE);
   points->SetNumberOfPoints(frame.NumberOfPoints());
   for (vtkIdType p = 0; p < frame.NumberOfPoints(); ++p)
   {
@@ -323,8 +302,8 @@ bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse)
     return false;
   }
   built.Partners = this->Correspondence == NEAREST_VERTEX
-    ? meshsimp::PairNearestVertices(d, c, NearestPoints(c, AsPolyData(d, false)), NearestPoints(d, AsPolyData(c, false)))
-    : SurfacePartners(d, c);
+    ? meshsimp::PairNearestVertices(d, c, NearestPoints(c, detailed), NearestPoints(d, coarse))
+    : SurfacePartners(d, coarse, c);
   built.Diagonal = detailed->GetLength();
   built.Detailed = detailed;
   built.Coarse = coarse;
