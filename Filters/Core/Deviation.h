@@ -72,10 +72,6 @@ std::vector<double> TwoSidedDeviation(
 std::vector<double> TwoSidedDeviation(
   const TriangleMeshView& input, const SimplifiedMesh& output, const ExecutionContext& context);
 
-/// The distance from x to the triangle (a, b, c), degenerate ones included.
-double PointTriangleDistance(
-  const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
-
 } // namespace meshsimp
 
 #endif

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "SharedBorders.h"
 
-#include "Deviation.h"
+#include "SurfaceSearch.h"
 
 #include <algorithm>
 #include <limits>

@@ -2,6 +2,7 @@
 // Unit tests of the two-sided deviation (Deviation.h): distances, both directions, the exact
 // settling of walks that stop short, dropped parts, and thread independence.
 #include "Deviation.h"
+#include "SurfaceSearch.h"
 
 #include "TestHelpers.h"
 #include "TestMeshes.h"

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "SurfaceSearch.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+namespace meshsimp
+{
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+
+Vec3 ClosestPointOnSegment(const Vec3& x, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::min(1.0, std::max(0.0, (x - a).dot(ab) / length2)) : 0.0;
+  return a + t * ab;
+}
+
+/// The closest point of the three edges of (a, b, c), the first of equals.
+Vec3 ClosestPointOnEdges(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 candidates[3] = { ClosestPointOnSegment(x, a, b), ClosestPointOnSegment(x, b, c),
+    ClosestPointOnSegment(x, c, a) };
+  const Vec3* best = candidates;
+  for (const Vec3& candidate : candidates)
+  {
+    best = (x - candidate).norm() < (x - *best).norm() ? &candidate : best;
+  }
+  return *best;
+}
+
+/// Sorts (key, id) pairs by key, ids of equal keys in their order: a radix sort by 16 bits at
+/// a time, as many passes as the largest key needs.
+void SortByKey(std::vector<std::pair<std::uint64_t, std::int32_t>>& pairs, std::uint64_t largest)
+{
+  std::vector<std::pair<std::uint64_t, std::int32_t>> sorted(pairs.size());
+  for (int shift = 0; shift < 64 && (largest >> shift) > 0; shift += 16)
+  {
+    std::vector<std::size_t> start(1 << 16 | 1, 0);
+    for (const auto& pair : pairs)
+    {
+      ++start[((pair.first >> shift) & 0xffff) + 1];
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (const auto& pair : pairs)
+    {
+      sorted[start[(pair.first >> shift) & 0xffff]++] = pair;
+    }
+    pairs.swap(sorted);
+  }
+}
+
+} // namespace
+
+/**
+ * Exact nearest-triangle queries: the triangles in the non-empty cells of a uniform grid of
+ * about their size (sorted by cell key), searched in growing shells of cells around the point
+ * until no unexplored cell can hold a nearer one. Triangles that span many cells are kept apart
+ * and measured at every query.
+ */
+class TriangleGrid
+{
+public:
+  explicit TriangleGrid(const Surface& surface);
+  Nearest Find(const Surface& surface, const Vec3& x) const;
+
+private:
+  static constexpr std::int64_t AxisCells = std::int64_t(1) << 20;
+  static constexpr std::int64_t LargeSpan = 4096; // cells: above, a triangle is kept apart
+  std::uint64_t Key(std::int64_t i, std::int64_t j, std::int64_t k) const
+  {
+    return static_cast<std::uint64_t>((i * this->Dims[1] + j) * this->Dims[2] + k);
+  }
+  std::int64_t CellOf(double x, int axis) const
+  {
+    const double cell = std::floor((x - this->Origin[axis]) / this->Size);
+    return static_cast<std::int64_t>(std::min<double>(std::max(cell, 0.0), static_cast<double>(this->Dims[axis] - 1)));
+  }
+  void Visit(const Surface& surface, const Vec3& x, std::uint64_t key, Nearest& best) const;
+
+  Vec3 Origin = Vec3::Zero();
+  double Size = 1.0;
+  std::int64_t Dims[3] = { 1, 1, 1 };
+  std::vector<std::uint64_t> Keys;   // sorted, one per non-empty cell
+  std::vector<std::int64_t> Offsets; // per key, into Ids
+  std::vector<std::int32_t> Ids;
+  std::vector<std::int32_t> Large;
+};
+
+TriangleGrid::TriangleGrid(const Surface& surface)
+{
+  // Cells about twice a triangle's typical size, at most 2^20 along an axis.
+  const std::int64_t m = surface.NumberOfTriangles();
+  Vec3 lower = Vec3::Constant(Infinity), upper = Vec3::Constant(-Infinity);
+  double area = 0.0;
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lower = lower.cwiseMin(surface.Corner(t, k));
+      upper = upper.cwiseMax(surface.Corner(t, k));
+    }
+    area += 0.5 * (surface.Corner(t, 1) - surface.Corner(t, 0)).cross(surface.Corner(t, 2) - surface.Corner(t, 0)).norm();
+  }
+  if (m == 0)
+  {
+    return;
+  }
+  const double extent = (upper - lower).maxCoeff();
+  this->Size = std::max({ 2.0 * std::sqrt(area / static_cast<double>(m)), extent / static_cast<double>(AxisCells - 1),
+    std::numeric_limits<double>::min() });
+  this->Origin = lower;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Dims[a] = std::min<std::int64_t>(AxisCells, static_cast<std::int64_t>((upper[a] - lower[a]) / this->Size) + 1);
+  }
+  // Each triangle in the cells its box meets, as (key, triangle) pairs sorted by key.
+  std::vector<std::pair<std::uint64_t, std::int32_t>> pairs;
+  pairs.reserve(2 * static_cast<std::size_t>(m));
+  for (std::int32_t t = 0; t < m; ++t)
+  {
+    std::int64_t low[3], high[3], span = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double l = std::min({ surface.Corner(t, 0)[a], surface.Corner(t, 1)[a], surface.Corner(t, 2)[a] });
+      const double h = std::max({ surface.Corner(t, 0)[a], surface.Corner(t, 1)[a], surface.Corner(t, 2)[a] });
+      low[a] = this->CellOf(l, a);
+      high[a] = this->CellOf(h, a);
+      span *= high[a] - low[a] + 1;
+    }
+    if (span > LargeSpan)
+    {
+      this->Large.push_back(t);
+      continue;
+    }
+    for (std::int64_t i = low[0]; i <= high[0]; ++i)
+      for (std::int64_t j = low[1]; j <= high[1]; ++j)
+        for (std::int64_t k = low[2]; k <= high[2]; ++k)
+          pairs.emplace_back(this->Key(i, j, k), t);
+  }
+  SortByKey(pairs, this->Key(this->Dims[0] - 1, this->Dims[1] - 1, this->Dims[2] - 1));
+  this->Ids.resize(pairs.size());
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+  {
+    if (i == 0 || pairs[i].first != pairs[i - 1].first)
+    {
+      this->Keys.push_back(pairs[i].first);
+      this->Offsets.push_back(static_cast<std::int64_t>(i));
+    }
+    this->Ids[i] = pairs[i].second;
+  }
+  this->Offsets.push_back(static_cast<std::int64_t>(pairs.size()));
+}
+
+void TriangleGrid::Visit(const Surface& surface, const Vec3& x, std::uint64_t key, Nearest& best) const
+{
+  const auto found = std::lower_bound(this->Keys.begin(), this->Keys.end(), key);
+  if (found != this->Keys.end() && *found == key)
+  {
+    const std::size_t cell = static_cast<std::size_t>(found - this->Keys.begin());
+    surface.Among(x, this->Ids.data() + this->Offsets[cell], this->Ids.data() + this->Offsets[cell + 1], best);
+  }
+}
+
+Nearest TriangleGrid::Find(const Surface& surface, const Vec3& x) const
+{
+  Nearest best;
+  surface.Among(x, this->Large.data(), this->Large.data() + this->Large.size(), best);
+  if (this->Keys.empty())
+  {
+    return best;
+  }
+  const std::int64_t c[3] = { this->CellOf(x[0], 0), this->CellOf(x[1], 1), this->CellOf(x[2], 2) };
+  for (std::int64_t r = 0;; ++r)
+  {
+    // The shell of cells r away (Chebyshev) from x's cell.
+    for (std::int64_t i = std::max<std::int64_t>(0, c[0] - r); i <= std::min(this->Dims[0] - 1, c[0] + r); ++i)
+      for (std::int64_t j = std::max<std::int64_t>(0, c[1] - r); j <= std::min(this->Dims[1] - 1, c[1] + r); ++j)
+      {
+        if (std::abs(i - c[0]) == r || std::abs(j - c[1]) == r)
+        {
+          for (std::int64_t k = std::max<std::int64_t>(0, c[2] - r); k <= std::min(this->Dims[2] - 1, c[2] + r); ++k)
+          {
+            this->Visit(surface, x, this->Key(i, j, k), best);
+          }
+          continue;
+        }
+        for (const std::int64_t k : { c[2] - r, c[2] + r })
+        {
+          if (k >= 0 && k < this->Dims[2])
+          {
+            this->Visit(surface, x, this->Key(i, j, k), best);
+          }
+        }
+      }
+    // Every unexplored cell lies beyond the shell along some axis: no nearer than that slab.
+    double beyond = Infinity;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (c[a] - r > 0)
+      {
+        beyond = std::min(beyond, x[a] - (this->Origin[a] + static_cast<double>(c[a] - r) * this->Size));
+      }
+      if (c[a] + r < this->Dims[a] - 1)
+      {
+        beyond = std::min(beyond, this->Origin[a] + static_cast<double>(c[a] + r + 1) * this->Size - x[a]);
+      }
+    }
+    if (best.Distance <= std::max(0.0, beyond) || std::isinf(beyond))
+    {
+      return best;
+    }
+  }
+}
+
+
+Vec3 ClosestPointOnTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  // By the Voronoi regions of the corners, edges and face (as in Ericson, "Real-Time Collision
+  // Detection", 5.1.5); a triangle without area is its three edges.
+  const Vec3 ab = b - a, ac = c - a;
+  if (ab.cross(ac).squaredNorm() <= 0.0)
+  {
+    return ClosestPointOnEdges(x, a, b, c);
+  }
+  const Vec3 ap = x - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    return a;
+  }
+  const Vec3 bp = x - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    return b;
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    return a + ab * (d1 / (d1 - d3));
+  }
+  const Vec3 cp = x - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    return c;
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    return a + ac * (d2 / (d2 - d6));
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+  {
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  }
+  if (!(va + vb + vc > 0.0))
+  {
+    return ClosestPointOnEdges(x, a, b, c);
+  }
+  const double scale = 1.0 / (va + vb + vc);
+  return a + ab * (vb * scale) + ac * (vc * scale);
+}
+
+double PointTriangleDistance(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return (x - ClosestPointOnTriangle(x, a, b, c)).norm();
+}
+
+Surface::Surface(std::vector<Vec3> points, std::vector<std::int32_t> corners)
+  : Points(std::move(points))
+  , Corners(std::move(corners))
+  , Around(static_cast<std::int64_t>(this->Points.size()), this->Corners)
+{
+}
+
+Surface::~Surface() = default;
+
+Nearest Surface::Exact(const Vec3& x) const
+{
+  std::call_once(this->GridMade, [this] { this->Grid = std::make_unique<TriangleGrid>(*this); });
+  return this->Grid->Find(*this, x);
+}
+
+} // namespace meshsimp
