@@ -2,31 +2,36 @@
 #include "vtkLODInterpolation.h"
 
 #include "LODInterpolation.h"
+#include "vtkSimplificationAttributes.h"
 #include "vtkSimplificationInput.h"
+#include "vtkSimplificationThreads.h"
 
+#include "vtkArrayDispatch.h"
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkGenericCell.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIdList.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPThreadLocalObject.h"
-#include "vtkSMPTools.h"
-#include "vtkStaticCellLocator.h"
 #include "vtkStaticPointLocator.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTypeInt32Array.h"
 
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkLODInterpolation);
@@ -39,9 +44,13 @@ struct vtkLODInterpolation::Cache
   vtkPolyData* Coarse = nullptr;
   vtkMTimeType DetailedTime = 0, CoarseTime = 0; // their geometry's (GeometryTime)
   int Mode = -1;
+  std::pair<vtkAbstractArray*, vtkMTimeType> Record{ nullptr, 0 }; // what Exact read, and when it changed
   vtkSimplification::TriangleInput DetailedTriangles, CoarseTriangles;
   meshsimp::MorphPartners Partners;
   double Diagonal = 0.0;
+  meshsimp::MergeSchedule Merges; // for MergeDistance Scheduled
+  double Scheduled = -1.0;
+  meshsimp::MorphFrame Frame; // the last frame's, its memory reused
 };
 
 namespace
@@ -62,136 +71,146 @@ vtkMTimeType GeometryTime(vtkPolyData* mesh)
   return points && points->GetData() ? std::max(time, points->GetData()->GetMTime()) : time;
 }
 
-/// The surface's triangles as the view lists them (polygons triangulated), on the surface's own
-/// points, for VTK's cell locator: its cell ids are the view's triangle ids.
-vtkSmartPointer<vtkPolyData> Triangles(vtkPolyData* surface, const meshsimp::TriangleMeshView& view)
+/// The array Exact reads the coarse surface's record from (its field data InputToOutputPointIds,
+/// else its point data vtkOriginalPointIds; null: none), and when it last changed.
+std::pair<vtkAbstractArray*, vtkMTimeType> Record(vtkPolyData* coarse)
 {
-  vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(view.NumberOfTriangles, 3 * view.NumberOfTriangles);
-  for (vtkIdType t = 0; t < view.NumberOfTriangles; ++t)
-  {
-    const vtkIdType ids[3] = { view.Id(3 * t), view.Id(3 * t + 1), view.Id(3 * t + 2) };
-    cells->InsertNextCell(3, ids);
-  }
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(surface->GetPoints());
-  mesh->SetPolys(cells);
-  return mesh;
+  vtkAbstractArray* map = coarse->GetFieldData()->GetAbstractArray(vtkSimplification::InputToOutputPointIdsName);
+  vtkAbstractArray* record = map ? map : coarse->GetPointData()->GetAbstractArray("vtkOriginalPointIds");
+  return { record, record ? record->GetMTime() : 0 };
 }
 
 /// Per point of from, the id of the nearest point of to (VTK's static point locator).
-std::vector<std::int32_t> NearestPoints(const meshsimp::TriangleMeshView& from, vtkPolyData* to)
+std::vector<std::int32_t> NearestPoints(
+  const meshsimp::TriangleMeshView& from, vtkPolyData* to, const meshsimp::ExecutionContext& context)
 {
   vtkNew<vtkStaticPointLocator> locator;
   locator->SetDataSet(to);
   locator->BuildLocator();
   std::vector<std::int32_t> nearest(static_cast<std::size_t>(from.NumberOfPoints), -1);
-  vtkSMPTools::For(0, from.NumberOfPoints, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType p = begin; p < end; ++p)
+  context.For(from.NumberOfPoints, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t p = begin; p < end; ++p)
     {
       nearest[p] = static_cast<std::int32_t>(locator->FindClosestPoint(from.Point(p).data()));
     }
-  });
+  }, 1000 * from.NumberOfPoints);
   return nearest;
 }
 
-/// The barycentric weights of x (on or near the triangle a, b, c) in it.
-Eigen::Vector3d Barycentric(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-  const Eigen::Vector3d& c)
+/// Per detailed point, the coarse point it became (-1: not known), from what the simplification
+/// that made the coarse surface recorded: its field data InputToOutputPointIds (this module's
+/// filters with GenerateOriginalIds: every input point's), else its point data
+/// vtkOriginalPointIds (any filter that keeps them: each coarse point's own input point). False,
+/// with the problem, where the coarse surface has neither or they cannot be of this detailed one.
+bool Ancestors(vtkPolyData* coarse, vtkIdType detailedPoints, std::vector<std::int32_t>& ancestor, std::string& problem)
 {
-  const Eigen::Vector3d u = b - a, v = c - a, w = x - a;
-  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
-  const double det = uu * vv - uv * uv;
-  if (!(det > 0.0))
+  const vtkIdType coarsePoints = coarse->GetNumberOfPoints();
+  ancestor.assign(static_cast<std::size_t>(detailedPoints), -1);
+  vtkAbstractArray* record = Record(coarse).first;
+  auto* values = vtkArrayDownCast<vtkDataArray>(record);
+  if (!values || values->GetNumberOfComponents() != 1)
   {
-    return Eigen::Vector3d::Constant(1.0 / 3.0); // a degenerate triangle: its centre
+    problem = "Exact needs the coarse surface to carry vtkOriginalPointIds (turn on Generate Original Ids in the filter "
+              "that made it from the detailed surface)";
+    return false;
   }
-  const double beta = (vv * wu - uv * wv) / det, gamma = (uu * wv - uv * wu) / det;
-  return { 1.0 - beta - gamma, beta, gamma };
-}
-
-/// Per detailed point, the coarse triangle whose closest point it goes to and that point's
-/// barycentric weights (VTK's static cell locator).
-meshsimp::MorphPartners SurfacePartners(
-  const meshsimp::TriangleMeshView& detailed, vtkPolyData* coarseSurface, const meshsimp::TriangleMeshView& coarse)
-{
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(Triangles(coarseSurface, coarse));
-  locator->BuildLocator();
-  std::vector<std::int32_t> triangle(static_cast<std::size_t>(detailed.NumberOfPoints), -1);
-  std::vector<double> barycentric(3 * triangle.size(), 0.0);
-  vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0, detailed.NumberOfPoints, [&](vtkIdType begin, vtkIdType end) {
-    vtkGenericCell* cell = cells.Local();
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      double closest[3], distance2 = 0.0;
-      vtkIdType id = -1;
-      int sub = 0;
-      locator->FindClosestPoint(detailed.Point(p).data(), closest, cell, id, sub, distance2);
-      if (id < 0)
-      {
-        continue;
-      }
-      triangle[p] = static_cast<std::int32_t>(id);
-      const Eigen::Vector3d weights = Barycentric(Eigen::Vector3d(closest), coarse.Point(coarse.Id(3 * id)),
-        coarse.Point(coarse.Id(3 * id + 1)), coarse.Point(coarse.Id(3 * id + 2)));
-      std::copy(weights.data(), weights.data() + 3, barycentric.begin() + 3 * p);
-    }
-  });
-  return meshsimp::PairSurfacePoints(detailed, coarse, triangle, barycentric);
-}
-
-/// The detailed surface's point array morphed for the frame: each output point the mean over
-/// the detailed points it stands for of (1 − t) their value + t their partners' (from the
-/// coarse array of the same name, where there is one and they have partners); integer arrays
-/// keep the first source's detailed value.
-vtkSmartPointer<vtkDataArray> MorphArray(vtkDataArray* detailed, vtkDataArray* coarse, const meshsimp::MorphPartners& partners,
-  const meshsimp::MorphFrame& frame, double t)
-{
-  const int components = detailed->GetNumberOfComponents();
-  const int type = detailed->GetDataType();
-  const bool morphs = coarse && coarse->GetNumberOfComponents() == components && (type == VTK_FLOAT || type == VTK_DOUBLE);
-  auto out = vtkSmartPointer<vtkDataArray>::Take(detailed->NewInstance());
-  out->SetName(detailed->GetName());
-  out->SetNumberOfComponents(components);
-  out->SetNumberOfTuples(frame.NumberOfPoints());
-  std::vector<double> value(components), own(components), towards(components), partner(components);
-  for (vtkIdType g = 0; g < frame.NumberOfPoints(); ++g)
+  if (record == coarse->GetFieldData()->GetAbstractArray(vtkSimplification::InputToOutputPointIdsName))
   {
-    const std::int32_t first = frame.PointOffsets[g], last = morphs ? frame.PointOffsets[g + 1] : first + 1;
-    std::fill(value.begin(), value.end(), 0.0);
-    for (std::int32_t s = first; s < last; ++s)
+    if (values->GetNumberOfTuples() != detailedPoints)
     {
-      const std::size_t d = static_cast<std::size_t>(frame.PointSources[s]);
-      detailed->GetTuple(static_cast<vtkIdType>(d), own.data());
-      towards = own;
-      if (morphs && partners.Coarse[3 * d] >= 0)
+      problem = std::string("the coarse surface's ") + vtkSimplification::InputToOutputPointIdsName + " lists " +
+        std::to_string(values->GetNumberOfTuples()) + " points, the detailed surface has " +
+        std::to_string(detailedPoints) + " (the coarse surface was made from another)";
+      return false;
+    }
+    for (vtkIdType d = 0; d < detailedPoints; ++d)
+    {
+      const double c = values->GetComponent(d, 0);
+      ancestor[d] = c >= 0 && c < coarsePoints ? static_cast<std::int32_t>(c) : -1;
+    }
+    return true;
+  }
+  for (vtkIdType c = 0; c < coarsePoints; ++c)
+  {
+    const double d = values->GetComponent(c, 0);
+    if (d >= 0 && d < detailedPoints)
+    {
+      ancestor[static_cast<std::size_t>(d)] = static_cast<std::int32_t>(c);
+    }
+  }
+  return true;
+}
+
+/// A floating-point point array of the detailed surface for the frame at t: each point's value
+/// blended as its place, (1 − t) its own + t its partner's (the partner's corners' values in the
+/// coarse array, with their weights); the members of a merged set take their mean; unit vectors
+/// (normals) stay unit.
+struct MorphValues
+{
+  template <typename DetailedArray, typename CoarseArray>
+  void operator()(DetailedArray* detailed, CoarseArray* coarse, vtkDataArray* output, const meshsimp::MorphPartners& partners,
+    const meshsimp::MorphFrame& frame, double t, bool unit, const meshsimp::ExecutionContext& context) const
+  {
+    const auto own = vtk::DataArrayTupleRange(detailed);
+    const auto other = vtk::DataArrayTupleRange(coarse);
+    auto out = vtk::DataArrayTupleRange(vtkAOSDataArrayTemplate<double>::FastDownCast(output));
+    const int components = detailed->GetNumberOfComponents();
+    context.For(own.size(), [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t d = begin; d < end; ++d)
       {
-        std::fill(towards.begin(), towards.end(), 0.0);
-        for (int j = 0; j < 3 && partners.Coarse[3 * d + j] >= 0; ++j)
+        const std::int32_t* corner = partners.Coarse.data() + 3 * d;
+        const double* weight = partners.Weights.data() + 3 * d;
+        double length2 = 0.0;
+        for (int k = 0; k < components; ++k)
         {
-          coarse->GetTuple(partners.Coarse[3 * d + j], partner.data());
+          double towards = corner[0] < 0 ? static_cast<double>(own[d][k]) : 0.0;
+          for (int j = 0; j < 3 && corner[j] >= 0; ++j)
+          {
+            towards += weight[j] * static_cast<double>(other[corner[j]][k]);
+          }
+          out[d][k] = (1.0 - t) * static_cast<double>(own[d][k]) + t * towards;
+          length2 += out[d][k] * out[d][k];
+        }
+        const double scale = unit && length2 > 0.0 ? 1.0 / std::sqrt(length2) : 1.0;
+        for (int k = 0; scale != 1.0 && k < components; ++k)
+        {
+          out[d][k] *= scale;
+        }
+      }
+    }, 10 * components * own.size());
+    context.For(frame.NumberOfGroups(), [&](std::int64_t begin, std::int64_t end) {
+      std::vector<double> mean(components);
+      for (std::int64_t g = begin; g < end; ++g)
+      {
+        const std::int32_t first = frame.GroupOffsets[g], last = frame.GroupOffsets[g + 1];
+        std::fill(mean.begin(), mean.end(), 0.0);
+        for (std::int32_t i = first; i < last; ++i)
+        {
           for (int k = 0; k < components; ++k)
           {
-            towards[k] += partners.Weights[3 * d + j] * partner[k];
+            mean[k] += out[frame.GroupMembers[i]][k] / (last - first);
+          }
+        }
+        const double length = unit ? std::sqrt(std::inner_product(mean.begin(), mean.end(), mean.begin(), 0.0)) : 1.0;
+        for (std::int32_t i = first; i < last; ++i)
+        {
+          for (int k = 0; k < components; ++k)
+          {
+            out[frame.GroupMembers[i]][k] = length > 0.0 ? mean[k] / length : mean[k];
           }
         }
       }
-      for (int k = 0; k < components; ++k)
-      {
-        value[k] += ((1.0 - t) * own[k] + t * towards[k]) / (last - first);
-      }
-    }
-    out->SetTuple(g, value.data());
+    }, 10 * components * frame.GroupOffsets.back());
   }
-  return out;
-}
+};
 
-/// Every numeric point array of the detailed surface, morphed; the active attributes kept
-/// active, the normals renormalised.
+/// Every point array of the detailed surface for the frame: floating-point arrays that the
+/// coarse surface also has (same name and components) morphed as doubles, the others as they
+/// are (a merged set's triangles use its lowest id, whose value that is); the active attributes
+/// kept active, the normals unit.
 void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp::MorphPartners& partners,
-  const meshsimp::MorphFrame& frame, double t, vtkPointData* output, vtkIdType detailedPoints)
+  const meshsimp::MorphFrame& frame, double t, vtkIdType detailedPoints, const meshsimp::ExecutionContext& context,
+  vtkPointData* output)
 {
   for (int i = 0; i < detailed->GetNumberOfArrays(); ++i)
   {
@@ -201,63 +220,92 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
       continue;
     }
     vtkDataArray* match = coarse->GetArray(array->GetName());
-    vtkSmartPointer<vtkDataArray> morphed = MorphArray(array, match, partners, frame, t);
+    const bool morphs = t > 0.0 && match && match->GetNumberOfComponents() == array->GetNumberOfComponents() &&
+      (array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE);
+    vtkSmartPointer<vtkDataArray> morphed = array;
     const int attribute = detailed->IsArrayAnAttribute(i);
+    if (morphs)
+    {
+      morphed = vtkSmartPointer<vtkDoubleArray>::New();
+      morphed->SetName(array->GetName());
+      morphed->SetNumberOfComponents(array->GetNumberOfComponents());
+      morphed->SetNumberOfTuples(detailedPoints);
+      using Dispatcher = vtkArrayDispatch::Dispatch2ByValueType<vtkArrayDispatch::Reals, vtkArrayDispatch::AllTypes>;
+      MorphValues worker;
+      const bool unit = attribute == vtkDataSetAttributes::NORMALS;
+      if (!Dispatcher::Execute(array, match, worker, morphed.Get(), partners, frame, t, unit, context))
+      {
+        worker(array, match, morphed.Get(), partners, frame, t, unit, context);
+      }
+    }
     output->AddArray(morphed);
     if (attribute >= 0)
     {
       output->SetActiveAttribute(morphed->GetName(), attribute);
     }
   }
-  vtkDataArray* normals = output->GetNormals();
-  for (vtkIdType p = 0; normals && normals->GetNumberOfComponents() == 3 && p < normals->GetNumberOfTuples(); ++p)
-  {
-    Eigen::Vector3d n;
-    normals->GetTuple(p, n.data());
-    const double length = n.norm();
-    if (length > 0.0 && std::isfinite(length))
-    {
-      n /= length;
-      normals->SetTuple(p, n.data());
-    }
-  }
 }
 
-/// The frame's points, and its triangles with the detailed surface's cell data. Where no point
-/// joined and the detailed surface is triangles alone, viewed in place, those are the detailed
-/// surface's: shared, not copied.
-void WriteGeometry(vtkPolyData* detailed, const vtkSimplification::TriangleInput& triangles,
+/// The frame's triangles with the detailed surface's cell data. Where every detailed triangle
+/// is kept (no point joined) and the detailed surface is triangles alone, viewed in place, those
+/// are the detailed surface's: shared, not copied.
+void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::MorphFrame& frame, vtkPolyData* output)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataType(VTK_DOUBLE);
-  points->SetNumberOfPoints(frame.NumberOfPoints());
-  for (vtkIdType p = 0; p < frame.NumberOfPoints(); ++p)
-  {
-    points->SetPoint(p, frame.Points.data() + 3 * p);
-  }
-  output->SetPoints(points);
   const meshsimp::TriangleMeshView& view = triangles.View;
-  if (frame.NumberOfPoints() == view.NumberOfPoints && frame.NumberOfTriangles() == view.NumberOfTriangles &&
-    triangles.Triangles.empty() && triangles.FirstCell == 0 && detailed->GetNumberOfCells() == view.NumberOfTriangles)
+  const vtkIdType count = frame.NumberOfTriangles();
+  if (count == view.NumberOfTriangles && triangles.Triangles.empty() && triangles.FirstCell == 0 &&
+    detailed->GetNumberOfCells() == view.NumberOfTriangles)
   {
     output->SetPolys(detailed->GetPolys());
     output->GetCellData()->ShallowCopy(detailed->GetCellData());
     return;
   }
+  vtkNew<vtkTypeInt32Array> offsets, connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  for (vtkIdType t = 0; t <= count; ++t)
+  {
+    offsets->SetValue(t, static_cast<std::int32_t>(3 * t));
+  }
+  connectivity->SetNumberOfValues(3 * count);
+  std::copy(frame.Triangles.begin(), frame.Triangles.end(), connectivity->GetPointer(0));
   vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(frame.NumberOfTriangles(), 3 * frame.NumberOfTriangles());
-  for (vtkIdType t = 0; t < frame.NumberOfTriangles(); ++t)
-  {
-    const vtkIdType ids[3] = { frame.Triangles[3 * t], frame.Triangles[3 * t + 1], frame.Triangles[3 * t + 2] };
-    cells->InsertNextCell(3, ids);
-  }
+  cells->SetData(offsets, connectivity);
   output->SetPolys(cells);
-  output->GetCellData()->CopyAllocate(detailed->GetCellData(), frame.NumberOfTriangles());
-  for (vtkIdType t = 0; t < frame.NumberOfTriangles(); ++t)
+  vtkCellData* cellData = detailed->GetCellData();
+  output->GetCellData()->CopyAllocate(cellData, count);
+  if (cellData->GetNumberOfArrays() > 0)
   {
-    output->GetCellData()->CopyData(detailed->GetCellData(), triangles.SourceCell(frame.TriangleSource[t]), t);
+    vtkNew<vtkIdList> sources;
+    sources->SetNumberOfIds(count);
+    for (vtkIdType t = 0; t < count; ++t)
+    {
+      sources->SetId(t, triangles.SourceCell(frame.TriangleSource[t]));
+    }
+    output->GetCellData()->CopyData(cellData, sources.GetPointer(), vtkIdType{ 0 });
   }
+}
+/// The frame at t: its points, triangles with cell data, point data and Displacement.
+void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplification::TriangleInput& triangles,
+  const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t,
+  const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame, vtkPolyData* output)
+{
+  const meshsimp::TriangleMeshView& view = triangles.View;
+  vtkNew<vtkDoubleArray> places;
+  places->SetNumberOfComponents(3);
+  places->SetNumberOfTuples(view.NumberOfPoints);
+  meshsimp::Morph(view, partners, merges, t, places->GetPointer(0), frame, context);
+  vtkNew<vtkPoints> points;
+  points->SetData(places);
+  output->SetPoints(points);
+  WriteTriangles(detailed, triangles, frame, output);
+  MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, view.NumberOfPoints, context,
+    output->GetPointData());
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("Displacement");
+  displacement->SetNumberOfValues(view.NumberOfPoints);
+  std::copy(frame.Displacement.begin(), frame.Displacement.end(), displacement->GetPointer(0));
+  output->GetPointData()->AddArray(displacement);
 }
 } // namespace
 
@@ -275,11 +323,57 @@ int vtkLODInterpolation::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse)
+bool vtkLODInterpolation::MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context)
+{
+  Cache& built = *this->Built;
+  const meshsimp::TriangleMeshView& d = built.DetailedTriangles.View;
+  const meshsimp::TriangleMeshView& c = built.CoarseTriangles.View;
+  switch (this->Correspondence)
+  {
+    case NEAREST_VERTEX:
+      built.Partners =
+        meshsimp::PairNearestVertices(d, c, NearestPoints(c, detailed, context), NearestPoints(d, coarse, context));
+      return true;
+    case NEAREST_SURFACE_POINT:
+      built.Partners = meshsimp::PairSurfacePoints(d, c, {}, context);
+      return true;
+    default:
+      break;
+  }
+  std::vector<std::int32_t> ancestor, unknown;
+  std::string problem;
+  if (!Ancestors(coarse, d.NumberOfPoints, ancestor, problem))
+  {
+    vtkErrorMacro(<< "Cannot morph: " << problem << ".");
+    return false;
+  }
+  built.Partners = meshsimp::PairAncestors(d, c, ancestor);
+  for (std::int32_t p = 0; p < static_cast<std::int32_t>(ancestor.size()); ++p)
+  {
+    if (ancestor[p] < 0)
+    {
+      unknown.push_back(p);
+    }
+  }
+  if (!unknown.empty()) // the points no record places go to the nearest point of the coarse surface
+  {
+    const meshsimp::MorphPartners nearest = meshsimp::PairSurfacePoints(d, c, unknown, context);
+    for (const std::int32_t p : unknown)
+    {
+      std::copy_n(nearest.Targets.begin() + 3 * p, 3, built.Partners.Targets.begin() + 3 * p);
+      std::copy_n(nearest.Coarse.begin() + 3 * p, 3, built.Partners.Coarse.begin() + 3 * p);
+      std::copy_n(nearest.Weights.begin() + 3 * p, 3, built.Partners.Weights.begin() + 3 * p);
+    }
+  }
+  return true;
+}
+
+bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context)
 {
   Cache& built = *this->Built;
   if (built.Detailed == detailed && built.Coarse == coarse && built.DetailedTime == GeometryTime(detailed) &&
-    built.CoarseTime == GeometryTime(coarse) && built.Mode == this->Correspondence)
+    built.CoarseTime == GeometryTime(coarse) && built.Mode == this->Correspondence &&
+    (this->Correspondence != EXACT || built.Record == Record(coarse)))
   {
     return true;
   }
@@ -301,15 +395,18 @@ bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse)
     built = Cache();
     return false;
   }
-  built.Partners = this->Correspondence == NEAREST_VERTEX
-    ? meshsimp::PairNearestVertices(d, c, NearestPoints(c, detailed), NearestPoints(d, coarse))
-    : SurfacePartners(d, coarse, c);
+  if (!this->MakePartners(detailed, coarse, context))
+  {
+    built = Cache();
+    return false;
+  }
   built.Diagonal = detailed->GetLength();
   built.Detailed = detailed;
   built.Coarse = coarse;
   built.DetailedTime = GeometryTime(detailed);
   built.CoarseTime = GeometryTime(coarse);
   built.Mode = this->Correspondence;
+  built.Record = Record(coarse);
   ++this->CorrespondenceBuilds;
   return true;
 }
@@ -347,26 +444,24 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
                   "(input 1).");
     return 1;
   }
-  if (!this->Pair(detailed, coarse))
+  const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
+  if (!this->Pair(detailed, coarse, context))
   {
     return 1;
+  }
+  Cache& built = *this->Built;
+  const double mergeDistance = this->MergeDistance * built.Diagonal;
+  if (built.Scheduled != mergeDistance)
+  {
+    built.Merges = meshsimp::ScheduleMerges(built.DetailedTriangles.View, built.Partners, mergeDistance, context);
+    built.Scheduled = mergeDistance;
   }
   this->UpdateProgress(0.5);
   vtkInformation* request = outputs->GetInformationObject(0);
   const double t = this->InterpolationFromTime && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     ? std::min(1.0, std::max(0.0, request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())))
     : this->Interpolation;
-  const Cache& built = *this->Built;
-  meshsimp::MorphFrame frame;
-  meshsimp::Morph(built.DetailedTriangles.View, built.Partners, t, this->MergeDistance * built.Diagonal, frame);
-  WriteGeometry(detailed, built.DetailedTriangles, frame, output);
-  MorphPointData(detailed->GetPointData(), coarse->GetPointData(), built.Partners, frame, t,
-    output->GetPointData(), built.DetailedTriangles.View.NumberOfPoints);
-  vtkNew<vtkDoubleArray> displacement;
-  displacement->SetName("Displacement");
-  displacement->SetNumberOfValues(frame.NumberOfPoints());
-  std::copy(frame.Displacement.begin(), frame.Displacement.end(), displacement->GetPointer(0));
-  output->GetPointData()->AddArray(displacement);
+  WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame, output);
   output->GetFieldData()->PassData(detailed->GetFieldData());
   vtkNew<vtkIntArray> builds;
   builds->SetName("CorrespondenceBuilds");

@@ -9,19 +9,30 @@
  * the coarse surface once (Correspondence): NEAREST_VERTEX, the paper's, pairs every coarse
  * point with its nearest detailed point and every other detailed point with its nearest coarse
  * point; NEAREST_SURFACE_POINT (default) sends every detailed point to the closest point of the
- * coarse surface, so that thin parts do not fold onto a far vertex. The output is the detailed
- * triangles with each point at (1 − Interpolation) P_detailed + Interpolation P_partner;
- * adjacent points closer than Interpolation · MergeDistance (a fraction of the detailed
- * surface's diagonal) join and the triangles left without area go. Interpolation 0 gives the
- * detailed surface exactly. Changing Interpolation alone reuses the correspondence; with
+ * coarse surface, so that thin parts do not fold onto a far vertex; EXACT, a geomorph (Hoppe,
+ * "Progressive meshes"), sends every detailed point to the coarse point it became, where the
+ * coarse surface was simplified from this detailed one and says so: the field data
+ * InputToOutputPointIds that this module's filters write with GenerateOriginalIds (every
+ * point's), or else the point data vtkOriginalPointIds of any filter (each coarse point's
+ * own input point; the points no record places go to the nearest surface point).
+ *
+ * The output is the detailed surface's points, in their order, each at
+ * (1 − Interpolation) P_detailed + Interpolation P_partner, on its triangles; adjacent points
+ * closer than Interpolation · MergeDistance (a fraction of the detailed surface's diagonal) join
+ * at the place of the member nearest to their mean, with the mean of their point data; the
+ * triangles use the lowest id of each joined set (the others are left
+ * unused, at the same place) and the triangles left without area go. Point ids thus stay the
+ * detailed surface's in every frame. Interpolation 0 gives the detailed surface exactly.
+ * Changing Interpolation alone reuses the correspondence and which points join when (computed
+ * once per MergeDistance): a frame is one pass over the points and triangles, threaded. With
  * InterpolationFromTime the time asked for sets the frame (times 0 to 1 are reported).
  *
- * Point data: every numeric point array of the detailed surface, morphed towards the coarse
- * surface's array of the same name and number of components where it has one (colours and
- * scalars morph), kept otherwise; the active normals renormalised. Cell data follow the
- * detailed triangles. The point array "Displacement" holds how far each point stands from its
- * place on the detailed surface (input units); the field data "CorrespondenceBuilds" how many
- * times the correspondence has been built.
+ * Point data: every floating-point point array of the detailed surface that the coarse surface
+ * has too (same name and number of components) morphs towards it, as doubles (colours given
+ * as floats and scalars morph); the others pass unchanged; the active normals stay unit. Cell
+ * data follow the detailed triangles. The point array "Displacement" holds how far each point
+ * stands from its place on the detailed surface (input units); the field data
+ * "CorrespondenceBuilds" how many times the correspondence has been built.
  *
  * @sa vtkMeshSimplificationFilter vtkProgressiveMesh
  */
@@ -33,6 +44,11 @@
 
 #include <memory>
 
+namespace meshsimp
+{
+struct ExecutionContext;
+}
+
 class MESHSIMPLIFICATIONFILTERS_EXPORT vtkLODInterpolation : public vtkPolyDataAlgorithm
 {
 public:
@@ -43,7 +59,8 @@ public:
   enum CorrespondenceModes
   {
     NEAREST_VERTEX = 0,
-    NEAREST_SURFACE_POINT = 1
+    NEAREST_SURFACE_POINT = 1,
+    EXACT = 2
   };
 
   ///@{
@@ -65,10 +82,11 @@ public:
 
   ///@{
   /**
-   * How each detailed point finds its partner: NEAREST_VERTEX (the paper) or
-   * NEAREST_SURFACE_POINT (default).
+   * How each detailed point finds its partner: NEAREST_VERTEX (the paper),
+   * NEAREST_SURFACE_POINT (default), or EXACT where the coarse surface was simplified from the
+   * detailed one and carries the record (see the class comment).
    */
-  vtkSetClampMacro(Correspondence, int, NEAREST_VERTEX, NEAREST_SURFACE_POINT);
+  vtkSetClampMacro(Correspondence, int, NEAREST_VERTEX, EXACT);
   vtkGetMacro(Correspondence, int);
   ///@}
 
@@ -103,7 +121,9 @@ private:
   void operator=(const vtkLODInterpolation&) = delete;
   /// The correspondence for these inputs, built again only where their geometry or the
   /// Correspondence changed; false, with an error, where it cannot be.
-  bool Pair(vtkPolyData* detailed, vtkPolyData* coarse);
+  bool Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context);
+  /// The partners of the Correspondence for the triangles Pair extracted.
+  bool MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context);
 
   double Interpolation = 0.0;
   double MergeDistance = 0.001;

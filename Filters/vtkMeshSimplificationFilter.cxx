@@ -526,7 +526,8 @@ void vtkMeshSimplificationFilter::ForEachSetting(const meshsimp::SettingVisit& v
   flag("GenerateOriginalIds", this->GenerateOriginalIds, &vtkMeshSimplificationFilter::SetGenerateOriginalIds,
     &vtkMeshSimplificationFilter::GetGenerateOriginalIds,
     "Add the point array vtkOriginalPointIds (each output point's representative input point) and the cell "
-    "array vtkOriginalCellIds (each output triangle's input cell), as Extract Surface names them.");
+    "array vtkOriginalCellIds (each output triangle's input cell), as Extract Surface names them, and the field "
+    "data InputToOutputPointIds (each input point's output point), which LoD Interpolation's Exact reads.");
   number("OutputPointsPrecision", this->OutputPointsPrecision, vtkAlgorithm::SINGLE_PRECISION,
     vtkAlgorithm::DEFAULT_PRECISION, &vtkMeshSimplificationFilter::SetOutputPointsPrecision,
     &vtkMeshSimplificationFilter::GetOutputPointsPrecision, "Precision of the output points.");

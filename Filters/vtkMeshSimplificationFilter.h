@@ -201,8 +201,10 @@ public:
    * meaning of vtkGeometryFilter's: the correspondence a later filter reads to map values
    * between the input and the output. Ids are those of the filter's input (of each block of a
    * composite input, of each piece under MPI; for an unstructured grid, the grid's own, not
-   * those of the surface made from it); arrays of those names in the input are replaced.
-   * Default off.
+   * those of the surface made from it); arrays of those names in the input are replaced. For
+   * a vtkPolyData input, also the field data "InputToOutputPointIds": per input point, the
+   * output point that stands for it (-1: none), what vtkLODInterpolation's EXACT
+   * correspondence reads to morph the input into the output. Default off.
    */
   vtkSetMacro(GenerateOriginalIds, bool);
   vtkGetMacro(GenerateOriginalIds, bool);

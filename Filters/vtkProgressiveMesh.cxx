@@ -465,6 +465,12 @@ void vtkProgressiveMesh::WritePiece(const PieceCall& piece, const meshsimp::Simp
   auto* corners = vtkCellArray::ArrayType64::SafeDownCast(view);
   meshsimp::LevelCorners(sequence, points, corners->GetPointer(0));
   vtkSimplification::SetPrefixOutput(piece.Input, piece.Triangles, whole, points, corners, mesh, output);
+  if (this->GenerateOriginalIds && !piece.Input->GetPointData()->GetAbstractArray(vtkSimplification::SurfacePointIdsName))
+  {
+    meshsimp::SimplifiedMesh level; // the removed points each level point stands for
+    meshsimp::ListLevelSources(sequence, points, level);
+    vtkSimplification::AddInputToOutputIds(level, piece.Triangles.View.NumberOfPoints, output);
+  }
   for (const char* name : { ParentName, ErrorName })
   {
     output->GetPointData()->RemoveArray(name);

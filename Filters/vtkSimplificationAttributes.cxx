@@ -303,6 +303,7 @@ void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const mesh
     output->GetPointData()->AddArray(MakeNamedArray(mesh.PointArrays[i]));
   }
   output->GetFieldData()->PassData(input->GetFieldData());
+  output->GetFieldData()->RemoveArray(InputToOutputPointIdsName); // the input's own, of another mesh
   for (const auto& [name, value] : mesh.FieldValues)
   {
     AddFieldValue(output, name.c_str(), value);
@@ -440,8 +441,13 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
   {
     AddOriginalIds(triangles, mesh, output);
   }
+  const bool surface = output->GetPointData()->GetAbstractArray(SurfacePointIdsName) != nullptr;
   ResolveSurfaceIds(originalIds, output);
   FinishOutput(input, triangles, mesh, true, output);
+  if (originalIds && !surface) // a made surface's points are not the input's
+  {
+    AddInputToOutputIds(mesh, triangles.View.NumberOfPoints, output);
+  }
 }
 
 vtkSmartPointer<vtkDataArray> PrefixView(vtkDataArray* array, vtkIdType tuples)
@@ -479,6 +485,25 @@ void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPoly
   PrefixArrays(whole->GetPointData(), points, output->GetPointData());
   // The whole's point arrays include the core's (its first points' values are the level's).
   FinishOutput(input, triangles, mesh, false, output);
+}
+
+void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, vtkIdType inputPoints, vtkPolyData* output)
+{
+  vtkNew<vtkIdTypeArray> map;
+  map->SetName(InputToOutputPointIdsName);
+  map->SetNumberOfValues(inputPoints);
+  map->FillValue(-1);
+  for (std::size_t p = 0; p + 1 < mesh.SourceOffsets.size(); ++p) // the sources' points, listed alone or not
+  {
+    for (std::int32_t i = mesh.SourceOffsets[p]; i < mesh.SourceOffsets[p + 1]; ++i)
+    {
+      if (mesh.SourcePoints[i] >= 0 && mesh.SourcePoints[i] < inputPoints)
+      {
+        map->SetValue(mesh.SourcePoints[i], static_cast<vtkIdType>(p));
+      }
+    }
+  }
+  output->GetFieldData()->AddArray(map);
 }
 
 void AddFieldValue(vtkPolyData* output, const char* name, double value)

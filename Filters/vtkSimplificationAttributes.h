@@ -36,7 +36,8 @@ namespace vtkSimplification
 /// the input's points), triangles, cell data, point data by the rule above, the core's point
 /// arrays and field values, the input's field data, and AchievedReduction; with originalIds,
 /// vtkOriginalPointIds (each point's representative) and vtkOriginalCellIds (each triangle's
-/// input cell), replacing input arrays of those names.
+/// input cell), replacing input arrays of those names, and the field data
+/// InputToOutputPointIds (for a vtkPolyData input).
 void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh,
   int outputPointsPrecision, bool originalIds, vtkPolyData* output);
 
@@ -70,6 +71,14 @@ void MapPointData(vtkPointData* inPD, const meshsimp::SimplifiedMesh& mesh, vtkP
 /// where no array tells them apart (a colour or texture seam, or normals split at a crease,
 /// stay open).
 bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b);
+
+/// The field data array of the output point each input point became (-1: none), which
+/// LoD Interpolation's Exact correspondence reads.
+constexpr const char* InputToOutputPointIdsName = "InputToOutputPointIds";
+
+/// Adds InputToOutputPointIds to the output's field data: per input point (inputPoints of them),
+/// the output point whose sources list it (-1: none).
+void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, vtkIdType inputPoints, vtkPolyData* output);
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);

@@ -5,7 +5,7 @@
 //                --target-triangles N | --max-error E [--relative-error]] [--threads T]
 //                [--set Name=Value ...] [--repeat N] [--levels R1,R2,...] [--json] INPUT OUTPUT
 //   meshsimplify --method METHOD --settings
-//   meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface]
+//   meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface|exact]
 //                [--merge-distance D] [--json] DETAILED COARSE OUTPUT
 //
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
@@ -117,7 +117,7 @@ std::string Usage()
     "  --repeat N  run the filter N times; time_ms is the median\n"
     "  --levels    progressive: one build, the level of each reduction written to OUTPUT with\n"
     "              %l replaced by the reduction\n"
-    "       meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface]\n"
+    "       meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface|exact]\n"
     "         [--merge-distance D] [--json] DETAILED COARSE OUTPUT\n"
     "  --morph     LoD Interpolation: DETAILED on its way to COARSE at T (default 0.5), or N\n"
     "              frames from 0 to 1 written to OUTPUT with %f replaced by the frame number\n";
@@ -266,8 +266,8 @@ Arguments ParseArguments(int argc, char* argv[])
     { a.Morph && (a.Frames < 0 || a.Frames == 1), "--frames must be 2 or more" },
     { a.Morph && morphTimed && a.Output.find("%f") == std::string::npos, "--frames needs %f in OUTPUT" },
     { a.Morph && !(a.MergeDistance >= 0.0 && a.MergeDistance <= 1.0), "--merge-distance must be in [0, 1]" },
-    { a.Morph && a.Correspondence != "surface" && a.Correspondence != "vertex",
-      "--correspondence is vertex or surface" },
+    { a.Morph && a.Correspondence != "surface" && a.Correspondence != "vertex" && a.Correspondence != "exact",
+      "--correspondence is vertex, surface or exact" },
     { !a.Morph && (morphTimed || !a.Coarse.empty()), "--frames needs --morph" },
     { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },
     { !a.Morph && !FindMethod(a.Method), "unknown --method (available: " + MethodNames(", ") + ")" },
@@ -500,7 +500,9 @@ void RunMorph(const Arguments& a)
   morph->SetCoarseData(surfaces[1]);
   morph->SetMergeDistance(a.MergeDistance);
   morph->SetCorrespondence(
-    a.Correspondence == "vertex" ? vtkLODInterpolation::NEAREST_VERTEX : vtkLODInterpolation::NEAREST_SURFACE_POINT);
+    a.Correspondence == "vertex"  ? vtkLODInterpolation::NEAREST_VERTEX
+      : a.Correspondence == "exact" ? vtkLODInterpolation::EXACT
+                                    : vtkLODInterpolation::NEAREST_SURFACE_POINT);
   Messages messages;
   vtkNew<vtkCallbackCommand> onMessage;
   onMessage->SetClientData(&messages);

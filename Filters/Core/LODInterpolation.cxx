@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LODInterpolation.h"
+#include "SurfaceSearch.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <tuple>
+#include <utility>
 
 namespace meshsimp
 {
@@ -68,84 +72,265 @@ bool DetailedTriangle(const TriangleMeshView& detailed, std::int64_t t, std::int
   return true;
 }
 
-/// Per detailed point, the representative of its merged set: adjacent points closer than
-/// threshold at their frame places are joined.
-std::vector<std::int32_t> MergedSets(const TriangleMeshView& detailed, const std::vector<double>& place, double threshold)
+/// The parameters t where two adjacent points at D = P_a − P_b apart in the detailed mesh and
+/// E = Q_a − Q_b at t = 1 are closer than t · epsilon: f(t) = |D + t G|² − t² epsilon² < 0 with
+/// G = E − D, a quadratic A t² + 2 b t + C that is not negative at t = 0 (C = |D|²), so negative
+/// on one interval of t > 0, returned as (from, to) (from >= to: none; to infinite: unbounded).
+/// Its discriminant b² − A C is epsilon² |D|² − |D × G|² (Lagrange's identity), which keeps its
+/// digits where the two terms nearly cancel (a point pair that meets at t = 1 exactly), and the
+/// roots come from the cancellation-free pair q / A, C / q.
+std::pair<double, double> MergeWindow(const Vec3& D, const Vec3& E, double epsilon)
 {
-  std::vector<std::int32_t> parent(static_cast<std::size_t>(detailed.NumberOfPoints));
-  std::iota(parent.begin(), parent.end(), 0);
-  const double threshold2 = threshold * threshold;
-  std::int32_t corner[3];
-  for (std::int64_t t = 0; threshold > 0.0 && t < detailed.NumberOfTriangles; ++t)
+  constexpr double unbounded = std::numeric_limits<double>::infinity();
+  const std::pair<double, double> none(unbounded, unbounded);
+  const Vec3 G = E - D;
+  const double A = G.squaredNorm() - epsilon * epsilon, b = D.dot(G), C = D.squaredNorm();
+  const double discriminant = epsilon * epsilon * C - D.cross(G).squaredNorm();
+  if (discriminant < 0.0)
   {
-    if (!DetailedTriangle(detailed, t, corner))
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::int32_t a = corner[k], b = corner[(k + 1) % 3];
-      const Vec3 pa(place.data() + 3 * static_cast<std::int64_t>(a));
-      const Vec3 pb(place.data() + 3 * static_cast<std::int64_t>(b));
-      if ((pa - pb).squaredNorm() < threshold2)
-      {
-        Join(parent, a, b);
-      }
-    }
+    return none;
   }
-  for (std::int32_t a = 0; a < static_cast<std::int32_t>(parent.size()); ++a)
+  const double q = -(b + std::copysign(std::sqrt(discriminant), b));
+  if (q == 0.0) // f(t) = A t²
   {
-    parent[a] = Find(parent, a);
+    return A < 0.0 ? std::make_pair(0.0, unbounded) : none;
   }
-  return parent;
+  if (A > 0.0) // negative between the roots
+  {
+    const double first = q / A, second = C / q;
+    return { std::min(first, second), std::max(first, second) };
+  }
+  if (A < 0.0) // negative beyond the larger root (the other is not positive)
+  {
+    return { std::max(q / A, C / q), unbounded };
+  }
+  return b < 0.0 ? std::make_pair(C / q, unbounded) : none; // linear: 2 b t + C
 }
 
-/// The output points: one per merged set in the order of their lowest ids, at the mean of their
-/// members' places, with the members as sources; returns each detailed point's output id.
-std::vector<std::int32_t> WritePoints(const TriangleMeshView& detailed, const std::vector<double>& place,
-  const std::vector<std::int32_t>& root, MorphFrame& frame)
+/// A scheduled edge while the schedule is sorted.
+struct ScheduledEdge
 {
-  const std::int32_t n = static_cast<std::int32_t>(root.size());
-  std::vector<std::int32_t> output(root.size(), -1);
-  std::vector<std::int32_t> members(root.size(), 0);
-  std::int32_t count = 0;
+  double From, To;
+  std::int32_t A, B;
+  bool operator<(const ScheduledEdge& other) const
+  {
+    return std::tie(this->From, this->A, this->B) < std::tie(other.From, other.A, other.B);
+  }
+};
+
+/// Step 3: each point at (1 − t) P + t Q, and how far that is from P.
+void PlacePoints(const TriangleMeshView& detailed, const MorphPartners& partners, double t, double* points,
+  std::vector<double>& displacement, const ExecutionContext& context)
+{
+  const std::int64_t n = detailed.NumberOfPoints;
+  const bool moves = partners.NumberOfPoints() == n && t > 0.0;
+  displacement.resize(static_cast<std::size_t>(n));
+  context.For(n, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t d = begin; d < end; ++d)
+    {
+      const Vec3 p = detailed.Point(d);
+      const Vec3 x = moves ? Vec3((1.0 - t) * p + t * Vec3(partners.Targets.data() + 3 * d)) : p;
+      std::copy(x.data(), x.data() + 3, points + 3 * d);
+      displacement[d] = (x - p).norm();
+    }
+  }, 4 * n);
+}
+
+/// Step 4's sets: the scheduled edges merging at t joined (each point's root the lowest id of its
+/// set), and the sets of two points or more gathered, members ascending.
+void JoinScheduled(const MergeSchedule& merges, double t, std::int64_t n, const ExecutionContext& context,
+  MorphFrame& frame)
+{
+  std::vector<std::int32_t>& root = frame.Root;
+  root.resize(static_cast<std::size_t>(n));
+  context.For(n, [&](std::int64_t begin, std::int64_t end) {
+    std::iota(root.begin() + begin, root.begin() + end, static_cast<std::int32_t>(begin));
+  }, n);
+  std::vector<std::uint8_t> touched(static_cast<std::size_t>(n), 0);
+  const std::int64_t edges = merges.Consistent() ? merges.SlotOffsets[MergeSchedule::Slot(t) + 1] : 0;
+  for (std::int64_t e = 0; e < edges; ++e)
+  {
+    const std::int32_t a = merges.Ends[2 * e], b = merges.Ends[2 * e + 1];
+    if (merges.From[e] < t && t < merges.To[e] && InRange(a, n) && InRange(b, n))
+    {
+      Join(root, a, b);
+      touched[a] = touched[b] = 1;
+    }
+  }
+  // In ascending order a root (the lowest id of its set) comes before its members: one pass
+  // finishes every path, numbers the sets and counts their members.
+  std::vector<std::int32_t> group(static_cast<std::size_t>(n), -1);
+  frame.GroupOffsets.assign(1, 0);
   for (std::int32_t a = 0; a < n; ++a)
   {
-    if (root[a] == a)
+    if (touched[a])
     {
-      output[a] = count++;
+      root[a] = root[root[a]];
+      if (root[a] == a)
+      {
+        group[a] = static_cast<std::int32_t>(frame.GroupOffsets.size()) - 1;
+        frame.GroupOffsets.push_back(0);
+      }
+      ++frame.GroupOffsets[group[root[a]] + 1];
     }
-    ++members[output[root[a]]];
   }
-  frame.PointOffsets.assign(static_cast<std::size_t>(count) + 1, 0);
-  for (std::int32_t g = 0; g < count; ++g)
-  {
-    frame.PointOffsets[g + 1] = frame.PointOffsets[g] + members[g];
-  }
-  frame.PointSources.resize(root.size());
-  frame.Points.assign(3 * static_cast<std::size_t>(count), 0.0);
-  std::vector<std::int32_t> filled(frame.PointOffsets.begin(), frame.PointOffsets.end() - 1);
+  std::partial_sum(frame.GroupOffsets.begin(), frame.GroupOffsets.end(), frame.GroupOffsets.begin());
+  frame.GroupMembers.resize(static_cast<std::size_t>(frame.GroupOffsets.back()));
+  std::vector<std::int32_t> next(frame.GroupOffsets.begin(), frame.GroupOffsets.end() - 1);
   for (std::int32_t a = 0; a < n; ++a)
   {
-    const std::int32_t g = output[root[a]];
-    output[a] = g;
-    frame.PointSources[filled[g]++] = a;
-    for (int k = 0; k < 3; ++k)
+    if (touched[a])
     {
-      frame.Points[3 * static_cast<std::size_t>(g) + k] += place[3 * static_cast<std::size_t>(a) + k];
+      frame.GroupMembers[next[group[root[a]]]++] = a;
     }
   }
-  frame.Displacement.resize(static_cast<std::size_t>(count));
-  for (std::int32_t g = 0; g < count; ++g)
+}
+
+/// Every merged set at the place of its member nearest to the members' mean (the lowest id of
+/// equals): a place on some member's path, so that at t = 1 the set stands on the coarse
+/// surface, where a mean of places on a curved surface would not.
+void PlaceGroups(const TriangleMeshView& detailed, double* points, const ExecutionContext& context, MorphFrame& frame)
+{
+  context.For(frame.NumberOfGroups(), [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t g = begin; g < end; ++g)
+    {
+      const std::int32_t first = frame.GroupOffsets[g], last = frame.GroupOffsets[g + 1];
+      const auto place = [&](std::int32_t i) { return Vec3(points + 3 * static_cast<std::int64_t>(frame.GroupMembers[i])); };
+      Vec3 mean = Vec3::Zero();
+      for (std::int32_t i = first; i < last; ++i)
+      {
+        mean += place(i);
+      }
+      mean /= last - first;
+      std::int32_t central = first;
+      for (std::int32_t i = first + 1; i < last; ++i)
+      {
+        central = (place(i) - mean).squaredNorm() < (place(central) - mean).squaredNorm() ? i : central;
+      }
+      const Vec3 at = place(central);
+      for (std::int32_t i = first; i < last; ++i)
+      {
+        const std::int32_t d = frame.GroupMembers[i];
+        std::copy(at.data(), at.data() + 3, points + 3 * static_cast<std::int64_t>(d));
+        frame.Displacement[d] = (at - detailed.Point(d)).norm();
+      }
+    }
+  }, 30 * frame.GroupOffsets.back());
+}
+
+/// The detailed triangles on the roots, those with three distinct corners, in their order: each
+/// block of triangles kept in place, then the blocks moved together.
+void KeepTriangles(const TriangleMeshView& detailed, const ExecutionContext& context, MorphFrame& frame)
+{
+  const std::int64_t triangles = detailed.NumberOfTriangles;
+  const std::int64_t blocks = std::min<std::int64_t>(triangles, 256);
+  const auto first = [&](std::int64_t block) { return triangles * block / blocks; };
+  frame.Triangles.resize(3 * static_cast<std::size_t>(triangles));
+  frame.TriangleSource.resize(static_cast<std::size_t>(triangles));
+  std::vector<std::int64_t> kept(static_cast<std::size_t>(blocks), 0);
+  context.For(blocks, [&](std::int64_t begin, std::int64_t end) {
+    std::int32_t corner[3];
+    for (std::int64_t block = begin; block < end; ++block)
+    {
+      std::int64_t out = first(block);
+      for (std::int64_t s = first(block); s < first(block + 1); ++s)
+      {
+        if (DetailedTriangle(detailed, s, corner))
+        {
+          const std::int32_t a = frame.Root[corner[0]], b = frame.Root[corner[1]], c = frame.Root[corner[2]];
+          if (a != b && b != c && c != a)
+          {
+            frame.Triangles[3 * out] = a;
+            frame.Triangles[3 * out + 1] = b;
+            frame.Triangles[3 * out + 2] = c;
+            frame.TriangleSource[out++] = static_cast<std::int32_t>(s);
+          }
+        }
+      }
+      kept[block] = out - first(block);
+    }
+  }, 6 * triangles);
+  std::int64_t next = 0;
+  for (std::int64_t block = 0; block < blocks; ++block)
   {
-    for (int k = 0; members[g] > 1 && k < 3; ++k)
+    const std::int64_t from = first(block);
+    if (next != from)
     {
-      frame.Points[3 * static_cast<std::size_t>(g) + k] /= members[g];
+      std::copy_n(frame.Triangles.begin() + 3 * from, 3 * kept[block], frame.Triangles.begin() + 3 * next);
+      std::copy_n(frame.TriangleSource.begin() + from, kept[block], frame.TriangleSource.begin() + next);
     }
-    const Vec3 p(frame.Points.data() + 3 * static_cast<std::int64_t>(g));
-    frame.Displacement[g] = (p - detailed.Point(frame.PointSources[frame.PointOffsets[g]])).norm();
+    next += kept[block];
   }
-  return output;
+  frame.Triangles.resize(3 * static_cast<std::size_t>(next));
+  frame.TriangleSource.resize(static_cast<std::size_t>(next));
+}
+
+/// The edges that can change a frame's sets: of the edges that stay merged up to t = 1 once they
+/// merge, in order, only those that join two sets the earlier ones left apart (at any t where it
+/// merges, the earlier edges that connect its ends merge too); every edge that merges for a
+/// while only.
+std::vector<ScheduledEdge> SpanningEdges(const std::vector<ScheduledEdge>& edges, std::int64_t n)
+{
+  std::vector<std::int32_t> parent(static_cast<std::size_t>(n));
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<ScheduledEdge> spanning;
+  for (const ScheduledEdge& edge : edges)
+  {
+    const std::int32_t a = Find(parent, edge.A), b = Find(parent, edge.B);
+    const bool stays = edge.To > 1.0;
+    if (!stays || a != b)
+    {
+      spanning.push_back(edge);
+    }
+    if (stays)
+    {
+      Join(parent, a, b);
+    }
+  }
+  return spanning;
+}
+/// The coarse mesh's triangles with distinct corners in range, for the nearest-triangle search;
+/// triangle: the coarse id of each.
+Surface SearchedSurface(const TriangleMeshView& coarse, std::vector<std::int32_t>& triangle)
+{
+  std::vector<Vec3> points(static_cast<std::size_t>(coarse.NumberOfPoints));
+  for (std::int64_t p = 0; p < coarse.NumberOfPoints; ++p)
+  {
+    points[p] = coarse.Point(p);
+  }
+  std::vector<std::int32_t> corners;
+  for (std::int64_t t = 0; t < coarse.NumberOfTriangles; ++t)
+  {
+    const std::int64_t ids[3] = { coarse.Id(3 * t), coarse.Id(3 * t + 1), coarse.Id(3 * t + 2) };
+    bool usable = ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0];
+    for (int k = 0; k < 3 && usable; ++k)
+    {
+      usable = InRange(ids[k], coarse.NumberOfPoints) && points[ids[k]].allFinite();
+    }
+    if (usable)
+    {
+      corners.insert(corners.end(), { static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
+                                      static_cast<std::int32_t>(ids[2]) });
+      triangle.push_back(static_cast<std::int32_t>(t));
+    }
+  }
+  return Surface(std::move(points), std::move(corners));
+}
+
+/// The barycentric weights of x (on the triangle a, b, c) in it, clamped to the triangle; a
+/// triangle without area: its centre.
+Vec3 Barycentric(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 u = b - a, v = c - a, w = x - a;
+  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
+  const double det = uu * vv - uv * uv;
+  if (!(det > 0.0))
+  {
+    return Vec3::Constant(1.0 / 3.0);
+  }
+  const double beta = (vv * wu - uv * wv) / det, gamma = (uu * wv - uv * wu) / det;
+  const Vec3 weights = Vec3(1.0 - beta - gamma, beta, gamma).cwiseMax(0.0);
+  return weights / weights.sum();
 }
 } // namespace
 
@@ -189,75 +374,124 @@ MorphPartners PairNearestVertices(const TriangleMeshView& detailed, const Triang
 }
 
 MorphPartners PairSurfacePoints(const TriangleMeshView& detailed, const TriangleMeshView& coarse,
-  const std::vector<std::int32_t>& triangle, const std::vector<double>& barycentric)
+  const std::vector<std::int32_t>& listed, const ExecutionContext& context)
 {
   MorphPartners partners = OwnPartners(detailed);
-  for (std::int64_t d = 0; d < detailed.NumberOfPoints && d < static_cast<std::int64_t>(triangle.size()) &&
-       3 * d + 2 < static_cast<std::int64_t>(barycentric.size());
-       ++d)
+  std::vector<std::int32_t> triangle; // per triangle of the search, its coarse triangle
+  const Surface surface = SearchedSurface(coarse, triangle);
+  if (surface.NumberOfTriangles() == 0)
   {
-    const std::int64_t t = triangle[d];
-    if (!InRange(t, coarse.NumberOfTriangles))
+    return partners;
+  }
+  const std::int64_t count = listed.empty() ? detailed.NumberOfPoints : static_cast<std::int64_t>(listed.size());
+  context.For(count, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i)
     {
-      continue;
+      const std::int64_t d = listed.empty() ? i : listed[i];
+      const Vec3 x = detailed.Point(d);
+      const Nearest near = InRange(d, detailed.NumberOfPoints) && x.allFinite() ? surface.Exact(x) : Nearest();
+      if (near.Triangle < 0)
+      {
+        continue;
+      }
+      const std::int64_t t = triangle[near.Triangle];
+      const Vec3 corner[3] = { surface.Corner(near.Triangle, 0), surface.Corner(near.Triangle, 1), surface.Corner(near.Triangle, 2) };
+      const Vec3 target = ClosestPointOnTriangle(x, corner[0], corner[1], corner[2]);
+      const Vec3 weights = Barycentric(target, corner[0], corner[1], corner[2]);
+      std::copy(target.data(), target.data() + 3, partners.Targets.begin() + 3 * d);
+      std::copy(weights.data(), weights.data() + 3, partners.Weights.begin() + 3 * d);
+      for (int k = 0; k < 3; ++k)
+      {
+        partners.Coarse[3 * d + k] = static_cast<std::int32_t>(coarse.Id(3 * t + k));
+      }
     }
-    std::int64_t ids[3];
-    double weights[3], sum = 0.0;
-    for (int k = 0; k < 3; ++k)
+  }, 3000 * count);
+  return partners;
+}
+
+MorphPartners PairAncestors(
+  const TriangleMeshView& detailed, const TriangleMeshView& coarse, const std::vector<std::int32_t>& ancestor)
+{
+  MorphPartners partners = OwnPartners(detailed);
+  for (std::int64_t d = 0; d < detailed.NumberOfPoints && d < static_cast<std::int64_t>(ancestor.size()); ++d)
+  {
+    const std::int32_t c = ancestor[d];
+    if (InRange(c, coarse.NumberOfPoints))
     {
-      ids[k] = coarse.Id(3 * t + k);
-      weights[k] = std::max(0.0, barycentric[3 * d + k]);
-      sum += weights[k];
+      const Vec3 p = coarse.Point(c);
+      std::copy(p.data(), p.data() + 3, partners.Targets.begin() + 3 * d);
+      partners.Coarse[3 * d] = c;
+      partners.Weights[3 * d] = 1.0;
     }
-    if (!(sum > 0.0) || !InRange(ids[0], coarse.NumberOfPoints) || !InRange(ids[1], coarse.NumberOfPoints) ||
-      !InRange(ids[2], coarse.NumberOfPoints))
-    {
-      continue;
-    }
-    Vec3 target = Vec3::Zero();
-    for (int k = 0; k < 3; ++k)
-    {
-      partners.Coarse[3 * d + k] = static_cast<std::int32_t>(ids[k]);
-      partners.Weights[3 * d + k] = weights[k] / sum;
-      target += partners.Weights[3 * d + k] * coarse.Point(ids[k]);
-    }
-    std::copy(target.data(), target.data() + 3, partners.Targets.begin() + 3 * d);
   }
   return partners;
 }
 
-void Morph(const TriangleMeshView& detailed, const MorphPartners& partners, double t, double mergeDistance,
-  MorphFrame& frame)
+MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartners& partners, double mergeDistance,
+  const ExecutionContext& context)
 {
-  frame = MorphFrame();
-  t = std::isfinite(t) ? std::min(1.0, std::max(0.0, t)) : 0.0;
-  const std::int64_t n = detailed.NumberOfPoints;
+  const std::int64_t n = detailed.NumberOfPoints, triangles = detailed.NumberOfTriangles;
   const bool paired = partners.NumberOfPoints() == n;
-  // Step 3: each point on its way to its partner.
-  std::vector<double> place(3 * static_cast<std::size_t>(n));
-  for (std::int64_t d = 0; d < n; ++d)
-  {
-    const Vec3 p = detailed.Point(d);
-    const Vec3 x = paired && t > 0.0 ? Vec3((1.0 - t) * p + t * Vec3(partners.Targets.data() + 3 * d)) : p;
-    std::copy(x.data(), x.data() + 3, place.begin() + 3 * d);
-  }
-  // Step 4: close neighbours join, triangles left without area go.
-  const double threshold = std::isfinite(mergeDistance) ? t * std::max(0.0, mergeDistance) : 0.0;
-  const std::vector<std::int32_t> output = WritePoints(detailed, place, MergedSets(detailed, place, threshold), frame);
-  std::int32_t corner[3];
-  for (std::int64_t s = 0; s < detailed.NumberOfTriangles; ++s)
-  {
-    if (!DetailedTriangle(detailed, s, corner))
+  const double epsilon = std::isfinite(mergeDistance) ? std::max(0.0, mergeDistance) : 0.0;
+  const auto target = [&](std::int32_t d) { return paired ? Vec3(partners.Targets.data() + 3 * static_cast<std::int64_t>(d)) : detailed.Point(d); };
+  // Each block of triangles lists its edges' windows, the blocks in order.
+  const std::int64_t blocks = std::min<std::int64_t>(triangles, 256);
+  std::vector<std::vector<ScheduledEdge>> found(static_cast<std::size_t>(blocks));
+  context.For(blocks, [&](std::int64_t begin, std::int64_t end) {
+    std::int32_t corner[3];
+    for (std::int64_t block = begin; epsilon > 0.0 && block < end; ++block)
     {
-      continue;
+      for (std::int64_t s = triangles * block / blocks, last = triangles * (block + 1) / blocks; s < last; ++s)
+      {
+        if (!DetailedTriangle(detailed, s, corner))
+        {
+          continue;
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          const std::int32_t a = std::min(corner[k], corner[(k + 1) % 3]), b = std::max(corner[k], corner[(k + 1) % 3]);
+          const auto [from, to] = MergeWindow(detailed.Point(a) - detailed.Point(b), target(a) - target(b), epsilon);
+          if (a != b && from < 1.0 && to > std::max(0.0, from))
+          {
+            found[block].push_back({ std::max(0.0, from), to, a, b });
+          }
+        }
+      }
     }
-    const std::int32_t a = output[corner[0]], b = output[corner[1]], c = output[corner[2]];
-    if (a != b && b != c && c != a)
-    {
-      frame.Triangles.insert(frame.Triangles.end(), { a, b, c });
-      frame.TriangleSource.push_back(static_cast<std::int32_t>(s));
-    }
+  }, 20 * triangles);
+  std::vector<ScheduledEdge> edges;
+  for (const std::vector<ScheduledEdge>& block : found)
+  {
+    edges.insert(edges.end(), block.begin(), block.end());
   }
+  context.Sort(edges); // an edge of two triangles is found twice, with the same window
+  edges.erase(std::unique(edges.begin(), edges.end(),
+                [](const ScheduledEdge& x, const ScheduledEdge& y) { return x.A == y.A && x.B == y.B && x.From == y.From; }),
+    edges.end());
+  std::vector<ScheduledEdge> spanning = SpanningEdges(edges, n);
+  std::sort(spanning.begin(), spanning.end(), [](const ScheduledEdge& x, const ScheduledEdge& y) {
+    return std::make_tuple(MergeSchedule::Slot(x.From), x.A, x.B) < std::make_tuple(MergeSchedule::Slot(y.From), y.A, y.B);
+  });
+  MergeSchedule schedule;
+  for (const ScheduledEdge& edge : spanning)
+  {
+    schedule.Ends.insert(schedule.Ends.end(), { edge.A, edge.B });
+    schedule.From.push_back(edge.From);
+    schedule.To.push_back(edge.To);
+    ++schedule.SlotOffsets[MergeSchedule::Slot(edge.From) + 1];
+  }
+  std::partial_sum(schedule.SlotOffsets.begin(), schedule.SlotOffsets.end(), schedule.SlotOffsets.begin());
+  return schedule;
+}
+
+void Morph(const TriangleMeshView& detailed, const MorphPartners& partners, const MergeSchedule& merges, double t,
+  double* points, MorphFrame& frame, const ExecutionContext& context)
+{
+  t = std::isfinite(t) ? std::min(1.0, std::max(0.0, t)) : 0.0;
+  PlacePoints(detailed, partners, t, points, frame.Displacement, context);
+  JoinScheduled(merges, t, detailed.NumberOfPoints, context, frame);
+  PlaceGroups(detailed, points, context, frame);
+  KeepTriangles(detailed, context, frame);
 }
 
 } // namespace meshsimp

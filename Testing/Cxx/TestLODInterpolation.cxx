@@ -2,12 +2,13 @@
 // vtkLODInterpolation: a sphere morphed towards its simplification. t = 0 is the detailed
 // sphere exactly; at t = 1 every point lies on the coarse surface; the distance to the detailed
 // surface never falls as t grows; no triangle turns over; a point array of both inputs morphs;
-// the correspondence is built once for 11 frames; the time can set the frame; bad inputs give
-// one-line errors. With -V, the
+// the correspondence is built once for 11 frames; the geomorph of a recorded simplification
+// ends on the coarse triangles; the time can set the frame; bad inputs give one-line errors. With -V, the
 // cow at t = 0.5 against its baseline image.
 #include "vtkAppearancePreservingCollapse.h"
 #include "vtkLODInterpolation.h"
 #include "vtkOFFMeshReader.h"
+#include "vtkProgressiveMesh.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -84,12 +85,23 @@ std::pair<double, double> Distance(vtkPolyData* mesh, vtkPolyData* surface)
 }
 
 /// Output triangles whose normal turned by more than 90 degrees from their detailed triangle's
-/// (the output keeps the detailed triangles in order where no point merged).
-vtkIdType Folds(vtkPolyData* output, vtkPolyData* detailed)
+/// (the output keeps the detailed triangles in order where no point merged); with ancestors,
+/// only the triangles whose corners became three distinct coarse points (those the coarse
+/// surface keeps).
+vtkIdType Folds(vtkPolyData* output, vtkPolyData* detailed, vtkDataArray* ancestors = nullptr)
 {
   vtkIdType folds = 0;
   for (vtkIdType t = 0; t < output->GetNumberOfCells() && output->GetNumberOfCells() == detailed->GetNumberOfCells(); ++t)
   {
+    vtkIdType corners = 0;
+    const vtkIdType* id = nullptr;
+    detailed->GetCellPoints(t, corners, id);
+    if (ancestors &&
+      (ancestors->GetTuple1(id[0]) == ancestors->GetTuple1(id[1]) || ancestors->GetTuple1(id[1]) == ancestors->GetTuple1(id[2]) ||
+        ancestors->GetTuple1(id[2]) == ancestors->GetTuple1(id[0])))
+    {
+      continue;
+    }
     double n[2][3];
     int k = 0;
     for (vtkPolyData* mesh : { output, detailed })
@@ -173,6 +185,59 @@ void TestMorph()
   CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9);
 }
 
+/// The sphere's simplification at 95 % by filter, with GenerateOriginalIds.
+template <typename Filter>
+vtkSmartPointer<vtkPolyData> Recorded(vtkPolyData* detailed)
+{
+  vtkNew<Filter> simplify;
+  simplify->SetInputData(detailed);
+  simplify->SetTargetReduction(0.95);
+  simplify->GenerateOriginalIdsOn();
+  simplify->Update();
+  auto coarse = vtkSmartPointer<vtkPolyData>::New();
+  coarse->DeepCopy(simplify->GetOutput());
+  return coarse;
+}
+
+void TestExact()
+{
+  // The geomorph: every detailed point goes to the coarse point it became (the filters'
+  // InputToOutputPointIds). No triangle that the coarse surface keeps turns over on the way
+  // (those that vanish, two corners bound for one point, may: they end without area); at t = 1
+  // the points stand on the coarse points, and the triangles left are the coarse ones
+  // (Progressive Mesh: exactly them; Appearance-Preserving Collapse: about as many).
+  vtkSmartPointer<vtkPolyData> detailed, unused;
+  SphereAndCoarse(detailed, unused);
+  for (const bool progressive : { true, false })
+  {
+    vtkSmartPointer<vtkPolyData> coarse =
+      progressive ? Recorded<vtkProgressiveMesh>(detailed) : Recorded<vtkAppearancePreservingCollapse>(detailed);
+    CHECK(coarse->GetFieldData()->GetArray("InputToOutputPointIds") != nullptr);
+    vtkNew<vtkLODInterpolation> morph;
+    morph->SetInputData(0, detailed);
+    morph->SetCoarseData(coarse);
+    morph->SetCorrespondence(vtkLODInterpolation::EXACT);
+    morph->SetMergeDistance(0.0);
+    for (const double t : { 0.25, 0.5, 0.75 })
+    {
+      morph->SetInterpolation(t);
+      morph->Update();
+      CHECK(Folds(morph->GetOutput(), detailed, coarse->GetFieldData()->GetArray("InputToOutputPointIds")) == 0);
+    }
+    morph->SetInterpolation(1.0);
+    morph->SetMergeDistance(1e-9);
+    morph->Update();
+    CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9 && morph->GetCorrespondenceBuilds() == 1);
+    const vtkIdType triangles = morph->GetOutput()->GetNumberOfPolys();
+    CHECK(progressive ? triangles == coarse->GetNumberOfPolys() : triangles <= 1.1 * coarse->GetNumberOfPolys());
+    // Without the map, vtkOriginalPointIds place each coarse point's own detailed point, and the
+    // other points go to the nearest surface point: still on the coarse surface at t = 1.
+    coarse->GetFieldData()->RemoveArray("InputToOutputPointIds");
+    morph->Update();
+    CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9 && morph->GetCorrespondenceBuilds() == 2);
+  }
+}
+
 void TestTimeDrivesTheMorph()
 {
   // With InterpolationFromTime the filter reports the times 0, 0.05, ..., 1 and the time asked
@@ -243,6 +308,23 @@ void TestBadInput()
     CHECK(errors.size() == 1 && meshsimp_test::Mentions(errors[0], "Cannot morph: the coarse surface has no triangles."));
   }
   CHECK(!MorphErrors(detailed, nullptr).empty());
+  // Exact without a record, or with another surface's: one error that says why.
+  const std::pair<vtkSmartPointer<vtkPolyData>, const char*> unrecorded[] = {
+    { coarse, "Exact needs the coarse surface to carry vtkOriginalPointIds" },
+    { Recorded<vtkAppearancePreservingCollapse>(coarse), "(the coarse surface was made from another)" }
+  };
+  for (const auto& [other, message] : unrecorded)
+  {
+    vtkNew<meshsimp_test::MessageLog> log;
+    vtkNew<vtkLODInterpolation> morph;
+    morph->AddObserver(vtkCommand::ErrorEvent, log);
+    morph->SetInputData(0, detailed);
+    morph->SetCoarseData(other);
+    morph->SetCorrespondence(vtkLODInterpolation::EXACT);
+    morph->Update();
+    CHECK(log->Errors.size() == 1 && meshsimp_test::Mentions(log->Errors[0], message));
+    CHECK(morph->GetOutput()->GetNumberOfPoints() == 0);
+  }
 }
 } // namespace
 
@@ -264,6 +346,7 @@ int TestLODInterpolation(int argc, char* argv[])
     return meshsimp_test::CompareWithBaseline(morph->GetOutput(), false, argc, argv);
   }
   TestMorph();
+  TestExact();
   TestTimeDrivesTheMorph();
   TestBadInput();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

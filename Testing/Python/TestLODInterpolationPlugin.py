@@ -2,7 +2,8 @@
 """The plugin's LoD Interpolation (pvpython): the cow morphed towards its simplification at 95 %.
 Its defaults; t = 0 gives the cow's triangles; ten frames of an animated Interpolation build the
 correspondence once; at t = 1 the points stand on the coarse surface; the paper's nearest
-vertices at t = 1 leave about the coarse surface's triangles."""
+vertices at t = 1 leave about the coarse surface's triangles; the time drives the frame; Exact
+ends on the recorded coarse triangles."""
 import os
 
 from paraview import servermanager
@@ -45,5 +46,13 @@ check(len(morph.TimestepValues) == 21 and morph.TimestepValues[-1] == 1.0, "21 t
 morph.UpdatePipeline(0.5)
 by_time = servermanager.Fetch(morph).GetPointData().GetArray("Displacement").GetRange()
 check(by_time == by_value, "time 0.5 is Interpolation 0.5")
+
+# Exact, the geomorph: the coarse surface records what each cow point became (Generate Original
+# Ids), and at t = 1 the cow's triangles end as the coarse ones.
+recorded = ProgressiveMesh(Input=cow, TargetReduction=0.95, GenerateOriginalIds=1)
+geomorph = LoDInterpolation(Detailed=cow, Coarse=recorded, Correspondence="Exact", Interpolation=1.0)
+geomorph.UpdatePipeline()
+check(geomorph.GetDataInformation().GetNumberOfCells() == recorded.GetDataInformation().GetNumberOfCells(),
+      "Exact at t = 1: the coarse triangles")
 
 finish()
