@@ -13,6 +13,7 @@
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIdList.h"
@@ -285,6 +286,19 @@ void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInpu
     output->GetCellData()->CopyData(cellData, sources.GetPointer(), vtkIdType{ 0 });
   }
 }
+/// For the GPU: the detailed surface with each point's place at t = 1, "CoarsePoints", as its
+/// active tangents (the attribute VTK 9.2's polygon mapper passes to a vertex shader).
+void WriteShaderInput(vtkPolyData* detailed, const meshsimp::MorphPartners& partners, vtkPolyData* output)
+{
+  output->ShallowCopy(detailed);
+  vtkNew<vtkFloatArray> targets;
+  targets->SetName("CoarsePoints");
+  targets->SetNumberOfComponents(3);
+  targets->SetNumberOfTuples(partners.NumberOfPoints());
+  std::copy(partners.Targets.begin(), partners.Targets.end(), targets->GetPointer(0));
+  output->GetPointData()->SetTangents(targets);
+}
+
 /// The frame at t: its points, triangles with cell data, point data and Displacement.
 void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t,
@@ -451,7 +465,7 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   }
   Cache& built = *this->Built;
   const double mergeDistance = this->MergeDistance * built.Diagonal;
-  if (built.Scheduled != mergeDistance)
+  if (!this->MorphInShader && built.Scheduled != mergeDistance)
   {
     built.Merges = meshsimp::ScheduleMerges(built.DetailedTriangles.View, built.Partners, mergeDistance, context);
     built.Scheduled = mergeDistance;
@@ -461,7 +475,14 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   const double t = this->InterpolationFromTime && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     ? std::min(1.0, std::max(0.0, request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())))
     : this->Interpolation;
-  WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame, output);
+  if (this->MorphInShader)
+  {
+    WriteShaderInput(detailed, built.Partners, output);
+  }
+  else
+  {
+    WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame, output);
+  }
   output->GetFieldData()->PassData(detailed->GetFieldData());
   vtkNew<vtkIntArray> builds;
   builds->SetName("CorrespondenceBuilds");
@@ -477,5 +498,6 @@ void vtkLODInterpolation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeDistance: " << this->MergeDistance << "\n";
   os << indent << "Correspondence: " << this->Correspondence << "\n";
   os << indent << "InterpolationFromTime: " << this->InterpolationFromTime << "\n";
+  os << indent << "MorphInShader: " << this->MorphInShader << "\n";
   os << indent << "CorrespondenceBuilds: " << this->CorrespondenceBuilds << "\n";
 }

@@ -101,6 +101,20 @@ public:
   vtkBooleanMacro(InterpolationFromTime, bool);
   ///@}
 
+  ///@{
+  /**
+   * Off (default): the filter makes each frame. On, for playback on the GPU: the output is the
+   * detailed surface as it is, with the point array "CoarsePoints" (floats, each point's place
+   * at Interpolation 1) as its active tangents, for a vertex shader to blend
+   * mix(P, CoarsePoints, t) from one uniform, so that a frame costs a render and no pipeline
+   * update (LODInterpolation.md gives the representation's settings); Interpolation and
+   * MergeDistance then do nothing (points do not join).
+   */
+  vtkSetMacro(MorphInShader, bool);
+  vtkGetMacro(MorphInShader, bool);
+  vtkBooleanMacro(MorphInShader, bool);
+  ///@}
+
   /// The coarse surface (input 1).
   void SetCoarseConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetCoarseData(vtkDataObject* data) { this->SetInputData(1, data); }
@@ -129,6 +143,7 @@ private:
   double MergeDistance = 0.001;
   int Correspondence = NEAREST_SURFACE_POINT;
   bool InterpolationFromTime = false;
+  bool MorphInShader = false;
   int CorrespondenceBuilds = 0;
   struct Cache;
   std::unique_ptr<Cache> Built; // the correspondence and what it was built from

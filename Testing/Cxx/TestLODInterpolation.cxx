@@ -3,7 +3,8 @@
 // sphere exactly; at t = 1 every point lies on the coarse surface; the distance to the detailed
 // surface never falls as t grows; no triangle turns over; a point array of both inputs morphs;
 // the correspondence is built once for 11 frames; the geomorph of a recorded simplification
-// ends on the coarse triangles; the time can set the frame; bad inputs give one-line errors. With -V, the
+// ends on the coarse triangles; the GPU output carries the places at t = 1; the time can set
+// the frame; bad inputs give one-line errors. With -V, the
 // cow at t = 0.5 against its baseline image.
 #include "vtkAppearancePreservingCollapse.h"
 #include "vtkLODInterpolation.h"
@@ -238,6 +239,35 @@ void TestExact()
   }
 }
 
+void TestMorphInShader()
+{
+  // For the GPU: the detailed surface as it is, with each point's place at t = 1 as its
+  // tangents, on the same correspondence.
+  vtkSmartPointer<vtkPolyData> detailed, coarse;
+  SphereAndCoarse(detailed, coarse);
+  vtkNew<vtkLODInterpolation> morph;
+  morph->SetInputData(0, detailed);
+  morph->SetCoarseData(coarse);
+  morph->SetMergeDistance(0.0);
+  morph->SetInterpolation(1.0);
+  morph->Update();
+  vtkNew<vtkPolyData> last;
+  last->DeepCopy(morph->GetOutput());
+  morph->MorphInShaderOn();
+  morph->Update();
+  vtkPolyData* out = morph->GetOutput();
+  vtkDataArray* targets = out->GetPointData()->GetTangents();
+  CHECK(morph->GetCorrespondenceBuilds() == 1 && out->GetPoints() == detailed->GetPoints() && targets &&
+    std::strcmp(targets->GetName(), "CoarsePoints") == 0);
+  for (vtkIdType p = 0; targets && p < last->GetNumberOfPoints(); ++p)
+  {
+    double x[3], y[3];
+    last->GetPoint(p, x);
+    targets->GetTuple(p, y);
+    CHECK(std::abs(x[0] - y[0]) + std::abs(x[1] - y[1]) + std::abs(x[2] - y[2]) < 1e-6);
+  }
+}
+
 void TestTimeDrivesTheMorph()
 {
   // With InterpolationFromTime the filter reports the times 0, 0.05, ..., 1 and the time asked
@@ -347,6 +377,7 @@ int TestLODInterpolation(int argc, char* argv[])
   }
   TestMorph();
   TestExact();
+  TestMorphInShader();
   TestTimeDrivesTheMorph();
   TestBadInput();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
