@@ -100,11 +100,14 @@ std::vector<std::int32_t> NearestPoints(
 
 /// Per detailed point, the coarse point it became (-1: not known), from what the simplification
 /// that made the coarse surface recorded: its field data InputToOutputPointIds (this module's
-/// filters with GenerateOriginalIds: every input point's), else its point data
-/// vtkOriginalPointIds (any filter that keeps them: each coarse point's own input point). False,
-/// with the problem, where the coarse surface has neither or they cannot be of this detailed one.
-bool Ancestors(vtkPolyData* coarse, vtkIdType detailedPoints, std::vector<std::int32_t>& ancestor, std::string& problem)
+/// filters with GenerateOriginalIds: every input point's; where the detailed surface is itself
+/// a simplification of that input with vtkOriginalPointIds, two levels of one surface, through
+/// those), else its point data vtkOriginalPointIds (any filter that keeps them: each coarse
+/// point's own input point). False, with the problem, where the coarse surface has neither or
+/// they cannot be of this detailed one.
+bool Ancestors(vtkPolyData* detailed, vtkPolyData* coarse, std::vector<std::int32_t>& ancestor, std::string& problem)
 {
+  const vtkIdType detailedPoints = detailed->GetNumberOfPoints();
   const vtkIdType coarsePoints = coarse->GetNumberOfPoints();
   ancestor.assign(static_cast<std::size_t>(detailedPoints), -1);
   vtkAbstractArray* record = Record(coarse).first;
@@ -117,6 +120,17 @@ bool Ancestors(vtkPolyData* coarse, vtkIdType detailedPoints, std::vector<std::i
   }
   if (record == coarse->GetFieldData()->GetAbstractArray(vtkSimplification::InputToOutputPointIdsName))
   {
+    vtkDataArray* level = detailed->GetPointData()->GetArray("vtkOriginalPointIds");
+    if (values->GetNumberOfTuples() != detailedPoints && level && level->GetNumberOfComponents() == 1)
+    {
+      for (vtkIdType d = 0; d < detailedPoints; ++d) // both levels of one input
+      {
+        const double input = level->GetComponent(d, 0);
+        const double c = input >= 0 && input < values->GetNumberOfTuples() ? values->GetComponent(static_cast<vtkIdType>(input), 0) : -1;
+        ancestor[d] = c >= 0 && c < coarsePoints ? static_cast<std::int32_t>(c) : -1;
+      }
+      return true;
+    }
     if (values->GetNumberOfTuples() != detailedPoints)
     {
       problem = std::string("the coarse surface's ") + vtkSimplification::InputToOutputPointIdsName + " lists " +
@@ -356,7 +370,7 @@ bool vtkLODInterpolation::MakePartners(vtkPolyData* detailed, vtkPolyData* coars
   }
   std::vector<std::int32_t> ancestor, unknown;
   std::string problem;
-  if (!Ancestors(coarse, d.NumberOfPoints, ancestor, problem))
+  if (!Ancestors(detailed, coarse, ancestor, problem))
   {
     vtkErrorMacro(<< "Cannot morph: " << problem << ".");
     return false;

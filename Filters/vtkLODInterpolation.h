@@ -13,8 +13,10 @@
  * "Progressive meshes"), sends every detailed point to the coarse point it became, where the
  * coarse surface was simplified from this detailed one and says so: the field data
  * InputToOutputPointIds that this module's filters write with GenerateOriginalIds (every
- * point's), or else the point data vtkOriginalPointIds of any filter (each coarse point's
- * own input point; the points no record places go to the nearest surface point).
+ * point's; where the detailed surface is itself a level of the same input with
+ * vtkOriginalPointIds, two levels of one surface, through those), or else the point data
+ * vtkOriginalPointIds of any filter (each coarse point's own input point; the points no record
+ * places go to the nearest surface point).
  *
  * The output is the detailed surface's points, in their order, each at
  * (1 − Interpolation) P_detailed + Interpolation P_partner, on its triangles; adjacent points

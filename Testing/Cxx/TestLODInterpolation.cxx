@@ -186,13 +186,13 @@ void TestMorph()
   CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9);
 }
 
-/// The sphere's simplification at 95 % by filter, with GenerateOriginalIds.
+/// The sphere's simplification at 95 % (or reduction) by filter, with GenerateOriginalIds.
 template <typename Filter>
-vtkSmartPointer<vtkPolyData> Recorded(vtkPolyData* detailed)
+vtkSmartPointer<vtkPolyData> Recorded(vtkPolyData* detailed, double reduction = 0.95)
 {
   vtkNew<Filter> simplify;
   simplify->SetInputData(detailed);
-  simplify->SetTargetReduction(0.95);
+  simplify->SetTargetReduction(reduction);
   simplify->GenerateOriginalIdsOn();
   simplify->Update();
   auto coarse = vtkSmartPointer<vtkPolyData>::New();
@@ -237,6 +237,16 @@ void TestExact()
     morph->Update();
     CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9 && morph->GetCorrespondenceBuilds() == 2);
   }
+  // Two levels of one sphere: the detailed level's vtkOriginalPointIds lead into the coarse
+  // level's record, and the geomorph ends on exactly the coarse level's triangles.
+  vtkNew<vtkLODInterpolation> levels;
+  levels->SetInputData(0, Recorded<vtkProgressiveMesh>(detailed, 0.5));
+  levels->SetCoarseData(Recorded<vtkProgressiveMesh>(detailed, 0.95));
+  levels->SetCorrespondence(vtkLODInterpolation::EXACT);
+  levels->SetMergeDistance(1e-9);
+  levels->SetInterpolation(1.0);
+  levels->Update();
+  CHECK(levels->GetOutput()->GetNumberOfPolys() == vtkPolyData::SafeDownCast(levels->GetInputDataObject(1, 0))->GetNumberOfPolys());
 }
 
 void TestMorphInShader()
@@ -327,6 +337,7 @@ void TestBadInput()
 {
   // An empty coarse surface, one of points alone: one error of the filter's (none of the
   // executive's) that says which input has no triangles. No coarse input at all: VTK's own.
+  // Mismatched arrays pass as they are.
   vtkSmartPointer<vtkPolyData> detailed, coarse;
   SphereAndCoarse(detailed, coarse);
   vtkNew<vtkPolyData> empty;
@@ -338,6 +349,23 @@ void TestBadInput()
     CHECK(errors.size() == 1 && meshsimp_test::Mentions(errors[0], "Cannot morph: the coarse surface has no triangles."));
   }
   CHECK(!MorphErrors(detailed, nullptr).empty());
+  // A coarse array of the detailed one's name but other components: the detailed values pass.
+  vtkNew<vtkDoubleArray> pairs;
+  pairs->SetName("Height");
+  pairs->SetNumberOfComponents(2);
+  pairs->SetNumberOfTuples(coarse->GetNumberOfPoints());
+  pairs->Fill(7.0);
+  vtkNew<vtkPolyData> mismatched;
+  mismatched->ShallowCopy(coarse);
+  mismatched->GetPointData()->AddArray(pairs);
+  CHECK(MorphErrors(detailed, mismatched).empty());
+  vtkNew<vtkLODInterpolation> passing;
+  passing->SetInputData(0, detailed);
+  passing->SetCoarseData(mismatched);
+  passing->SetInterpolation(1.0);
+  passing->Update();
+  vtkDataArray* height = passing->GetOutput()->GetPointData()->GetArray("Height");
+  CHECK(height && height->GetNumberOfComponents() == 1 && height->GetTuple1(7) == detailed->GetPoint(7)[2]);
   // Exact without a record, or with another surface's: one error that says why.
   const std::pair<vtkSmartPointer<vtkPolyData>, const char*> unrecorded[] = {
     { coarse, "Exact needs the coarse surface to carry vtkOriginalPointIds" },
