@@ -37,6 +37,19 @@
 
 vtkStandardNewMacro(vtkLODInterpolation);
 
+namespace
+{
+/// A morphing point array's values at the partners, kept for the frames while the arrays and
+/// the correspondence stay.
+struct MorphedArray
+{
+  vtkDataArray* Detailed = nullptr;
+  vtkDataArray* Coarse = nullptr;
+  vtkMTimeType DetailedTime = 0, CoarseTime = 0;
+  std::vector<double> Values;
+};
+}
+
 /// The correspondence and what it was built from (the inputs, their modification times, the
 /// mode): rebuilt only when one of them changes.
 struct vtkLODInterpolation::Cache
@@ -52,6 +65,7 @@ struct vtkLODInterpolation::Cache
   meshsimp::MergeSchedule Merges; // for MergeDistance Scheduled
   double Scheduled = -1.0;
   meshsimp::MorphFrame Frame; // the last frame's, its memory reused
+  std::vector<MorphedArray> Arrays; // the morphing arrays' partner values
 };
 
 namespace
@@ -156,34 +170,54 @@ bool Ancestors(vtkPolyData* detailed, vtkPolyData* coarse, std::vector<std::int3
   return true;
 }
 
+/// Per detailed point, a coarse array's value at its partner: the blend of the partner's corners'
+/// values with their weights (its own value, from the detailed array, where it has no partner).
+struct BlendAtPartners
+{
+  template <typename CoarseArray>
+  void operator()(CoarseArray* coarse, vtkDataArray* detailed, const meshsimp::MorphPartners& partners,
+    const meshsimp::ExecutionContext& context, std::vector<double>& values) const
+  {
+    const auto other = vtk::DataArrayTupleRange(coarse);
+    const int components = coarse->GetNumberOfComponents();
+    values.assign(static_cast<std::size_t>(partners.NumberOfPoints() * components), 0.0);
+    context.For(partners.NumberOfPoints(), [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t d = begin; d < end; ++d)
+      {
+        const std::int32_t* corner = partners.Coarse.data() + 3 * d;
+        for (int k = 0; k < components; ++k)
+        {
+          double& value = values[d * components + k];
+          value = corner[0] < 0 ? detailed->GetComponent(d, k) : 0.0;
+          for (int j = 0; j < 3 && corner[j] >= 0; ++j)
+          {
+            value += partners.Weights[3 * d + j] * static_cast<double>(other[corner[j]][k]);
+          }
+        }
+      }
+    }, 20 * components * partners.NumberOfPoints());
+  }
+};
+
 /// A floating-point point array of the detailed surface for the frame at t: each point's value
-/// blended as its place, (1 − t) its own + t its partner's (the partner's corners' values in the
-/// coarse array, with their weights); the members of a merged set take their mean; unit vectors
-/// (normals) stay unit.
+/// blended as its place, (1 − t) its own + t its partner's; the members of a merged set take
+/// their mean; unit vectors (normals) stay unit.
 struct MorphValues
 {
-  template <typename DetailedArray, typename CoarseArray>
-  void operator()(DetailedArray* detailed, CoarseArray* coarse, vtkDataArray* output, const meshsimp::MorphPartners& partners,
+  template <typename DetailedArray>
+  void operator()(DetailedArray* detailed, const std::vector<double>& towards, vtkDataArray* output,
     const meshsimp::MorphFrame& frame, double t, bool unit, const meshsimp::ExecutionContext& context) const
   {
     const auto own = vtk::DataArrayTupleRange(detailed);
-    const auto other = vtk::DataArrayTupleRange(coarse);
     auto out = vtk::DataArrayTupleRange(vtkAOSDataArrayTemplate<double>::FastDownCast(output));
     const int components = detailed->GetNumberOfComponents();
     context.For(own.size(), [&](std::int64_t begin, std::int64_t end) {
       for (std::int64_t d = begin; d < end; ++d)
       {
-        const std::int32_t* corner = partners.Coarse.data() + 3 * d;
-        const double* weight = partners.Weights.data() + 3 * d;
         double length2 = 0.0;
         for (int k = 0; k < components; ++k)
         {
-          double towards = corner[0] < 0 ? static_cast<double>(own[d][k]) : 0.0;
-          for (int j = 0; j < 3 && corner[j] >= 0; ++j)
-          {
-            towards += weight[j] * static_cast<double>(other[corner[j]][k]);
-          }
-          out[d][k] = (1.0 - t) * static_cast<double>(own[d][k]) + t * towards;
+          out[d][k] = (1.0 - t) * static_cast<double>(own[d][k]) + t * towards[d * components + k];
           length2 += out[d][k] * out[d][k];
         }
         const double scale = unit && length2 > 0.0 ? 1.0 / std::sqrt(length2) : 1.0;
@@ -192,7 +226,7 @@ struct MorphValues
           out[d][k] *= scale;
         }
       }
-    }, 10 * components * own.size());
+    }, 4 * components * own.size());
     context.For(frame.NumberOfGroups(), [&](std::int64_t begin, std::int64_t end) {
       std::vector<double> mean(components);
       for (std::int64_t g = begin; g < end; ++g)
@@ -219,14 +253,39 @@ struct MorphValues
   }
 };
 
+/// The partners' values of a morphing array (BlendAtPartners), kept from frame to frame until the
+/// correspondence or either array changes.
+const std::vector<double>& PartnerValues(vtkDataArray* detailed, vtkDataArray* coarse,
+  const meshsimp::MorphPartners& partners, const meshsimp::ExecutionContext& context,
+  std::vector<MorphedArray>& kept)
+{
+  auto entry = std::find_if(kept.begin(), kept.end(), [&](const MorphedArray& k) { return k.Detailed == detailed; });
+  if (entry == kept.end())
+  {
+    entry = kept.insert(kept.end(), MorphedArray());
+  }
+  if (entry->Detailed != detailed || entry->Coarse != coarse || entry->DetailedTime != detailed->GetMTime() ||
+    entry->CoarseTime != coarse->GetMTime())
+  {
+    *entry = { detailed, coarse, detailed->GetMTime(), coarse->GetMTime(), {} };
+    BlendAtPartners worker;
+    if (!vtkArrayDispatch::Dispatch::Execute(coarse, worker, detailed, partners, context, entry->Values))
+    {
+      worker(coarse, detailed, partners, context, entry->Values);
+    }
+  }
+  return entry->Values;
+}
+
 /// Every point array of the detailed surface for the frame: floating-point arrays that the
 /// coarse surface also has (same name and components) morphed as doubles, the others as they
 /// are (a merged set's triangles use its lowest id, whose value that is); the active attributes
 /// kept active, the normals unit.
 void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp::MorphPartners& partners,
-  const meshsimp::MorphFrame& frame, double t, vtkIdType detailedPoints, const meshsimp::ExecutionContext& context,
-  vtkPointData* output)
+  const meshsimp::MorphFrame& frame, double t, const meshsimp::ExecutionContext& context,
+  std::vector<MorphedArray>& kept, vtkPointData* output)
 {
+  const vtkIdType detailedPoints = partners.NumberOfPoints();
   for (int i = 0; i < detailed->GetNumberOfArrays(); ++i)
   {
     vtkDataArray* array = detailed->GetArray(i);
@@ -245,12 +304,13 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
       morphed->SetName(array->GetName());
       morphed->SetNumberOfComponents(array->GetNumberOfComponents());
       morphed->SetNumberOfTuples(detailedPoints);
-      using Dispatcher = vtkArrayDispatch::Dispatch2ByValueType<vtkArrayDispatch::Reals, vtkArrayDispatch::AllTypes>;
-      MorphValues worker;
+      const std::vector<double>& towards = PartnerValues(array, match, partners, context, kept);
       const bool unit = attribute == vtkDataSetAttributes::NORMALS;
-      if (!Dispatcher::Execute(array, match, worker, morphed.Get(), partners, frame, t, unit, context))
+      MorphValues worker;
+      if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
+            array, worker, towards, morphed.Get(), frame, t, unit, context))
       {
-        worker(array, match, morphed.Get(), partners, frame, t, unit, context);
+        worker(array, towards, morphed.Get(), frame, t, unit, context);
       }
     }
     output->AddArray(morphed);
@@ -316,7 +376,8 @@ void WriteShaderInput(vtkPolyData* detailed, const meshsimp::MorphPartners& part
 /// The frame at t: its points, triangles with cell data, point data and Displacement.
 void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t,
-  const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame, vtkPolyData* output)
+  const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame,
+  std::vector<MorphedArray>& kept, vtkPolyData* output)
 {
   const meshsimp::TriangleMeshView& view = triangles.View;
   vtkNew<vtkDoubleArray> places;
@@ -327,8 +388,7 @@ void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplificat
   points->SetData(places);
   output->SetPoints(points);
   WriteTriangles(detailed, triangles, frame, output);
-  MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, view.NumberOfPoints, context,
-    output->GetPointData());
+  MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, context, kept, output->GetPointData());
   vtkNew<vtkDoubleArray> displacement;
   displacement->SetName("Displacement");
   displacement->SetNumberOfValues(view.NumberOfPoints);
@@ -495,7 +555,8 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   }
   else
   {
-    WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame, output);
+    WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame,
+      built.Arrays, output);
   }
   output->GetFieldData()->PassData(detailed->GetFieldData());
   vtkNew<vtkIntArray> builds;
