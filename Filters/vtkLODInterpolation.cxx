@@ -47,7 +47,31 @@ struct MorphedArray
   vtkDataArray* Coarse = nullptr;
   vtkMTimeType DetailedTime = 0, CoarseTime = 0;
   std::vector<double> Values;
+  vtkSmartPointer<vtkDoubleArray> Output; // the last frame's
 };
+
+/// The last frame's output arrays (see Reuse).
+struct FrameArrays
+{
+  vtkSmartPointer<vtkDoubleArray> Places, Displacement;
+  vtkSmartPointer<vtkTypeInt32Array> Offsets, Connectivity;
+};
+
+/// An array for the tuples: the last frame's, kept, where nothing else holds it any more (its
+/// memory is written again: a new array's pages would fault in again, which costs a frame of a
+/// million points about as much as computing it), else a new one, kept in its place.
+template <typename ArrayType>
+ArrayType* Reuse(vtkSmartPointer<ArrayType>& kept, int components, vtkIdType tuples)
+{
+  if (!kept || kept->GetReferenceCount() > 1)
+  {
+    kept = vtkSmartPointer<ArrayType>::New();
+  }
+  kept->SetNumberOfComponents(components);
+  kept->SetNumberOfTuples(tuples);
+  kept->Modified();
+  return kept;
+}
 }
 
 /// The correspondence and what it was built from (the inputs, their modification times, the
@@ -66,6 +90,7 @@ struct vtkLODInterpolation::Cache
   double Scheduled = -1.0;
   meshsimp::MorphFrame Frame; // the last frame's, its memory reused
   std::vector<MorphedArray> Arrays; // the morphing arrays' partner values
+  FrameArrays Written;
 };
 
 namespace
@@ -253,9 +278,9 @@ struct MorphValues
   }
 };
 
-/// The partners' values of a morphing array (BlendAtPartners), kept from frame to frame until the
-/// correspondence or either array changes.
-const std::vector<double>& PartnerValues(vtkDataArray* detailed, vtkDataArray* coarse,
+/// A morphing array's entry: its partners' values (BlendAtPartners), kept from frame to frame
+/// until the correspondence or either array changes, and its last output.
+MorphedArray& PartnerValues(vtkDataArray* detailed, vtkDataArray* coarse,
   const meshsimp::MorphPartners& partners, const meshsimp::ExecutionContext& context,
   std::vector<MorphedArray>& kept)
 {
@@ -267,14 +292,14 @@ const std::vector<double>& PartnerValues(vtkDataArray* detailed, vtkDataArray* c
   if (entry->Detailed != detailed || entry->Coarse != coarse || entry->DetailedTime != detailed->GetMTime() ||
     entry->CoarseTime != coarse->GetMTime())
   {
-    *entry = { detailed, coarse, detailed->GetMTime(), coarse->GetMTime(), {} };
+    *entry = { detailed, coarse, detailed->GetMTime(), coarse->GetMTime(), {}, entry->Output };
     BlendAtPartners worker;
     if (!vtkArrayDispatch::Dispatch::Execute(coarse, worker, detailed, partners, context, entry->Values))
     {
       worker(coarse, detailed, partners, context, entry->Values);
     }
   }
-  return entry->Values;
+  return *entry;
 }
 
 /// Every point array of the detailed surface for the frame: floating-point arrays that the
@@ -300,11 +325,10 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
     const int attribute = detailed->IsArrayAnAttribute(i);
     if (morphs)
     {
-      morphed = vtkSmartPointer<vtkDoubleArray>::New();
+      MorphedArray& entry = PartnerValues(array, match, partners, context, kept);
+      morphed = Reuse(entry.Output, array->GetNumberOfComponents(), detailedPoints);
       morphed->SetName(array->GetName());
-      morphed->SetNumberOfComponents(array->GetNumberOfComponents());
-      morphed->SetNumberOfTuples(detailedPoints);
-      const std::vector<double>& towards = PartnerValues(array, match, partners, context, kept);
+      const std::vector<double>& towards = entry.Values;
       const bool unit = attribute == vtkDataSetAttributes::NORMALS;
       MorphValues worker;
       if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
@@ -325,7 +349,7 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
 /// is kept (no point joined) and the detailed surface is triangles alone, viewed in place, those
 /// are the detailed surface's: shared, not copied.
 void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::MorphFrame& frame, vtkPolyData* output)
+  const meshsimp::MorphFrame& frame, FrameArrays& written, vtkPolyData* output)
 {
   const meshsimp::TriangleMeshView& view = triangles.View;
   const vtkIdType count = frame.NumberOfTriangles();
@@ -336,13 +360,12 @@ void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInpu
     output->GetCellData()->ShallowCopy(detailed->GetCellData());
     return;
   }
-  vtkNew<vtkTypeInt32Array> offsets, connectivity;
-  offsets->SetNumberOfValues(count + 1);
+  vtkTypeInt32Array* offsets = Reuse(written.Offsets, 1, count + 1);
   for (vtkIdType t = 0; t <= count; ++t)
   {
     offsets->SetValue(t, static_cast<std::int32_t>(3 * t));
   }
-  connectivity->SetNumberOfValues(3 * count);
+  vtkTypeInt32Array* connectivity = Reuse(written.Connectivity, 1, 3 * count);
   std::copy(frame.Triangles.begin(), frame.Triangles.end(), connectivity->GetPointer(0));
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
@@ -376,22 +399,19 @@ void WriteShaderInput(vtkPolyData* detailed, const meshsimp::MorphPartners& part
 /// The frame at t: its points, triangles with cell data, point data and Displacement.
 void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t,
-  const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame,
-  std::vector<MorphedArray>& kept, vtkPolyData* output)
+  const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame, std::vector<MorphedArray>& kept,
+  FrameArrays& written, vtkPolyData* output)
 {
   const meshsimp::TriangleMeshView& view = triangles.View;
-  vtkNew<vtkDoubleArray> places;
-  places->SetNumberOfComponents(3);
-  places->SetNumberOfTuples(view.NumberOfPoints);
+  vtkDoubleArray* places = Reuse(written.Places, 3, view.NumberOfPoints);
   meshsimp::Morph(view, partners, merges, t, places->GetPointer(0), frame, context);
   vtkNew<vtkPoints> points;
   points->SetData(places);
   output->SetPoints(points);
-  WriteTriangles(detailed, triangles, frame, output);
+  WriteTriangles(detailed, triangles, frame, written, output);
   MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, context, kept, output->GetPointData());
-  vtkNew<vtkDoubleArray> displacement;
+  vtkDoubleArray* displacement = Reuse(written.Displacement, 1, view.NumberOfPoints);
   displacement->SetName("Displacement");
-  displacement->SetNumberOfValues(view.NumberOfPoints);
   std::copy(frame.Displacement.begin(), frame.Displacement.end(), displacement->GetPointer(0));
   output->GetPointData()->AddArray(displacement);
 }
@@ -556,7 +576,7 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   else
   {
     WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame,
-      built.Arrays, output);
+      built.Arrays, built.Written, output);
   }
   output->GetFieldData()->PassData(detailed->GetFieldData());
   vtkNew<vtkIntArray> builds;
