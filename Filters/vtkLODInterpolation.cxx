@@ -561,7 +561,8 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   const double mergeDistance = this->MergeDistance * built.Diagonal;
   if (!this->MorphInShader && built.Scheduled != mergeDistance)
   {
-    built.Merges = meshsimp::ScheduleMerges(built.DetailedTriangles.View, built.Partners, mergeDistance, context);
+    built.Merges = meshsimp::ScheduleMerges(
+      built.DetailedTriangles.View, built.Partners, mergeDistance, context, this->Correspondence == EXACT);
     built.Scheduled = mergeDistance;
   }
   this->UpdateProgress(0.5);

@@ -469,7 +469,7 @@ void vtkProgressiveMesh::WritePiece(const PieceCall& piece, const meshsimp::Simp
   {
     meshsimp::SimplifiedMesh level; // the removed points each level point stands for
     meshsimp::ListLevelSources(sequence, points, level);
-    vtkSimplification::AddInputToOutputIds(level, piece.Triangles.View.NumberOfPoints, output);
+    vtkSimplification::AddInputToOutputIds(level, piece.Triangles.View, output);
   }
   for (const char* name : { ParentName, ErrorName })
   {

@@ -23,9 +23,11 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 
 namespace vtkSimplification
 {
@@ -313,6 +315,40 @@ void FinishOutput(vtkPolyData* input, const TriangleInput& triangles, const mesh
   AddFieldValue(output, "AchievedReduction", inputTriangles > 0.0 ? 1.0 - numberOfTriangles / inputTriangles : 0.0);
 }
 
+/// The points of the input's triangles that no output point lists (the front end joined them to
+/// a point at the same place, closing a crack) take the output point of a listed point there.
+void MapJoinedPoints(const meshsimp::TriangleMeshView& input, vtkIdTypeArray* map)
+{
+  std::vector<vtkIdType> unlisted;
+  for (std::int64_t i = 0; i < 3 * input.NumberOfTriangles; ++i)
+  {
+    const std::int64_t p = input.Id(i);
+    if (p >= 0 && p < input.NumberOfPoints && map->GetValue(p) < 0)
+    {
+      unlisted.push_back(p);
+    }
+  }
+  if (unlisted.empty())
+  {
+    return;
+  }
+  std::map<std::array<double, 3>, vtkIdType> listed;
+  for (vtkIdType p = 0; p < input.NumberOfPoints; ++p)
+  {
+    const Eigen::Vector3d x = input.Point(p);
+    if (map->GetValue(p) >= 0)
+    {
+      listed.emplace(std::array<double, 3>{ x[0], x[1], x[2] }, map->GetValue(p));
+    }
+  }
+  for (const vtkIdType p : unlisted)
+  {
+    const Eigen::Vector3d x = input.Point(p);
+    const auto found = listed.find({ x[0], x[1], x[2] });
+    map->SetValue(p, found == listed.end() ? -1 : found->second);
+  }
+}
+
 /// vtkOriginalPointIds and vtkOriginalCellIds, vtkGeometryFilter's names: each output point's
 /// representative input point, each output triangle's input cell.
 void AddOriginalIds(const TriangleInput& triangles, const meshsimp::SimplifiedMesh& mesh, vtkPolyData* output)
@@ -446,7 +482,7 @@ void SetOutput(vtkPolyData* input, const TriangleInput& triangles, const meshsim
   FinishOutput(input, triangles, mesh, true, output);
   if (originalIds && !surface) // a made surface's points are not the input's
   {
-    AddInputToOutputIds(mesh, triangles.View.NumberOfPoints, output);
+    AddInputToOutputIds(mesh, triangles.View, output);
   }
 }
 
@@ -487,8 +523,9 @@ void SetPrefixOutput(vtkPolyData* input, const TriangleInput& triangles, vtkPoly
   FinishOutput(input, triangles, mesh, false, output);
 }
 
-void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, vtkIdType inputPoints, vtkPolyData* output)
+void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, const meshsimp::TriangleMeshView& input, vtkPolyData* output)
 {
+  const vtkIdType inputPoints = input.NumberOfPoints;
   vtkNew<vtkIdTypeArray> map;
   map->SetName(InputToOutputPointIdsName);
   map->SetNumberOfValues(inputPoints);
@@ -503,6 +540,7 @@ void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, vtkIdType inputPo
       }
     }
   }
+  MapJoinedPoints(input, map);
   output->GetFieldData()->AddArray(map);
 }
 

@@ -76,9 +76,10 @@ bool SamePointData(vtkPointData* pd, vtkIdType a, vtkIdType b);
 /// LoD Interpolation's Exact correspondence reads.
 constexpr const char* InputToOutputPointIdsName = "InputToOutputPointIds";
 
-/// Adds InputToOutputPointIds to the output's field data: per input point (inputPoints of them),
-/// the output point whose sources list it (-1: none).
-void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, vtkIdType inputPoints, vtkPolyData* output);
+/// Adds InputToOutputPointIds to the output's field data: per point of input, the output point
+/// whose sources list it, or that of a listed point at its place (the front end joined them);
+/// -1: none.
+void AddInputToOutputIds(const meshsimp::SimplifiedMesh& mesh, const meshsimp::TriangleMeshView& input, vtkPolyData* output);
 
 /// Adds a one-value array to the output's field data.
 void AddFieldValue(vtkPolyData* output, const char* name, double value);

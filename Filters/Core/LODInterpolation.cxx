@@ -428,11 +428,16 @@ MorphPartners PairAncestors(
 }
 
 MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartners& partners, double mergeDistance,
-  const ExecutionContext& context)
+  const ExecutionContext& context, bool samePartnerOnly)
 {
   const std::int64_t n = detailed.NumberOfPoints, triangles = detailed.NumberOfTriangles;
   const bool paired = partners.NumberOfPoints() == n;
   const double epsilon = std::isfinite(mergeDistance) ? std::max(0.0, mergeDistance) : 0.0;
+  const auto samePartner = [&](std::int32_t a, std::int32_t b) {
+    return paired && partners.Coarse[3 * static_cast<std::size_t>(a)] >= 0 &&
+      partners.Coarse[3 * static_cast<std::size_t>(a)] == partners.Coarse[3 * static_cast<std::size_t>(b)] &&
+      partners.Weights[3 * static_cast<std::size_t>(a)] == 1.0 && partners.Weights[3 * static_cast<std::size_t>(b)] == 1.0;
+  };
   const auto target = [&](std::int32_t d) { return paired ? Vec3(partners.Targets.data() + 3 * static_cast<std::int64_t>(d)) : detailed.Point(d); };
   // Each block of triangles lists its edges' windows, the blocks in order.
   const std::int64_t blocks = std::min<std::int64_t>(triangles, 256);
@@ -451,7 +456,7 @@ MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartne
         {
           const std::int32_t a = std::min(corner[k], corner[(k + 1) % 3]), b = std::max(corner[k], corner[(k + 1) % 3]);
           const auto [from, to] = MergeWindow(detailed.Point(a) - detailed.Point(b), target(a) - target(b), epsilon);
-          if (a != b && from < 1.0 && to > std::max(0.0, from))
+          if (a != b && from < 1.0 && to > std::max(0.0, from) && (!samePartnerOnly || samePartner(a, b)))
           {
             found[block].push_back({ std::max(0.0, from), to, a, b });
           }

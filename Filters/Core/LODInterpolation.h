@@ -99,10 +99,12 @@ struct MergeSchedule
  * The merges of every frame, from the partners and the merge distance (mesh units): the
  * distance of two adjacent points at t, |(1 − t) (P_a − P_b) + t (Q_a − Q_b)|, falls below
  * t · mergeDistance on one interval of t (a quadratic's sign), computed here once so that a
- * frame only reads it.
+ * frame only reads it. samePartnerOnly (a geomorph's rule): only points bound for one coarse
+ * point join, so that at t = 1 the triangles left are those of the coarse mesh, whatever the
+ * distance between its points.
  */
 MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartners& partners, double mergeDistance,
-  const ExecutionContext& context = {});
+  const ExecutionContext& context = {}, bool samePartnerOnly = false);
 
 /// One frame of the morph: the detailed points, in their order, on the detailed triangles.
 struct MorphFrame

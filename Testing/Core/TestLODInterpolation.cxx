@@ -158,6 +158,34 @@ void AncestorsGoWhereTheyWent()
   }
 }
 
+void GeomorphJoinsOnlyWhatMeetsAtOnePoint()
+{
+  // Each grid point bound for its quadrant's corner; a merge distance larger than the grid: by
+  // distance alone everything joins at t = 1, by partner only the points of one corner do, and
+  // the triangles left span three corners.
+  const Mesh detailed = Grid(4);
+  const Mesh coarse = Grid(1);
+  std::vector<std::int32_t> ancestor(25);
+  for (std::int32_t d = 0; d < 25; ++d)
+  {
+    const Vector3d p = detailed.View().Point(d);
+    ancestor[d] = (p.x() < 0.5 ? 0 : 1) + (p.y() < 0.5 ? 0 : 2);
+  }
+  const MorphPartners partners = meshsimp::PairAncestors(detailed.View(), coarse.View(), ancestor);
+  CHECK(MorphAt(detailed, partners, 1.0, 10.0).Morphed.NumberOfTriangles() == 0);
+  Frame frame;
+  frame.Points.resize(detailed.Points.size());
+  const meshsimp::MergeSchedule merges = meshsimp::ScheduleMerges(detailed.View(), partners, 10.0, {}, true);
+  meshsimp::Morph(detailed.View(), partners, merges, 1.0, frame.Points.data(), frame.Morphed);
+  CHECK(frame.Morphed.NumberOfGroups() == 4 && frame.Morphed.NumberOfTriangles() > 0);
+  for (std::int64_t t = 0; t < frame.Morphed.NumberOfTriangles(); ++t)
+  {
+    const std::int32_t* corner = frame.Morphed.Triangles.data() + 3 * t;
+    CHECK(ancestor[corner[0]] != ancestor[corner[1]] && ancestor[corner[1]] != ancestor[corner[2]] &&
+      ancestor[corner[2]] != ancestor[corner[0]]);
+  }
+}
+
 void ScheduleMergesAsADirectTest()
 {
   // Random partners on a bumpy grid: at every t the scheduled sets are those of joining every
@@ -351,6 +379,7 @@ int main()
     { "FrameAtZeroIsTheDetailedMesh", FrameAtZeroIsTheDetailedMesh },
     { "FrameAtOneIsOnTheCoarseVertices", FrameAtOneIsOnTheCoarseVertices },
     { "AncestorsGoWhereTheyWent", AncestorsGoWhereTheyWent },
+    { "GeomorphJoinsOnlyWhatMeetsAtOnePoint", GeomorphJoinsOnlyWhatMeetsAtOnePoint },
     { "ScheduleMergesAsADirectTest", ScheduleMergesAsADirectTest },
     { "SurfacePointsAreTheClosest", SurfacePointsAreTheClosest },
     { "SameFrameOnAnyThreads", SameFrameOnAnyThreads },
