@@ -136,18 +136,25 @@ void FrameAtOneIsOnTheCoarseVertices()
   }
 }
 
+/// Per point of a unit grid, the corner of Grid(1) in its quadrant.
+std::vector<std::int32_t> QuadrantCorners(const Mesh& grid)
+{
+  std::vector<std::int32_t> corner(grid.Points.size() / 3);
+  for (std::size_t d = 0; d < corner.size(); ++d)
+  {
+    const Vector3d p = grid.View().Point(static_cast<std::int64_t>(d));
+    corner[d] = (p.x() < 0.5 ? 0 : 1) + (p.y() < 0.5 ? 0 : 2);
+  }
+  return corner;
+}
+
 void AncestorsGoWhereTheyWent()
 {
   // Each detailed point of the grid to the coarse corner of its quadrant: its target is that
   // corner; an unknown ancestor leaves the point in place.
   const Mesh detailed = Grid(4);
   const Mesh coarse = Grid(1);
-  std::vector<std::int32_t> ancestor(25);
-  for (std::int32_t d = 0; d < 25; ++d)
-  {
-    const Vector3d p = detailed.View().Point(d);
-    ancestor[d] = (p.x() < 0.5 ? 0 : 1) + (p.y() < 0.5 ? 0 : 2);
-  }
+  std::vector<std::int32_t> ancestor = QuadrantCorners(detailed);
   ancestor[12] = -1;
   const MorphPartners partners = meshsimp::PairAncestors(detailed.View(), coarse.View(), ancestor);
   for (std::int32_t d = 0; d < 25; ++d)
@@ -165,12 +172,7 @@ void GeomorphJoinsOnlyWhatMeetsAtOnePoint()
   // the triangles left span three corners.
   const Mesh detailed = Grid(4);
   const Mesh coarse = Grid(1);
-  std::vector<std::int32_t> ancestor(25);
-  for (std::int32_t d = 0; d < 25; ++d)
-  {
-    const Vector3d p = detailed.View().Point(d);
-    ancestor[d] = (p.x() < 0.5 ? 0 : 1) + (p.y() < 0.5 ? 0 : 2);
-  }
+  const std::vector<std::int32_t> ancestor = QuadrantCorners(detailed);
   const MorphPartners partners = meshsimp::PairAncestors(detailed.View(), coarse.View(), ancestor);
   CHECK(MorphAt(detailed, partners, 1.0, 10.0).Morphed.NumberOfTriangles() == 0);
   Frame frame;
