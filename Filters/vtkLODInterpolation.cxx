@@ -140,57 +140,55 @@ std::vector<std::int32_t> NearestPoints(
 /// Per detailed point, the coarse point it became (-1: not known), from what the simplification
 /// that made the coarse surface recorded: its field data InputToOutputPointIds (this module's
 /// filters with GenerateOriginalIds: every input point's; where the detailed surface is itself
-/// a simplification of that input with vtkOriginalPointIds, two levels of one surface, through
-/// those), else its point data vtkOriginalPointIds (any filter that keeps them: each coarse
-/// point's own input point). False, with the problem, where the coarse surface has neither or
-/// they cannot be of this detailed one.
+/// such a level of the same input, its points through its own vtkOriginalPointIds), else its
+/// point data vtkOriginalPointIds (any filter that keeps them: each coarse point's own input
+/// point). False, with the problem, where the coarse surface has neither or they cannot be of
+/// this detailed one.
 bool Ancestors(vtkPolyData* detailed, vtkPolyData* coarse, std::vector<std::int32_t>& ancestor, std::string& problem)
 {
-  const vtkIdType detailedPoints = detailed->GetNumberOfPoints();
-  const vtkIdType coarsePoints = coarse->GetNumberOfPoints();
+  const vtkIdType detailedPoints = detailed->GetNumberOfPoints(), coarsePoints = coarse->GetNumberOfPoints();
   ancestor.assign(static_cast<std::size_t>(detailedPoints), -1);
+  const auto id = [](vtkDataArray* ids, vtkIdType i, vtkIdType count) {
+    const double value = ids->GetComponent(i, 0);
+    return value >= 0 && value < count ? static_cast<vtkIdType>(value) : vtkIdType{ -1 };
+  };
   vtkAbstractArray* record = Record(coarse).first;
   auto* values = vtkArrayDownCast<vtkDataArray>(record);
-  if (!values || values->GetNumberOfComponents() != 1)
+  const bool map = record && record == coarse->GetFieldData()->GetAbstractArray(vtkSimplification::InputToOutputPointIdsName);
+  if (!values || values->GetNumberOfComponents() != 1 || (!map && values->GetNumberOfTuples() != coarsePoints))
   {
     problem = "Exact needs the coarse surface to carry vtkOriginalPointIds (turn on Generate Original Ids in the filter "
               "that made it from the detailed surface)";
     return false;
   }
-  if (record == coarse->GetFieldData()->GetAbstractArray(vtkSimplification::InputToOutputPointIdsName))
+  if (!map)
   {
-    vtkDataArray* level = detailed->GetPointData()->GetArray("vtkOriginalPointIds");
-    if (values->GetNumberOfTuples() != detailedPoints && level && level->GetNumberOfComponents() == 1)
+    for (vtkIdType c = 0; c < coarsePoints; ++c)
     {
-      for (vtkIdType d = 0; d < detailedPoints; ++d) // both levels of one input
+      const vtkIdType d = id(values, c, detailedPoints);
+      if (d >= 0)
       {
-        const double input = level->GetComponent(d, 0);
-        const double c = input >= 0 && input < values->GetNumberOfTuples() ? values->GetComponent(static_cast<vtkIdType>(input), 0) : -1;
-        ancestor[d] = c >= 0 && c < coarsePoints ? static_cast<std::int32_t>(c) : -1;
+        ancestor[d] = static_cast<std::int32_t>(c);
       }
-      return true;
-    }
-    if (values->GetNumberOfTuples() != detailedPoints)
-    {
-      problem = std::string("the coarse surface's ") + vtkSimplification::InputToOutputPointIdsName + " lists " +
-        std::to_string(values->GetNumberOfTuples()) + " points, the detailed surface has " +
-        std::to_string(detailedPoints) + " (the coarse surface was made from another)";
-      return false;
-    }
-    for (vtkIdType d = 0; d < detailedPoints; ++d)
-    {
-      const double c = values->GetComponent(d, 0);
-      ancestor[d] = c >= 0 && c < coarsePoints ? static_cast<std::int32_t>(c) : -1;
     }
     return true;
   }
-  for (vtkIdType c = 0; c < coarsePoints; ++c)
+  // A level of the same input (its own map as long): through its points' input points.
+  vtkAbstractArray* own = detailed->GetFieldData()->GetAbstractArray(vtkSimplification::InputToOutputPointIdsName);
+  vtkDataArray* level = detailed->GetPointData()->GetArray("vtkOriginalPointIds");
+  const bool throughLevel = own && own->GetNumberOfTuples() == values->GetNumberOfTuples() && level &&
+    level->GetNumberOfComponents() == 1 && level->GetNumberOfTuples() == detailedPoints;
+  if (!throughLevel && values->GetNumberOfTuples() != detailedPoints)
   {
-    const double d = values->GetComponent(c, 0);
-    if (d >= 0 && d < detailedPoints)
-    {
-      ancestor[static_cast<std::size_t>(d)] = static_cast<std::int32_t>(c);
-    }
+    problem = std::string("the coarse surface's ") + vtkSimplification::InputToOutputPointIdsName + " lists " +
+      std::to_string(values->GetNumberOfTuples()) + " points, the detailed surface has " + std::to_string(detailedPoints) +
+      " (the coarse surface was made from another)";
+    return false;
+  }
+  for (vtkIdType d = 0; d < detailedPoints; ++d)
+  {
+    const vtkIdType input = throughLevel ? id(level, d, values->GetNumberOfTuples()) : d;
+    ancestor[d] = input >= 0 ? static_cast<std::int32_t>(id(values, input, coarsePoints)) : -1;
   }
   return true;
 }
@@ -274,7 +272,7 @@ struct MorphValues
           }
         }
       }
-    }, 10 * components * frame.GroupOffsets.back());
+    }, 10 * components * static_cast<std::int64_t>(frame.GroupOffsets.back()));
   }
 };
 
@@ -570,13 +568,16 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   const double t = this->InterpolationFromTime && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
     ? std::min(1.0, std::max(0.0, request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())))
     : this->Interpolation;
+  // The data the frame maps: without arrays shorter than their points or cells (a warning each).
+  const vtkSmartPointer<vtkPolyData> detailedData = vtkSimplification::WithUsableAttributes(this, detailed);
+  const vtkSmartPointer<vtkPolyData> coarseData = vtkSimplification::WithUsableAttributes(this, coarse);
   if (this->MorphInShader)
   {
-    WriteShaderInput(detailed, built.Partners, output);
+    WriteShaderInput(detailedData, built.Partners, output);
   }
   else
   {
-    WriteFrame(detailed, coarse, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame,
+    WriteFrame(detailedData, coarseData, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame,
       built.Arrays, built.Written, output);
   }
   output->GetFieldData()->PassData(detailed->GetFieldData());

@@ -336,7 +336,7 @@ void MapJoinedPoints(const meshsimp::TriangleMeshView& input, vtkIdTypeArray* ma
   for (vtkIdType p = 0; p < input.NumberOfPoints; ++p)
   {
     const Eigen::Vector3d x = input.Point(p);
-    if (map->GetValue(p) >= 0)
+    if (map->GetValue(p) >= 0 && x.allFinite()) // NaN would break the map's order
     {
       listed.emplace(std::array<double, 3>{ x[0], x[1], x[2] }, map->GetValue(p));
     }
@@ -344,7 +344,7 @@ void MapJoinedPoints(const meshsimp::TriangleMeshView& input, vtkIdTypeArray* ma
   for (const vtkIdType p : unlisted)
   {
     const Eigen::Vector3d x = input.Point(p);
-    const auto found = listed.find({ x[0], x[1], x[2] });
+    const auto found = x.allFinite() ? listed.find({ x[0], x[1], x[2] }) : listed.end();
     map->SetValue(p, found == listed.end() ? -1 : found->second);
   }
 }

@@ -37,9 +37,8 @@ std::string TooManyTriangles(std::int64_t count)
     std::to_string(meshsimp::MaximumTriangles) + " the filters take";
 }
 
-/// The input, or a shallow copy of it without the point and cell data arrays that are shorter
-/// than its points or cells (copying their values would read past their ends), each named in a
-/// warning. The input itself is never changed.
+} // namespace
+
 vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input)
 {
   vtkSmartPointer<vtkPolyData> usable = input;
@@ -74,6 +73,9 @@ vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyD
   }
   return usable;
 }
+
+namespace
+{
 
 /// The input's points as the view's float or double coordinates, or a copy in doubles.
 bool ViewPoints(vtkPolyData* input, TriangleInput& out, std::string& error)

@@ -71,6 +71,11 @@ constexpr const char* SurfaceCellIdsName = "vtkSimplificationSurfaceCellIds";
  */
 bool PrepareTriangles(vtkAlgorithm* filter, vtkSmartPointer<vtkPolyData>& input, TriangleInput& triangles);
 
+/// The input, or a shallow copy of it without the point and cell data arrays that are shorter
+/// than its points or cells (copying their values would read past their ends), each named in a
+/// warning. The input itself is never changed.
+vtkSmartPointer<vtkPolyData> WithUsableAttributes(vtkAlgorithm* filter, vtkPolyData* input);
+
 /**
  * The point array an algorithm selected as its input array `index` (SetInputArrayToProcess, or
  * the XML's array selection), or null: when none is selected (no name, or ParaView's "None"),

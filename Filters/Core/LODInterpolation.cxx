@@ -215,7 +215,7 @@ void PlaceGroups(const TriangleMeshView& detailed, double* points, const Executi
         frame.Displacement[d] = (at - detailed.Point(d)).norm();
       }
     }
-  }, 30 * frame.GroupOffsets.back());
+  }, 30 * static_cast<std::int64_t>(frame.GroupOffsets.back()));
 }
 
 /// The detailed triangles on the roots, those with three distinct corners, in their order: each
@@ -388,8 +388,12 @@ MorphPartners PairSurfacePoints(const TriangleMeshView& detailed, const Triangle
     for (std::int64_t i = begin; i < end; ++i)
     {
       const std::int64_t d = listed.empty() ? i : listed[i];
+      if (!InRange(d, detailed.NumberOfPoints))
+      {
+        continue;
+      }
       const Vec3 x = detailed.Point(d);
-      const Nearest near = InRange(d, detailed.NumberOfPoints) && x.allFinite() ? surface.Exact(x) : Nearest();
+      const Nearest near = x.allFinite() ? surface.Exact(x) : Nearest();
       if (near.Triangle < 0)
       {
         continue;

@@ -56,7 +56,8 @@ MorphPartners PairNearestVertices(const TriangleMeshView& detailed, const Triang
  * closest point of the coarse surface (an exact search on a grid of the coarse triangles), with
  * the corners of the coarse triangle it lies on and its barycentric weights there. A detailed
  * point goes to a point near it rather than to a far vertex, so thin parts fold far less. The
- * points not listed, and any without a usable coarse triangle, stay where they are.
+ * points not listed, and any without a usable coarse triangle, stay where they are; listed ids
+ * must be distinct (ids out of range are skipped).
  */
 MorphPartners PairSurfacePoints(const TriangleMeshView& detailed, const TriangleMeshView& coarse,
   const std::vector<std::int32_t>& listed = {}, const ExecutionContext& context = {});

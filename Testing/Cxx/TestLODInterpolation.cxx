@@ -237,16 +237,21 @@ void TestExact()
     morph->Update();
     CHECK(Distance(morph->GetOutput(), coarse).first < 1e-9 && morph->GetCorrespondenceBuilds() == 2);
   }
-  // Two levels of one sphere: the detailed level's vtkOriginalPointIds lead into the coarse
-  // level's record, and the geomorph ends on exactly the coarse level's triangles.
-  vtkNew<vtkLODInterpolation> levels;
-  levels->SetInputData(0, Recorded<vtkProgressiveMesh>(detailed, 0.5));
-  levels->SetCoarseData(Recorded<vtkProgressiveMesh>(detailed, 0.95));
-  levels->SetCorrespondence(vtkLODInterpolation::EXACT);
-  levels->SetMergeDistance(0.05);
-  levels->SetInterpolation(1.0);
-  levels->Update();
-  CHECK(levels->GetOutput()->GetNumberOfPolys() == vtkPolyData::SafeDownCast(levels->GetInputDataObject(1, 0))->GetNumberOfPolys());
+  // Two levels of one sphere, the finer one also with all its points (in the sequence's order,
+  // not the input's): the detailed level's vtkOriginalPointIds lead into the coarse level's
+  // record, and the geomorph ends on exactly the coarse level's triangles.
+  for (const double finer : { 0.5, 0.0 })
+  {
+    vtkNew<vtkLODInterpolation> levels;
+    levels->SetInputData(0, Recorded<vtkProgressiveMesh>(detailed, finer));
+    levels->SetCoarseData(Recorded<vtkProgressiveMesh>(detailed, 0.95));
+    levels->SetCorrespondence(vtkLODInterpolation::EXACT);
+    levels->SetMergeDistance(0.05);
+    levels->SetInterpolation(1.0);
+    levels->Update();
+    CHECK(levels->GetOutput()->GetNumberOfPolys() ==
+      vtkPolyData::SafeDownCast(levels->GetInputDataObject(1, 0))->GetNumberOfPolys());
+  }
 }
 
 void TestMorphInShader()
@@ -337,7 +342,7 @@ void TestBadInput()
 {
   // An empty coarse surface, one of points alone: one error of the filter's (none of the
   // executive's) that says which input has no triangles. No coarse input at all: VTK's own.
-  // Mismatched arrays pass as they are.
+  // Mismatched arrays pass as they are; short ones are left out.
   vtkSmartPointer<vtkPolyData> detailed, coarse;
   SphereAndCoarse(detailed, coarse);
   vtkNew<vtkPolyData> empty;
@@ -366,6 +371,19 @@ void TestBadInput()
   passing->Update();
   vtkDataArray* height = passing->GetOutput()->GetPointData()->GetArray("Height");
   CHECK(height && height->GetNumberOfComponents() == 1 && height->GetTuple1(7) == detailed->GetPoint(7)[2]);
+  // A coarse array shorter than its points: left out with a warning, the frame made.
+  vtkNew<vtkDoubleArray> stub;
+  stub->SetName("Height");
+  stub->SetNumberOfValues(3);
+  vtkNew<vtkPolyData> shortArray;
+  shortArray->ShallowCopy(coarse);
+  shortArray->GetPointData()->AddArray(stub);
+  vtkNew<meshsimp_test::MessageLog> warnings;
+  passing->AddObserver(vtkCommand::WarningEvent, warnings);
+  passing->SetCoarseData(shortArray);
+  passing->Update();
+  CHECK(warnings->Warnings.size() == 1 && meshsimp_test::Mentions(warnings->Warnings[0], "Not passing point data array 'Height'"));
+  CHECK(passing->GetOutput()->GetNumberOfPoints() == detailed->GetNumberOfPoints());
   // Exact without a record, or with another surface's: one error that says why.
   const std::pair<vtkSmartPointer<vtkPolyData>, const char*> unrecorded[] = {
     { coarse, "Exact needs the coarse surface to carry vtkOriginalPointIds" },
