@@ -22,6 +22,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkProgressiveMesh.h"
 #include "vtkStaticPointLocator.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTypeInt32Array.h"
@@ -423,10 +424,40 @@ vtkLODInterpolation::vtkLODInterpolation()
 
 vtkLODInterpolation::~vtkLODInterpolation() = default;
 
-int vtkLODInterpolation::FillInputPortInformation(int, vtkInformation* info)
+int vtkLODInterpolation::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // a Progressive Mesh sequence alone
+  }
   return 1;
+}
+
+bool vtkLODInterpolation::Levels(vtkPolyData* sequence, vtkPolyData*& detailed, vtkPolyData*& coarse)
+{
+  if (!sequence->GetPointData()->GetArray("Parent") || !sequence->GetCellData()->GetArray("RemovedAt"))
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkProgressiveMesh>* levels[2] = { &this->DetailedLevel, &this->CoarseLevel };
+  const double reductions[2] = { this->DetailedReduction, this->CoarseReduction };
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkSmartPointer<vtkProgressiveMesh>& level = *levels[i];
+    level = level ? level : vtkSmartPointer<vtkProgressiveMesh>::New();
+    if (level->GetInput() != sequence)
+    {
+      level->SetInputData(sequence);
+    }
+    level->SetTargetReduction(reductions[i]);
+    level->GenerateOriginalIdsOn();
+    level->ComputeDeviationOff();
+    level->Update();
+  }
+  detailed = this->DetailedLevel->GetOutput();
+  coarse = this->CoarseLevel->GetOutput();
+  return true;
 }
 
 bool vtkLODInterpolation::MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context)
@@ -544,10 +575,10 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   vtkPolyData* coarse = vtkPolyData::GetData(inputs[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputs);
   output->Initialize(); // empty unless a frame is made
-  if (!detailed || !coarse)
+  if (!detailed || (!coarse && !this->Levels(detailed, detailed, coarse)))
   {
     vtkErrorMacro("Cannot morph: LoD Interpolation needs two surfaces, the detailed one (input 0) and the coarse one "
-                  "(input 1).");
+                  "(input 1), or a Progressive Mesh sequence alone (input 0).");
     return 1;
   }
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
@@ -596,5 +627,7 @@ void vtkLODInterpolation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Correspondence: " << this->Correspondence << "\n";
   os << indent << "InterpolationFromTime: " << this->InterpolationFromTime << "\n";
   os << indent << "MorphInShader: " << this->MorphInShader << "\n";
+  os << indent << "DetailedReduction: " << this->DetailedReduction << "\n";
+  os << indent << "CoarseReduction: " << this->CoarseReduction << "\n";
   os << indent << "CorrespondenceBuilds: " << this->CorrespondenceBuilds << "\n";
 }

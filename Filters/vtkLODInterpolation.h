@@ -5,7 +5,8 @@
  * simplification algorithm for colored or textured polygonal models", §5.
  *
  * Input 0 is the detailed surface, input 1 the coarse one; any two surfaces (outputs of this
- * module's filters, of ParaView's Decimate, two files). Every detailed point gets a partner on
+ * module's filters, of ParaView's Decimate, two files). Or input 0 alone, a Progressive Mesh
+ * sequence: the surfaces are two of its levels (DetailedReduction, CoarseReduction). Every detailed point gets a partner on
  * the coarse surface once (Correspondence): NEAREST_VERTEX, the paper's, pairs every coarse
  * point with its nearest detailed point and every other detailed point with its nearest coarse
  * point; NEAREST_SURFACE_POINT (default) sends every detailed point to the closest point of the
@@ -43,8 +44,11 @@
 
 #include "MeshSimplificationFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for the levels' filters
 
 #include <memory>
+
+class vtkProgressiveMesh;
 
 namespace meshsimp
 {
@@ -117,6 +121,19 @@ public:
   vtkBooleanMacro(MorphInShader, bool);
   ///@}
 
+  ///@{
+  /**
+   * With one input, a Progressive Mesh sequence (vtkProgressiveMesh's second output, or its
+   * file): the detailed and the coarse surfaces are its levels at these reductions (defaults 0,
+   * every point, and 0.9), each recording what its points became, so that Exact is a geomorph
+   * between them. Ignored with two inputs.
+   */
+  vtkSetClampMacro(DetailedReduction, double, 0.0, 1.0);
+  vtkGetMacro(DetailedReduction, double);
+  vtkSetClampMacro(CoarseReduction, double, 0.0, 1.0);
+  vtkGetMacro(CoarseReduction, double);
+  ///@}
+
   /// The coarse surface (input 1).
   void SetCoarseConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetCoarseData(vtkDataObject* data) { this->SetInputData(1, data); }
@@ -140,15 +157,21 @@ private:
   bool Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context);
   /// The partners of the Correspondence for the triangles Pair extracted.
   bool MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context);
+  /// With a sequence alone: its two levels (made by filters kept here, which extract them from
+  /// the sequence without building it again).
+  bool Levels(vtkPolyData* sequence, vtkPolyData*& detailed, vtkPolyData*& coarse);
 
   double Interpolation = 0.0;
   double MergeDistance = 0.001;
   int Correspondence = NEAREST_SURFACE_POINT;
   bool InterpolationFromTime = false;
   bool MorphInShader = false;
+  double DetailedReduction = 0.0;
+  double CoarseReduction = 0.9;
   int CorrespondenceBuilds = 0;
   struct Cache;
   std::unique_ptr<Cache> Built; // the correspondence and what it was built from
+  vtkSmartPointer<vtkProgressiveMesh> DetailedLevel, CoarseLevel; // with a sequence alone
 };
 
 #endif

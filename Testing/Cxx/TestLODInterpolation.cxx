@@ -3,8 +3,9 @@
 // sphere exactly; at t = 1 every point lies on the coarse surface; the distance to the detailed
 // surface never falls as t grows; no triangle turns over; a point array of both inputs morphs;
 // the correspondence is built once for 11 frames; the geomorph of a recorded simplification
-// ends on the coarse triangles; the GPU output carries the places at t = 1; the time can set
-// the frame; bad inputs give one-line errors. With -V, the
+// ends on the coarse triangles, also between two levels of a Progressive Mesh sequence given
+// alone; the GPU output carries the places at t = 1; the time can set the frame; bad inputs give
+// one-line errors. With -V, the
 // cow at t = 0.5 against its baseline image.
 #include "vtkAppearancePreservingCollapse.h"
 #include "vtkLODInterpolation.h"
@@ -254,6 +255,35 @@ void TestExact()
   }
 }
 
+void TestSequenceAlone()
+{
+  // A Progressive Mesh sequence alone: its levels at 0 and 95 % are the two surfaces, and the
+  // geomorph goes from all the sphere's triangles to exactly the 95 % level's.
+  vtkSmartPointer<vtkPolyData> detailed, unused;
+  SphereAndCoarse(detailed, unused);
+  vtkNew<vtkProgressiveMesh> simplify;
+  simplify->SetInputData(detailed);
+  simplify->SetTargetReduction(0.95);
+  simplify->Update();
+  vtkNew<vtkLODInterpolation> morph;
+  morph->SetInputData(0, simplify->GetSequenceOutput());
+  morph->SetCoarseReduction(0.95);
+  morph->SetCorrespondence(vtkLODInterpolation::EXACT);
+  morph->Update();
+  CHECK(morph->GetOutput()->GetNumberOfPolys() == detailed->GetNumberOfPolys());
+  morph->SetInterpolation(1.0);
+  morph->Update();
+  CHECK(morph->GetOutput()->GetNumberOfPolys() == simplify->GetOutput()->GetNumberOfPolys() &&
+    morph->GetCorrespondenceBuilds() == 1);
+  // A surface alone that is no sequence: the one-line error.
+  vtkNew<meshsimp_test::MessageLog> log;
+  vtkNew<vtkLODInterpolation> alone;
+  alone->AddObserver(vtkCommand::ErrorEvent, log);
+  alone->SetInputData(0, detailed);
+  alone->Update();
+  CHECK(log->Errors.size() == 1 && meshsimp_test::Mentions(log->Errors[0], "or a Progressive Mesh sequence alone"));
+}
+
 void TestMorphInShader()
 {
   // For the GPU: the detailed surface as it is, with each point's place at t = 1 as its
@@ -341,7 +371,7 @@ std::vector<std::string> MorphErrors(vtkPolyData* detailed, vtkPolyData* coarse)
 void TestBadInput()
 {
   // An empty coarse surface, one of points alone: one error of the filter's (none of the
-  // executive's) that says which input has no triangles. No coarse input at all: VTK's own.
+  // executive's) that says which input has no triangles. No coarse input, and no sequence: one.
   // Mismatched arrays pass as they are; short ones are left out.
   vtkSmartPointer<vtkPolyData> detailed, coarse;
   SphereAndCoarse(detailed, coarse);
@@ -353,7 +383,7 @@ void TestBadInput()
     const std::vector<std::string> errors = MorphErrors(detailed, bad);
     CHECK(errors.size() == 1 && meshsimp_test::Mentions(errors[0], "Cannot morph: the coarse surface has no triangles."));
   }
-  CHECK(!MorphErrors(detailed, nullptr).empty());
+  CHECK(MorphErrors(detailed, nullptr).size() == 1); // a surface alone that is no sequence
   // A coarse array of the detailed one's name but other components: the detailed values pass.
   vtkNew<vtkDoubleArray> pairs;
   pairs->SetName("Height");
@@ -423,6 +453,7 @@ int TestLODInterpolation(int argc, char* argv[])
   }
   TestMorph();
   TestExact();
+  TestSequenceAlone();
   TestMorphInShader();
   TestTimeDrivesTheMorph();
   TestBadInput();

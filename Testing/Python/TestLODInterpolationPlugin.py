@@ -3,7 +3,7 @@
 Its defaults; t = 0 gives the cow's triangles; ten frames of an animated Interpolation build the
 correspondence once; at t = 1 the points stand on the coarse surface; the paper's nearest
 vertices at t = 1 leave about the coarse surface's triangles; the time drives the frame; Exact
-ends on the recorded coarse triangles."""
+ends on the recorded coarse triangles, also from Progressive Mesh's sequence alone."""
 import os
 
 from paraview import servermanager
@@ -54,5 +54,11 @@ geomorph = LoDInterpolation(Detailed=cow, Coarse=recorded, Correspondence="Exact
 geomorph.UpdatePipeline()
 check(geomorph.GetDataInformation().GetNumberOfCells() == recorded.GetDataInformation().GetNumberOfCells(),
       "Exact at t = 1: the coarse triangles")
+# Progressive Mesh's sequence alone: its levels at 0 and 95 % are the two surfaces.
+levels = LoDInterpolation(Detailed=OutputPort(recorded, 1), CoarseReduction=0.95, Correspondence="Exact",
+                          Interpolation=1.0)
+levels.UpdatePipeline()
+check(levels.GetDataInformation().GetNumberOfCells() == recorded.GetDataInformation().GetNumberOfCells(),
+      "a sequence alone, Exact at t = 1: the 95 % level's triangles")
 
 finish()
