@@ -126,13 +126,20 @@ vtkIdType Folds(vtkPolyData* output, vtkPolyData* detailed, vtkDataArray* ancest
   return folds;
 }
 
+/// A morph of detailed towards coarse.
+vtkSmartPointer<vtkLODInterpolation> MorphOf(vtkPolyData* detailed, vtkPolyData* coarse)
+{
+  auto morph = vtkSmartPointer<vtkLODInterpolation>::New();
+  morph->SetInputData(0, detailed);
+  morph->SetCoarseData(coarse);
+  return morph;
+}
+
 void TestMorph()
 {
   vtkSmartPointer<vtkPolyData> detailed, coarse;
   SphereAndCoarse(detailed, coarse);
-  vtkNew<vtkLODInterpolation> morph;
-  morph->SetInputData(0, detailed);
-  morph->SetCoarseData(coarse);
+  const vtkSmartPointer<vtkLODInterpolation> morph = MorphOf(detailed, coarse);
   morph->SetMergeDistance(0.0);
   double previous = -1.0;
   for (int step = 0; step <= 10; ++step)
@@ -215,9 +222,7 @@ void TestExact()
     vtkSmartPointer<vtkPolyData> coarse =
       progressive ? Recorded<vtkProgressiveMesh>(detailed) : Recorded<vtkAppearancePreservingCollapse>(detailed);
     CHECK(coarse->GetFieldData()->GetArray("InputToOutputPointIds") != nullptr);
-    vtkNew<vtkLODInterpolation> morph;
-    morph->SetInputData(0, detailed);
-    morph->SetCoarseData(coarse);
+    const vtkSmartPointer<vtkLODInterpolation> morph = MorphOf(detailed, coarse);
     morph->SetCorrespondence(vtkLODInterpolation::EXACT);
     morph->SetMergeDistance(0.0);
     for (const double t : { 0.25, 0.5, 0.75 })
@@ -290,9 +295,7 @@ void TestMorphInShader()
   // tangents, on the same correspondence.
   vtkSmartPointer<vtkPolyData> detailed, coarse;
   SphereAndCoarse(detailed, coarse);
-  vtkNew<vtkLODInterpolation> morph;
-  morph->SetInputData(0, detailed);
-  morph->SetCoarseData(coarse);
+  const vtkSmartPointer<vtkLODInterpolation> morph = MorphOf(detailed, coarse);
   morph->SetMergeDistance(0.0);
   morph->SetInterpolation(1.0);
   morph->Update();
@@ -319,14 +322,10 @@ void TestTimeDrivesTheMorph()
   // for sets the frame: time 0.35 gives Interpolation 0.35's points, on one correspondence.
   vtkSmartPointer<vtkPolyData> detailed, coarse;
   SphereAndCoarse(detailed, coarse);
-  vtkNew<vtkLODInterpolation> byValue;
-  byValue->SetInputData(0, detailed);
-  byValue->SetCoarseData(coarse);
+  const vtkSmartPointer<vtkLODInterpolation> byValue = MorphOf(detailed, coarse);
   byValue->SetInterpolation(0.35);
   byValue->Update();
-  vtkNew<vtkLODInterpolation> byTime;
-  byTime->SetInputData(0, detailed);
-  byTime->SetCoarseData(coarse);
+  const vtkSmartPointer<vtkLODInterpolation> byTime = MorphOf(detailed, coarse);
   byTime->InterpolationFromTimeOn();
   byTime->UpdateInformation();
   vtkInformation* info = byTime->GetOutputInformation(0);
@@ -402,12 +401,12 @@ void TestBadInput()
   vtkDataArray* height = passing->GetOutput()->GetPointData()->GetArray("Height");
   CHECK(height && height->GetNumberOfComponents() == 1 && height->GetTuple1(7) == detailed->GetPoint(7)[2]);
   // A coarse array shorter than its points: left out with a warning, the frame made.
-  vtkNew<vtkDoubleArray> stub;
-  stub->SetName("Height");
-  stub->SetNumberOfValues(3);
+  vtkNew<vtkDoubleArray> shortHeight;
+  shortHeight->SetName("Height");
+  shortHeight->SetNumberOfValues(3);
   vtkNew<vtkPolyData> shortArray;
   shortArray->ShallowCopy(coarse);
-  shortArray->GetPointData()->AddArray(stub);
+  shortArray->GetPointData()->AddArray(shortHeight);
   vtkNew<meshsimp_test::MessageLog> warnings;
   passing->AddObserver(vtkCommand::WarningEvent, warnings);
   passing->SetCoarseData(shortArray);
