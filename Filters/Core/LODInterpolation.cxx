@@ -289,49 +289,6 @@ std::vector<ScheduledEdge> SpanningEdges(const std::vector<ScheduledEdge>& edges
   }
   return spanning;
 }
-/// The coarse mesh's triangles with distinct corners in range, for the nearest-triangle search;
-/// triangle: the coarse id of each.
-Surface SearchedSurface(const TriangleMeshView& coarse, std::vector<std::int32_t>& triangle)
-{
-  std::vector<Vec3> points(static_cast<std::size_t>(coarse.NumberOfPoints));
-  for (std::int64_t p = 0; p < coarse.NumberOfPoints; ++p)
-  {
-    points[p] = coarse.Point(p);
-  }
-  std::vector<std::int32_t> corners;
-  for (std::int64_t t = 0; t < coarse.NumberOfTriangles; ++t)
-  {
-    const std::int64_t ids[3] = { coarse.Id(3 * t), coarse.Id(3 * t + 1), coarse.Id(3 * t + 2) };
-    bool usable = ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0];
-    for (int k = 0; k < 3 && usable; ++k)
-    {
-      usable = InRange(ids[k], coarse.NumberOfPoints) && points[ids[k]].allFinite();
-    }
-    if (usable)
-    {
-      corners.insert(corners.end(), { static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
-                                      static_cast<std::int32_t>(ids[2]) });
-      triangle.push_back(static_cast<std::int32_t>(t));
-    }
-  }
-  return Surface(std::move(points), std::move(corners));
-}
-
-/// The barycentric weights of x (on the triangle a, b, c) in it, clamped to the triangle; a
-/// triangle without area: its centre.
-Vec3 Barycentric(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  const Vec3 u = b - a, v = c - a, w = x - a;
-  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
-  const double det = uu * vv - uv * uv;
-  if (!(det > 0.0))
-  {
-    return Vec3::Constant(1.0 / 3.0);
-  }
-  const double beta = (vv * wu - uv * wv) / det, gamma = (uu * wv - uv * wu) / det;
-  const Vec3 weights = Vec3(1.0 - beta - gamma, beta, gamma).cwiseMax(0.0);
-  return weights / weights.sum();
-}
 } // namespace
 
 MorphPartners PairNearestVertices(const TriangleMeshView& detailed, const TriangleMeshView& coarse,
@@ -378,7 +335,7 @@ MorphPartners PairSurfacePoints(const TriangleMeshView& detailed, const Triangle
 {
   MorphPartners partners = OwnPartners(detailed);
   std::vector<std::int32_t> triangle; // per triangle of the search, its coarse triangle
-  const Surface surface = SearchedSurface(coarse, triangle);
+  const Surface surface = UsableSurface(coarse, triangle);
   if (surface.NumberOfTriangles() == 0)
   {
     return partners;

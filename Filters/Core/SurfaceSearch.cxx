@@ -220,6 +220,127 @@ Nearest TriangleGrid::Find(const Surface& surface, const Vec3& x) const
   }
 }
 
+/**
+ * Nearest-triangle queries that start from a bound: a tree of bounding boxes over the
+ * triangles (each node splits its triangles at the median of their centres along its longest
+ * axis, down to leaves of a few), searched nearer child first and skipping every box farther
+ * than the nearest found so far. Nodes are stored flat, a node's two children next to each
+ * other.
+ */
+class TriangleTree
+{
+public:
+  explicit TriangleTree(const Surface& surface);
+  void Nearer(const Surface& surface, const Vec3& x, Nearest& best) const;
+
+private:
+  static constexpr std::int32_t LeafSize = 4;
+  struct Node
+  {
+    Eigen::AlignedBox3d Box;
+    std::int32_t First = 0; // a leaf's first triangle in Order, or an inner node's first child
+    std::int32_t Count = 0; // a leaf's triangles; 0 for an inner node
+  };
+  std::vector<Node> Nodes;
+  std::vector<std::int32_t> Order;
+};
+
+TriangleTree::TriangleTree(const Surface& surface)
+  : Order(static_cast<std::size_t>(surface.NumberOfTriangles()))
+{
+  std::iota(this->Order.begin(), this->Order.end(), 0);
+  if (this->Order.empty())
+  {
+    return;
+  }
+  std::vector<Vec3> centres(this->Order.size());
+  for (std::size_t t = 0; t < centres.size(); ++t)
+  {
+    const auto triangle = static_cast<std::int32_t>(t);
+    centres[t] = (surface.Corner(triangle, 0) + surface.Corner(triangle, 1) + surface.Corner(triangle, 2)) / 3.0;
+  }
+  // Each pending node with its range of Order, split until its range is a leaf's.
+  struct Pending
+  {
+    std::int32_t Node, Begin, End;
+  };
+  this->Nodes.emplace_back();
+  std::vector<Pending> pending = { { 0, 0, static_cast<std::int32_t>(this->Order.size()) } };
+  while (!pending.empty())
+  {
+    const Pending range = pending.back();
+    pending.pop_back();
+    if (range.End - range.Begin <= LeafSize)
+    {
+      this->Nodes[range.Node].First = range.Begin;
+      this->Nodes[range.Node].Count = range.End - range.Begin;
+      continue;
+    }
+    Eigen::AlignedBox3d middles;
+    for (std::int32_t i = range.Begin; i < range.End; ++i)
+    {
+      middles.extend(centres[this->Order[i]]);
+    }
+    int axis = 0;
+    middles.sizes().maxCoeff(&axis);
+    const std::int32_t middle = range.Begin + (range.End - range.Begin) / 2;
+    std::nth_element(this->Order.begin() + range.Begin, this->Order.begin() + middle, this->Order.begin() + range.End,
+      [&](std::int32_t a, std::int32_t b) { return centres[a][axis] < centres[b][axis] || (centres[a][axis] == centres[b][axis] && a < b); });
+    const auto first = static_cast<std::int32_t>(this->Nodes.size());
+    this->Nodes[range.Node].First = first;
+    this->Nodes.resize(this->Nodes.size() + 2);
+    pending.push_back({ first, range.Begin, middle });
+    pending.push_back({ first + 1, middle, range.End });
+  }
+  // The boxes, bottom up: children come after their parent.
+  for (auto node = this->Nodes.rbegin(); node != this->Nodes.rend(); ++node)
+  {
+    if (node->Count > 0)
+    {
+      for (std::int32_t i = node->First; i < node->First + node->Count; ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          node->Box.extend(surface.Corner(this->Order[i], k));
+        }
+      }
+    }
+    else
+    {
+      node->Box = this->Nodes[node->First].Box.merged(this->Nodes[node->First + 1].Box);
+    }
+  }
+}
+
+void TriangleTree::Nearer(const Surface& surface, const Vec3& x, Nearest& best) const
+{
+  if (this->Nodes.empty())
+  {
+    return;
+  }
+  std::int32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    if (node.Box.squaredExteriorDistance(x) >= best.Distance * best.Distance)
+    {
+      continue;
+    }
+    if (node.Count > 0)
+    {
+      surface.Among(x, this->Order.data() + node.First, this->Order.data() + node.First + node.Count, best);
+      continue;
+    }
+    // The nearer child is searched first (pushed last).
+    const double near[2] = { this->Nodes[node.First].Box.squaredExteriorDistance(x),
+      this->Nodes[node.First + 1].Box.squaredExteriorDistance(x) };
+    const int nearer = near[1] < near[0] ? 1 : 0;
+    stack[top++] = node.First + 1 - nearer;
+    stack[top++] = node.First + nearer;
+  }
+}
 
 Vec3 ClosestPointOnTriangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
 {
@@ -276,6 +397,13 @@ double PointTriangleDistance(const Vec3& x, const Vec3& a, const Vec3& b, const 
   return (x - ClosestPointOnTriangle(x, a, b, c)).norm();
 }
 
+Nearest Surface::Nearer(const Vec3& x, Nearest guess) const
+{
+  std::call_once(this->TreeMade, [this] { this->Tree = std::make_unique<TriangleTree>(*this); });
+  this->Tree->Nearer(*this, x, guess);
+  return guess;
+}
+
 Surface::Surface(std::vector<Vec3> points, std::vector<std::int32_t> corners)
   : Points(std::move(points))
   , Corners(std::move(corners))
@@ -289,6 +417,46 @@ Nearest Surface::Exact(const Vec3& x) const
 {
   std::call_once(this->GridMade, [this] { this->Grid = std::make_unique<TriangleGrid>(*this); });
   return this->Grid->Find(*this, x);
+}
+
+Surface UsableSurface(const TriangleMeshView& mesh, std::vector<std::int32_t>& triangle)
+{
+  std::vector<Vec3> points(static_cast<std::size_t>(mesh.NumberOfPoints));
+  for (std::int64_t p = 0; p < mesh.NumberOfPoints; ++p)
+  {
+    points[p] = mesh.Point(p);
+  }
+  std::vector<std::int32_t> corners;
+  for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
+  {
+    const std::int64_t ids[3] = { mesh.Id(3 * t), mesh.Id(3 * t + 1), mesh.Id(3 * t + 2) };
+    bool usable = ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0];
+    for (int k = 0; k < 3 && usable; ++k)
+    {
+      usable = ids[k] >= 0 && ids[k] < mesh.NumberOfPoints && points[ids[k]].allFinite();
+    }
+    if (usable)
+    {
+      corners.insert(corners.end(), { static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
+                                      static_cast<std::int32_t>(ids[2]) });
+      triangle.push_back(static_cast<std::int32_t>(t));
+    }
+  }
+  return Surface(std::move(points), std::move(corners));
+}
+
+Vec3 Barycentric(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 u = b - a, v = c - a, w = x - a;
+  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
+  const double det = uu * vv - uv * uv;
+  if (!(det > 0.0))
+  {
+    return Vec3::Constant(1.0 / 3.0);
+  }
+  const double beta = (vv * wu - uv * wv) / det, gamma = (uu * wv - uv * wu) / det;
+  const Vec3 weights = Vec3(1.0 - beta - gamma, beta, gamma).cwiseMax(0.0);
+  return weights / weights.sum();
 }
 
 } // namespace meshsimp

@@ -3,10 +3,13 @@
  * @file SurfaceSearch.h
  * @brief The nearest triangle of a surface to a point: walks over the surface from a guess, and
  * an exact search on a grid of the triangles. Deviation measures with it, LoD Interpolation
- * sends points to the closest point of the coarse surface with it.
+ * sends points to the closest point of the coarse surface with it, Texture Baking finds the
+ * point of the original that each texel shows.
  */
 #ifndef MeshSimplification_SurfaceSearch_h
 #define MeshSimplification_SurfaceSearch_h
+
+#include "TriangleMesh.h"
 
 #include <Eigen/Core>
 
@@ -68,6 +71,7 @@ struct Stars
 };
 
 class TriangleGrid;
+class TriangleTree;
 
 /// A triangle surface for nearest-triangle queries: its points, corners, the triangles around
 /// each point, and an exact search made when first asked for (from any thread).
@@ -119,15 +123,30 @@ public:
   }
   /// The nearest triangle, exactly (the grid made at the first call, from any thread).
   Nearest Exact(const Eigen::Vector3d& x) const;
+  /// The nearest triangle, exactly, if one is nearer than guess (else guess): a search of a
+  /// tree of the triangles' bounding boxes (made at the first call, from any thread) that skips
+  /// every box farther than the nearest found so far, so that a close guess (where a walk
+  /// ended) leaves it little to visit; and the nearest within guess.Distance only, so that a
+  /// guess of that distance and no triangle bounds the search.
+  Nearest Nearer(const Eigen::Vector3d& x, Nearest guess) const;
 
   const std::vector<Eigen::Vector3d> Points;
   const std::vector<std::int32_t> Corners;
   const Stars Around;
 
 private:
-  mutable std::once_flag GridMade;
+  mutable std::once_flag GridMade, TreeMade;
   mutable std::unique_ptr<TriangleGrid> Grid;
+  mutable std::unique_ptr<TriangleTree> Tree;
 };
+
+/// The triangles of a mesh with distinct, finite corners in range, for nearest-triangle
+/// searches; triangle receives the mesh's id of each.
+Surface UsableSurface(const TriangleMeshView& mesh, std::vector<std::int32_t>& triangle);
+
+/// The barycentric weights of x (on the triangle a, b, c) in it, clamped to the triangle; a
+/// triangle without area: its centre.
+Eigen::Vector3d Barycentric(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
 } // namespace meshsimp
 
