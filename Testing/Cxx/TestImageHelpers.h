@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The baseline-image scenes of the filter tests: the cow in flat shading with edges, and the
-// Jacksboro terrain coloured by its carried elevation array.
+// Jacksboro terrain coloured by its carried elevation array (or by a texture, where one is given).
 #ifndef MeshSimplification_TestImageHelpers_h
 #define MeshSimplification_TestImageHelpers_h
 
@@ -14,6 +14,7 @@
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkTexture.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -22,7 +23,7 @@ namespace meshsimp_test
 {
 /// Renders a filter's output in one of the two scenes and compares it with the baseline given
 /// by -V in argv; returns a process exit code.
-inline int CompareWithBaseline(vtkPolyData* output, bool terrain, int argc, char* argv[])
+inline int CompareWithBaseline(vtkPolyData* output, bool terrain, int argc, char* argv[], vtkTexture* texture = nullptr)
 {
   if (output->GetNumberOfPolys() == 0)
   {
@@ -34,7 +35,12 @@ inline int CompareWithBaseline(vtkPolyData* output, bool terrain, int argc, char
   mapper->SetInputData(output);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  if (terrain)
+  if (texture)
+  {
+    mapper->ScalarVisibilityOff();
+    actor->SetTexture(texture);
+  }
+  else if (terrain)
   {
     mapper->SetScalarModeToUsePointFieldData();
     mapper->SelectColorArray("elevation");

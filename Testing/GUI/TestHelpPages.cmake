@@ -3,7 +3,7 @@
 # its encoding, says that the array selections are optional, and is ASCII like the XML it is
 # made from (5.11's help browser reads undeclared pages as Latin-1: "Delta" came out as "ÎV");
 # the XML cites the papers by authors and title, not by the project's file numbers. The plugin's
-# other filters (OTHERS: LoD Interpolation), which do not derive from the base, have their
+# other filters (OTHERS: LoD Interpolation, Texture Baking), which do not derive from the base, have their
 # pages too, declared and ASCII.
 #   cmake -DHELP=<build>/Plugin/paraview_help -DXML=<source>/Plugin -DFILTERS=<names> -DOTHERS=<names>
 #     -P TestHelpPages.cmake
@@ -40,7 +40,7 @@ if (contents MATCHES "meshsimplification_ubase|internal_u")
   message(FATAL_ERROR "the help contents list an internal proxy: ${contents}")
 endif ()
 foreach (title IN ITEMS "Octree Vertex Clustering" "Parallel Decimation" "Progressive Mesh"
-                        "Volume Triangle Collapse" "LoD Interpolation" "OFF Reader" "OFF Writer")
+                        "Volume Triangle Collapse" "LoD Interpolation" "Texture Baking" "OFF Reader" "OFF Writer")
   if (NOT contents MATCHES "<section title=\"${title}\"")
     message(FATAL_ERROR "the help contents lack ${title}")
   endif ()

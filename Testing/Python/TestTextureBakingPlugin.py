@@ -1,0 +1,74 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The plugin's Texture Baking (pvpython): a sphere coloured by its Elevation, simplified by 95 %
+and baked. Its defaults; the first output carries texture coordinates on the simplified
+triangles, the second is the texture; shown through a Texture proxy fed by the second output,
+the render has the elevation's colours from red at the top to blue at the bottom; a lookup
+table from the session (Grayscale) gives grey texels."""
+import os
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
+
+from plugintest import arguments, check, finish
+
+args = arguments("--temp")
+
+LoadPlugin(args.plugin, ns=globals())
+
+sphere = Triangulate(Input=Elevation(Input=Sphere(ThetaResolution=64, PhiResolution=64),
+                                     LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5]))
+simplified = OctreeVertexClustering(Input=sphere, TargetReduction=0.95, GenerateOriginalIds=1)
+bake = TextureBaking(Simplified=simplified, Original=sphere)
+check(bake.TextureSize == "2048" and bake.GutterWidth == 2 and bake.MaximumDistance == 0.05 and
+      list(bake.Colors) == ["POINTS", "None"], "defaults")
+bake.TextureSize = "512"
+bake.UpdatePipeline()
+surface = servermanager.Fetch(bake)
+check(surface.GetNumberOfPolys() == simplified.GetDataInformation().GetNumberOfCells(),
+      "the simplified triangles, all of them")
+tcoords = surface.GetPointData().GetTCoords()
+check(tcoords is not None and tcoords.GetNumberOfComponents() == 2 and
+      0.0 <= tcoords.GetRange(0)[0] and tcoords.GetRange(0)[1] <= 1.0, "texture coordinates in [0, 1]")
+texture = servermanager.Fetch(bake, idx=1)
+check(texture.GetDimensions() == (512, 512, 1) and texture.GetPointData().GetArray("BakedTexture") is not None,
+      "a 512 x 512 texture")
+
+# Shown textured: a Texture proxy fed by the second output, scalar colouring off.
+view = CreateRenderView()
+view.ViewSize = [300, 300]
+view.OrientationAxesVisibility = 0
+display = Show(OutputPort(bake, 0), view)
+ColorBy(display, None)
+picture = servermanager.rendering.Texture()
+picture.Input = OutputPort(bake, 1)
+display.Texture = picture
+view.CameraPosition = [0, -3, 0]
+view.CameraFocalPoint = [0, 0, 0]
+view.CameraViewUp = [0, 0, 1]
+view.ResetCamera()
+Render(view)
+shot = os.path.join(args.temp or ".", "TestTextureBakingPlugin.png")
+SaveScreenshot(shot, view, ImageResolution=[300, 300])
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+reader = vtkPNGReader()
+reader.SetFileName(shot)
+reader.Update()
+image = reader.GetOutput()
+top = [image.GetScalarComponentAsDouble(150, 200, 0, c) for c in range(3)]
+bottom = [image.GetScalarComponentAsDouble(150, 100, 0, c) for c in range(3)]
+check(top[0] > top[2] + 40 and bottom[2] > bottom[0] + 40,
+      "rendered red above and blue below (top %s, bottom %s)" % (top, bottom))
+
+# A lookup table of the session's: Grayscale gives grey texels.
+table = GetColorTransferFunction("Elevation")
+table.ApplyPreset("Grayscale", True)
+bake.LookupTable = table
+bake.UpdatePipeline()
+texels = servermanager.Fetch(bake, idx=1).GetPointData().GetArray("BakedTexture")
+grey = [texels.GetTuple3(i) for i in range(0, texels.GetNumberOfTuples(), 997)]
+check(all(abs(r - g) <= 1 and abs(g - b) <= 1 for r, g, b in grey) and any(r > 0 for r, _, _ in grey),
+      "grey texels through the session's Grayscale table")
+Delete(view)
+del view
+finish()
