@@ -6,6 +6,12 @@
 #include "vtkOFFWriter.h"
 
 #include "vtkCellArray.h"
+#include "vtkFieldData.h"
+#include "vtkGLTFWriter.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPNGWriter.h"
+#include "vtkStringArray.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkLogger.h"
@@ -42,6 +48,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace meshfiles
@@ -634,6 +641,96 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
   }
   error = "cannot write '" + path + "': " + reason;
   return false;
+}
+
+namespace
+{
+/// Writes a textured mesh's files into folder, named after file: the texture as <stem>.png and,
+/// for .obj and .gltf/.glb, the mesh (the .obj's .mtl naming the .png relatively; glTF with the
+/// texture embedded). The names written are added to names.
+bool WriteTexturedFiles(vtkPolyData* mesh, vtkImageData* texture, const std::filesystem::path& file,
+  const std::filesystem::path& folder, const std::string& extension, std::vector<std::string>& names)
+{
+  const std::string image = file.stem().string() + ".png";
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputData(texture);
+  png->SetFileName((folder / image).string().c_str());
+  png->Write();
+  if (png->GetErrorCode() != 0)
+  {
+    return false;
+  }
+  if (extension == ".gltf" || extension == ".glb")
+  {
+    // VTK 9.2's glTF writer takes a texture by name from a block of a block's field data.
+    vtkNew<vtkPolyData> textured;
+    textured->ShallowCopy(mesh);
+    vtkNew<vtkStringArray> name;
+    name->SetName("texture_uri");
+    name->InsertNextValue(image);
+    textured->GetFieldData()->AddArray(name);
+    vtkNew<vtkMultiBlockDataSet> inner, scene;
+    inner->SetBlock(0, textured);
+    scene->SetBlock(0, inner);
+    vtkNew<vtkGLTFWriter> writer;
+    writer->SetInputData(scene);
+    writer->SetFileName((folder / file.filename()).string().c_str());
+    writer->SetTextureBaseDirectory(folder.string().c_str());
+    writer->SaveTexturesOn();
+    writer->SetInlineData(true);
+    writer->Write();
+    names.push_back(file.filename().string());
+    return true;
+  }
+  names.push_back(image);
+  if (extension == ".obj")
+  {
+    vtkNew<vtkOBJWriter> writer;
+    writer->SetInputData(mesh);
+    writer->SetTextureFileName(image.c_str());
+    writer->SetFileName((folder / file.filename()).string().c_str());
+    writer->Write();
+    names.push_back(file.filename().string());
+    names.push_back(file.stem().string() + ".mtl");
+    return writer->GetErrorCode() == 0;
+  }
+  return true;
+}
+} // namespace
+
+bool WriteTexturedMesh(vtkPolyData* mesh, vtkImageData* texture, const std::string& path, std::string& error)
+{
+  const std::filesystem::path file(path);
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension != ".obj" && extension != ".gltf" && extension != ".glb" && !WriteMesh(mesh, path, error))
+  {
+    return false;
+  }
+  // Each file is made in a folder of its own, then put in place whole (see WholeFile.h).
+  std::error_code failure;
+  const std::filesystem::path folder =
+    std::filesystem::temp_directory_path(failure) / ("meshsimplify-" + std::to_string(getpid()) + "-textured");
+  std::filesystem::create_directories(folder, failure);
+  std::vector<std::string> names;
+  QuietVTK quiet;
+  bool written = !failure && WriteTexturedFiles(mesh, texture, file, folder, extension, names) && quiet.FirstMessage().empty();
+  std::string reason = failure ? failure.message() : quiet.FirstMessage().empty() ? "the writer failed" : quiet.FirstMessage();
+  for (std::size_t i = 0; written && i < names.size(); ++i)
+  {
+    std::ifstream made(folder / names[i], std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(made)), std::istreambuf_iterator<char>());
+    written = made.good() || made.eof();
+    written = written && meshsimp::WriteWholeFile((file.parent_path() / names[i]).string(), [&](std::FILE* out) {
+      return std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+    }, reason);
+  }
+  std::filesystem::remove_all(folder, failure);
+  if (!written)
+  {
+    error = "cannot write '" + path + "' with its texture: " + reason;
+  }
+  return written;
 }
 
 } // namespace meshfiles

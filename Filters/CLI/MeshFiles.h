@@ -23,6 +23,7 @@
 
 #include <string>
 
+class vtkImageData;
 class vtkPolyData;
 
 namespace meshfiles
@@ -37,6 +38,11 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
 /// The file is whole or not there: written beside path and renamed over it (WholeFile.h), so a
 /// full disk leaves no partial file and an existing file untouched.
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
+
+/// A mesh with texture coordinates and its texture: .obj with its .mtl and the texture as a .png
+/// of the same stem (the .mtl names it relatively); .gltf and .glb with the texture embedded;
+/// any other format as WriteMesh writes it, with the texture's .png next to it.
+bool WriteTexturedMesh(vtkPolyData* mesh, vtkImageData* texture, const std::string& path, std::string& error);
 
 } // namespace meshfiles
 

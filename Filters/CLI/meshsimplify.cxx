@@ -7,6 +7,8 @@
 //   meshsimplify --method METHOD --settings
 //   meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface|exact]
 //                [--merge-distance D] [--json] DETAILED COARSE OUTPUT
+//   meshsimplify --method METHOD [target] --bake-texture SIZE [--json] INPUT OUTPUT
+//   meshsimplify --bake-texture SIZE --original ORIGINAL [--json] SIMPLIFIED OUTPUT
 //
 // Reads .ply .stl .obj .vtp .vtk .off and writes by the output extension. With --json it prints
 // one JSON object; time_ms is the filter's own work (file I/O excluded), the median of N runs
@@ -17,8 +19,13 @@
 // --morph runs LoD Interpolation: DETAILED morphed towards COARSE, the frame at T (0.5 by
 // default) to OUTPUT, or N frames (t = 0 to 1) to OUTPUT with %f replaced by the frame's number;
 // the JSON has first_ms (the correspondence and a frame) and frame_ms (the later frames' median).
+// --bake-texture runs Texture Baking: the input simplified by METHOD (or SIMPLIFIED) gets a
+// SIZE² texture of the input's (or ORIGINAL's) colours; OUTPUT .obj writes .obj, .mtl and .png,
+// .gltf and .glb embed the texture; the JSON has simplify_ms and bake_ms.
 #include "MeshFiles.h"
+#include "vtkImageData.h"
 #include "vtkLODInterpolation.h"
+#include "vtkTextureBaking.h"
 #include "MeshSimplificationFilters.h"
 
 #include "vtkCallbackCommand.h"
@@ -120,7 +127,12 @@ std::string Usage()
     "       meshsimplify --morph [--t T | --frames N] [--correspondence vertex|surface|exact]\n"
     "         [--merge-distance D] [--json] DETAILED COARSE OUTPUT\n"
     "  --morph     LoD Interpolation: DETAILED on its way to COARSE at T (default 0.5), or N\n"
-    "              frames from 0 to 1 written to OUTPUT with %f replaced by the frame number\n";
+    "              frames from 0 to 1 written to OUTPUT with %f replaced by the frame number\n"
+    "       meshsimplify --method METHOD [target] --bake-texture SIZE [--json] INPUT OUTPUT\n"
+    "       meshsimplify --bake-texture SIZE --original ORIGINAL [--json] SIMPLIFIED OUTPUT\n"
+    "  --bake-texture  Texture Baking: a SIZE x SIZE texture (256 to 8192, a power of two) of the\n"
+    "              colours of INPUT (or ORIGINAL) for its simplification; OUTPUT .obj also writes\n"
+    "              .mtl and .png, .gltf and .glb embed the texture\n";
 }
 
 /// The command line.
@@ -138,6 +150,8 @@ struct Arguments
   double Interpolation = 0.5, MergeDistance = 0.001;
   int Frames = 0;
   std::string Correspondence = "surface";
+  int BakeTexture = 0;  // --bake-texture: the texture's size, 0 for none
+  std::string Original; // --original: the mesh whose colours the texture keeps
 };
 
 /// An option's effect on the arguments; false for an unknown option.
@@ -171,6 +185,10 @@ bool ParseOption(const std::string& arg, const std::function<std::string()>& val
     a.MergeDistance = ParseNumber(arg, value());
   else if (arg == "--correspondence")
     a.Correspondence = value();
+  else if (arg == "--bake-texture")
+    a.BakeTexture = static_cast<int>(ParseNumber(arg, value()));
+  else if (arg == "--original")
+    a.Original = value();
   else if (arg == "--levels")
   {
     std::string list = value() + ",";
@@ -270,7 +288,12 @@ Arguments ParseArguments(int argc, char* argv[])
       "--correspondence is vertex, surface or exact" },
     { !a.Morph && (morphTimed || !a.Coarse.empty()), "--frames needs --morph" },
     { a.Input.empty() || a.Output.empty(), "an INPUT and an OUTPUT file are needed" },
-    { !a.Morph && !FindMethod(a.Method), "unknown --method (available: " + MethodNames(", ") + ")" },
+    { a.BakeTexture != 0 && (a.BakeTexture < 256 || a.BakeTexture > 8192 || (a.BakeTexture & (a.BakeTexture - 1)) != 0),
+      "--bake-texture must be a power of two from 256 to 8192" },
+    { !a.Original.empty() && a.BakeTexture == 0, "--original needs --bake-texture" },
+    { !a.Original.empty() && !a.Method.empty(), "--original bakes onto a simplified INPUT: no --method with it" },
+    { a.BakeTexture != 0 && (a.Morph || !a.Levels.empty() || a.Repeat != 1), "--bake-texture takes no --morph, --levels or --repeat" },
+    { !a.Morph && a.Original.empty() && !FindMethod(a.Method), "unknown --method (available: " + MethodNames(", ") + ")" },
     { !a.Levels.empty() && a.Method != "progressive", "--levels needs --method progressive" },
     { !a.Levels.empty() && a.Output.find("%l") == std::string::npos, "--levels needs %l in OUTPUT" },
     { !a.Levels.empty() && (reductionGiven || a.TargetTriangles || a.MaximumError || a.Repeat != 1),
@@ -546,6 +569,46 @@ void RunMorph(const Arguments& a)
 }
 }
 
+namespace
+{
+/// --bake-texture: the texture of original's colours for simplified, written with it; with
+/// --json the times (simplifyMs: the simplification's, -1 where the input was simplified).
+void RunBake(const Arguments& a, vtkPolyData* simplified, vtkPolyData* original, double simplifyMs)
+{
+  vtkNew<vtkTextureBaking> bake;
+  bake->SetInputData(0, simplified);
+  bake->SetOriginalData(original);
+  bake->SetTextureSize(a.BakeTexture);
+  Messages messages;
+  vtkNew<vtkCallbackCommand> onMessage;
+  onMessage->SetClientData(&messages);
+  onMessage->SetCallback(Messages::Receive);
+  bake->AddObserver(vtkCommand::ErrorEvent, onMessage);
+  bake->AddObserver(vtkCommand::WarningEvent, onMessage);
+  const auto start = std::chrono::steady_clock::now();
+  bake->Update();
+  const double bakeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  bake->RemoveObservers(vtkCommand::ErrorEvent);
+  bake->RemoveObservers(vtkCommand::WarningEvent);
+  std::string fileError;
+  if (!messages.Error.empty())
+  {
+    Fail(messages.Error);
+  }
+  if (!meshfiles::WriteTexturedMesh(bake->GetOutput(), bake->GetTexture(), a.Output, fileError))
+  {
+    Fail(fileError);
+  }
+  if (a.Json)
+  {
+    std::printf("{\"method\": \"%s\", \"input_triangles\": %lld, \"output_triangles\": %lld, \"texture_size\": %d, "
+                "\"simplify_ms\": %.3f, \"bake_ms\": %.3f, \"time_ms\": %.3f}\n",
+      a.Method.empty() ? "bake" : a.Method.c_str(), CountTriangles(original), static_cast<long long>(bake->GetOutput()->GetNumberOfPolys()),
+      a.BakeTexture, std::max(0.0, simplifyMs), bakeMs, std::max(0.0, simplifyMs) + bakeMs);
+  }
+}
+}
+
 int main(int argc, char* argv[])
 {
   // Past a file size limit (ulimit -f) a write fails with EFBIG, which is reported, rather
@@ -568,14 +631,30 @@ int main(int argc, char* argv[])
     Fail(arguments.Input + ": no triangle to simplify (" + std::to_string(mesh->GetNumberOfPoints()) +
       " points, " + std::to_string(mesh->GetNumberOfCells()) + " cells, no polygon of 3 or more points)");
   }
+  if (!arguments.Original.empty())
+  {
+    const vtkSmartPointer<vtkPolyData> original = meshfiles::ReadMesh(arguments.Original, fileError);
+    if (!original)
+    {
+      Fail(fileError);
+    }
+    RunBake(arguments, mesh, original, -1.0);
+    return 0;
+  }
   vtkSmartPointer<vtkMeshSimplificationFilter> filter = MakeFilter(arguments);
   filter->SetInputData(mesh);
+  filter->SetGenerateOriginalIds(filter->GetGenerateOriginalIds() || arguments.BakeTexture != 0);
   if (!arguments.Levels.empty())
   {
     RunLevels(arguments, mesh, filter);
     return 0;
   }
   const double milliseconds = RunRepeated(filter, arguments.Repeat, arguments.Input);
+  if (arguments.BakeTexture != 0)
+  {
+    RunBake(arguments, filter->GetOutput(), mesh, milliseconds);
+    return 0;
+  }
   if (!meshfiles::WriteMesh(filter->GetOutput(), arguments.Output, fileError))
   {
     Fail(fileError);

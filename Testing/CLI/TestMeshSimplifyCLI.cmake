@@ -61,6 +61,26 @@ if (NOT first EQUAL 5804)
   message(FATAL_ERROR "--morph --t 0: ${out}")
 endif ()
 
+# --bake-texture: the terrain at 99 % with its elevation baked, as OBJ (with its .mtl naming the
+# .png) and as glTF; then the same simplification given as a file with --original.
+get_filename_component(data "${INPUT}" DIRECTORY)
+run_tool(--method octree --reduction 0.99 --bake-texture 256 --json "${data}/jacksboro_dem_half.vtp" "${OUTPUT}.baked.obj")
+string(JSON bake_ms GET "${out}" bake_ms)
+string(JSON texture_size GET "${out}" texture_size)
+get_filename_component(stem "${OUTPUT}" NAME)
+file(READ "${OUTPUT}.baked.mtl" material)
+if (NOT texture_size EQUAL 256 OR NOT bake_ms GREATER 0 OR NOT EXISTS "${OUTPUT}.baked.png" OR
+    NOT material MATCHES "map_Kd ${stem}.baked.png")
+  message(FATAL_ERROR "--bake-texture: ${out}, ${material}")
+endif ()
+run_tool(--method octree --reduction 0.99 --bake-texture 256 "${data}/jacksboro_dem_half.vtp" "${OUTPUT}.baked.glb")
+run_tool(--method octree --reduction 0.99 --set GenerateOriginalIds=1 "${data}/jacksboro_dem_half.vtp" "${OUTPUT}.simplified.vtp")
+run_tool(--bake-texture 256 --original "${data}/jacksboro_dem_half.vtp" --json "${OUTPUT}.simplified.vtp" "${OUTPUT}.rebaked.obj")
+string(JSON method GET "${out}" method)
+if (NOT method STREQUAL "bake" OR NOT EXISTS "${OUTPUT}.baked.glb" OR NOT EXISTS "${OUTPUT}.rebaked.png")
+  message(FATAL_ERROR "--bake-texture --original: ${out}")
+endif ()
+
 # The volume method: counts within 1 %, its own error figure.
 run_tool(--method volume --target-triangles 1000 --json "${INPUT}" "${OUTPUT}")
 string(JSON output_triangles GET "${out}" output_triangles)
@@ -157,7 +177,12 @@ foreach (bad IN ITEMS "--method;nope;${INPUT};${OUTPUT}"
                       "--morph;--t;2;${INPUT};${INPUT};${OUTPUT}"
                       "--morph;--correspondence;nope;${INPUT};${INPUT};${OUTPUT}"
                       "--morph;${INPUT};/nonexistent/coarse.off;${OUTPUT}"
-                      "--frames;3;--method;octree;${INPUT};${OUTPUT}.%f.ply")
+                      "--frames;3;--method;octree;${INPUT};${OUTPUT}.%f.ply"
+                      "--method;octree;--bake-texture;300;${INPUT};${OUTPUT}.obj"
+                      "--method;octree;--bake-texture;128;${INPUT};${OUTPUT}.obj"
+                      "--method;octree;--original;${INPUT};${INPUT};${OUTPUT}.obj"
+                      "--method;octree;--bake-texture;256;--original;${INPUT};${INPUT};${OUTPUT}.obj"
+                      "--method;octree;--bake-texture;256;${INPUT};${OUTPUT}.obj")
   execute_process(COMMAND "${TOOL}" ${bad} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if (code EQUAL 0 OR NOT err MATCHES "^meshsimplify: ")
     message(FATAL_ERROR "expected a clean failure for '${bad}', got ${code}: ${err}")
