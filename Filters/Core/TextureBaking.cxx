@@ -21,10 +21,12 @@ struct Sample
   float Weights[2] = { 0.0f, 0.0f };
 };
 
-/// Per thread: one square's samples, (hi − lo + 1)² of them.
+/// Per thread: one square's samples, (hi − lo + 1)² of them, and its blocks to check.
 struct Scratch
 {
   std::vector<Sample> Inner;
+  std::vector<std::uint8_t> Queued;  // per block of the lattice, whether it is checked
+  std::vector<std::int32_t> Pending; // blocks to check
   std::int64_t Inside = 0, Empty = 0, Exact = 0, Corrected = 0;
 };
 
@@ -103,26 +105,45 @@ private:
     return sample;
   }
 
-  /// Calls visit(i, j, x) for every texel (i, j) of the square's triangles, x its point: row
-  /// by row from lo to hi, those of the first triangle (i + j <= span, the diagonal included),
-  /// then those of the second.
+  /// The 3-D corners of both triangles of the square at their places (see AtlasSquare).
+  void Corners(const AtlasSquare& square, Vec3 corners[2][3]) const
+  {
+    for (int half = 0; half < 2 && square.Triangles[half] >= 0; ++half)
+    {
+      this->Places(square, half, corners[half]);
+    }
+  }
+
+  /// The point texel (i, j) of a square shows: on its first triangle where i + j <= span (the
+  /// diagonal included), else on its second; steps from each right angle towards the other two
+  /// corners.
+  static Vec3 TexelPoint(const Vec3 corners[2][3], std::int32_t span, std::int32_t i, std::int32_t j)
+  {
+    if (i + j <= span)
+    {
+      const Vec3* p = corners[0];
+      return p[0] + (double(i) / span) * (p[1] - p[0]) + (double(j) / span) * (p[2] - p[0]);
+    }
+    const Vec3* p = corners[1];
+    return p[0] + (double(span - i) / span) * (p[2] - p[0]) + (double(span - j) / span) * (p[1] - p[0]);
+  }
+
+  /// Calls visit(i, j, rowFirst, x) for every texel (i, j) of the square's triangles, x its
+  /// point: row by row, those of the first triangle, then those of the second.
   template <typename Visit>
   void ForEachTexel(const AtlasSquare& square, Visit&& visit) const
   {
     const std::int32_t span = square.Side - 1 - 2 * this->Atlas.Gutter;
+    Vec3 corners[2][3];
+    this->Corners(square, corners);
     for (int half = 0; half < 2 && square.Triangles[half] >= 0; ++half)
     {
-      Vec3 p[3];
-      this->Places(square, half, p);
       for (std::int32_t j = 0; j <= span; ++j)
       {
         const std::int32_t first = half == 0 ? 0 : span - j + 1, last = half == 0 ? span - j : span;
         for (std::int32_t i = first; i <= last; ++i)
         {
-          // Steps from the right angle towards the other two corners.
-          const double s = half == 0 ? double(i) / span : double(span - i) / span;
-          const double t = half == 0 ? double(j) / span : double(span - j) / span;
-          visit(i, j, i == first, half == 0 ? Vec3(p[0] + s * (p[1] - p[0]) + t * (p[2] - p[0])) : Vec3(p[0] + s * (p[2] - p[0]) + t * (p[1] - p[0])));
+          visit(i, j, i == first, TexelPoint(corners, span, i, j));
         }
       }
     }
@@ -153,10 +174,8 @@ private:
   }
 
   /// Every texel on the square's triangles: a walk over the original towards its point from
-  /// where the last ended (each row from where the last row started); then exact searches on
-  /// every CheckStep-th texel of every CheckStep-th row; where one corrects its walk (a walk
-  /// can stop in a hollow of the distance: on the wrong hill of a terrain), on every texel of
-  /// the square, each search bounded by the last texel's triangle too.
+  /// where the last ended (each row from where the last row started), then exact checks where
+  /// a walk may have stopped in a hollow of the distance (on the wrong hill of a terrain).
   void SampleTriangles(const AtlasSquare& square, Scratch& scratch) const
   {
     const std::int32_t span = square.Side - 1 - 2 * this->Atlas.Gutter;
@@ -174,24 +193,69 @@ private:
       rowStart = rowFirst ? best : rowStart;
       at(i, j) = this->SampleOn(x, best.Triangle);
       ++scratch.Inside;
+      scratch.Empty += best.Triangle < 0; // a check finds none where the walk found none
     });
-    bool corrected = false;
+    this->CheckAroundCorrections(square, scratch);
+  }
+
+  /// Exact searches on every CheckStep-th texel of every CheckStep-th row (the lattice); where
+  /// one corrects its walk, on every texel of the blocks of the lattice around it, and of the
+  /// blocks around any block where a search corrected a walk too, each search bounded by the
+  /// last texel's triangle as well.
+  void CheckAroundCorrections(const AtlasSquare& square, Scratch& scratch) const
+  {
+    const std::int32_t span = square.Side - 1 - 2 * this->Atlas.Gutter, blocks = span / CheckStep + 1;
+    Vec3 corners[2][3];
+    this->Corners(square, corners);
+    const auto onTriangle = [&](std::int32_t i, std::int32_t j) {
+      return i >= 0 && j >= 0 && i <= span && j <= span && (i + j <= span || square.Triangles[1] >= 0);
+    };
+    const auto check = [&](std::int32_t i, std::int32_t j, std::int32_t& hint) {
+      Sample& sample = scratch.Inner[static_cast<std::size_t>(j) * (span + 1) + i];
+      const bool corrected = this->Corrected(TexelPoint(corners, span, i, j), sample, hint, scratch);
+      hint = sample.Triangle;
+      return corrected;
+    };
+    scratch.Queued.assign(static_cast<std::size_t>(blocks) * blocks, 0);
+    scratch.Pending.clear();
+    const auto queue = [&](std::int32_t bi, std::int32_t bj) {
+      if (bi >= 0 && bj >= 0 && bi < blocks && bj < blocks && !scratch.Queued[static_cast<std::size_t>(bj) * blocks + bi])
+      {
+        scratch.Queued[static_cast<std::size_t>(bj) * blocks + bi] = 1;
+        scratch.Pending.push_back(bj * blocks + bi);
+      }
+    };
     std::int32_t hint = -1;
-    this->ForEachTexel(square, [&](std::int32_t i, std::int32_t j, bool, const Vec3& x) {
-      if (i % CheckStep == 0 && j % CheckStep == 0)
+    for (std::int32_t j = 0; j <= span; j += CheckStep)
+    {
+      for (std::int32_t i = 0; i <= span; i += CheckStep)
       {
-        corrected = this->Corrected(x, at(i, j), hint, scratch) || corrected;
-        hint = at(i, j).Triangle;
+        if (onTriangle(i, j) && check(i, j, hint))
+        {
+          for (const std::int32_t b : { 0, 1, 2, 3 })
+          {
+            queue(i / CheckStep - (b & 1), j / CheckStep - (b >> 1));
+          }
+        }
       }
-    });
-    this->ForEachTexel(square, [&](std::int32_t i, std::int32_t j, bool, const Vec3& x) {
-      if (corrected && (i % CheckStep != 0 || j % CheckStep != 0))
+    }
+    while (!scratch.Pending.empty())
+    {
+      const std::int32_t block = scratch.Pending.back(), bi = block % blocks, bj = block / blocks;
+      scratch.Pending.pop_back();
+      bool corrected = false;
+      for (std::int32_t j = bj * CheckStep; j < (bj + 1) * CheckStep; ++j)
       {
-        this->Corrected(x, at(i, j), hint, scratch);
-        hint = at(i, j).Triangle;
+        for (std::int32_t i = bi * CheckStep; i < (bi + 1) * CheckStep; ++i)
+        {
+          corrected = (onTriangle(i, j) && (i % CheckStep != 0 || j % CheckStep != 0) && check(i, j, hint)) || corrected;
+        }
       }
-      scratch.Empty += at(i, j).Triangle < 0;
-    });
+      for (std::int32_t b = 0; b < 9 && corrected; ++b)
+      {
+        queue(bi + b % 3 - 1, bj + b / 3 - 1);
+      }
+    }
   }
 
   /// Every texel of the square: its own sample, or (gutter, or the empty half of a lone
