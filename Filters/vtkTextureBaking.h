@@ -20,9 +20,9 @@
  * any lookup table). The nearest point is found by walking over the original from the points
  * the simplified corners came from (the point data vtkOriginalPointIds, which every filter of
  * this module writes with GenerateOriginalIds) or else from an exact search for each square's
- * first texel; then a search of the original's triangles within MaximumDistance, bounded by
- * where the walk ended, makes the point the exact nearest. Texels run on all threads (the
- * result does not depend on how many).
+ * first texel; exact searches within MaximumDistance check the walks on a lattice of texels
+ * and around every walk they correct (a walk can stop on the wrong hill of a rugged terrain).
+ * Texels run on all threads (the result does not depend on how many).
  *
  * Output 0 is the simplified surface's triangles with texture coordinates "TCoords" (points
  * split where the atlas puts a point's triangles apart, each copy with the point's data) and

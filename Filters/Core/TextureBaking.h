@@ -11,10 +11,12 @@
  * local: from the original points the simplified triangle's corners came from (a filter's
  * vtkOriginalPointIds), or from an exact search for the square's first texel, a walk over the
  * original surface towards each texel, starting where the previous texel's ended (texels of a
- * square are close on the surface); then a search of a tree of the original triangles' boxes,
- * bounded by where the walk ended, finds the exact nearest triangle within a maximum distance
- * (a walk can stop in a hollow of the distance: on the wrong hill of a terrain). Where none is
- * that near, the walk's end stands, so every texel gets a value. Gutter texels copy the
+ * square are close on the surface). A walk can stop in a hollow of the distance (on the wrong
+ * hill of a terrain), so every 4th texel of every 4th row is checked by an exact search within
+ * a maximum distance (a tree of the original triangles' boxes, bounded by where the walk
+ * ended), and where one finds a nearer triangle, the texels around it are checked too, until
+ * no check nearby corrects a walk. Where nothing is that near, the walk's end stands, so every
+ * texel gets a value. Gutter texels copy the
  * nearest texel of their own square's triangles. Texels run on all threads, square by square;
  * the result does not depend on the thread count.
  */
