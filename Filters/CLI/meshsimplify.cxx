@@ -346,11 +346,37 @@ vtkSmartPointer<vtkMeshSimplificationFilter> MakeFilter(const Arguments& a)
   return filter;
 }
 
-/// The filter's messages as one line each: warnings printed (once per run), the first error
-/// kept for the failure.
-struct Messages
+/// A filter's messages while this lives, one line each: warnings printed (until
+/// SilenceWarnings), the first error kept for the failure.
+class Messages
 {
+public:
+  explicit Messages(vtkAlgorithm* algorithm)
+    : Algorithm(algorithm)
+  {
+    this->Listener->SetClientData(this);
+    this->Listener->SetCallback(Messages::Receive);
+    algorithm->AddObserver(vtkCommand::ErrorEvent, this->Listener);
+    algorithm->AddObserver(vtkCommand::WarningEvent, this->Listener);
+  }
+  ~Messages()
+  {
+    this->Algorithm->RemoveObservers(vtkCommand::ErrorEvent);
+    this->Algorithm->RemoveObservers(vtkCommand::WarningEvent);
+  }
+  Messages(const Messages&) = delete;
+  Messages& operator=(const Messages&) = delete;
+
+  /// Later warnings are dropped, neither printed nor left to VTK's output window.
+  void SilenceWarnings()
+  {
+    this->Algorithm->RemoveObservers(vtkCommand::WarningEvent);
+    this->Algorithm->AddObserver(vtkCommand::WarningEvent, this->Silence);
+  }
+
   std::string Error;
+
+private:
   static void Receive(vtkObject*, unsigned long event, void* self, void* text)
   {
     // VTK's message text ends with a line break; its prefix names the object.
@@ -371,6 +397,9 @@ struct Messages
       messages->Error = line;
     }
   }
+
+  vtkAlgorithm* Algorithm;
+  vtkNew<vtkCallbackCommand> Listener, Silence;
 };
 
 /// Runs the filter `repeat` times; the median time of its own work in milliseconds. Fails with
@@ -378,12 +407,7 @@ struct Messages
 /// marked modified), so that a cache (Progressive Mesh's) is not what is timed.
 double RunRepeated(vtkMeshSimplificationFilter* filter, int repeat, const std::string& input, bool freshInput = true)
 {
-  Messages messages;
-  vtkNew<vtkCallbackCommand> onMessage;
-  onMessage->SetClientData(&messages);
-  onMessage->SetCallback(Messages::Receive);
-  filter->AddObserver(vtkCommand::ErrorEvent, onMessage);
-  filter->AddObserver(vtkCommand::WarningEvent, onMessage);
+  Messages messages(filter);
   std::vector<double> times;
   for (int run = 0; run < repeat; ++run)
   {
@@ -398,12 +422,9 @@ double RunRepeated(vtkMeshSimplificationFilter* filter, int repeat, const std::s
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     if (run == 0)
     {
-      filter->RemoveObservers(vtkCommand::WarningEvent); // printed once
-      filter->AddObserver(vtkCommand::WarningEvent, vtkNew<vtkCallbackCommand>().Get());
+      messages.SilenceWarnings(); // printed once
     }
   }
-  filter->RemoveObservers(vtkCommand::ErrorEvent); // they point to messages, which ends here
-  filter->RemoveObservers(vtkCommand::WarningEvent);
   if (!messages.Error.empty() || filter->GetErrorCode() != 0)
   {
     Fail(input + ": " + (messages.Error.empty() ? std::string("the filter failed") : messages.Error));
@@ -526,12 +547,7 @@ void RunMorph(const Arguments& a)
     a.Correspondence == "vertex"  ? vtkLODInterpolation::NEAREST_VERTEX
       : a.Correspondence == "exact" ? vtkLODInterpolation::EXACT
                                     : vtkLODInterpolation::NEAREST_SURFACE_POINT);
-  Messages messages;
-  vtkNew<vtkCallbackCommand> onMessage;
-  onMessage->SetClientData(&messages);
-  onMessage->SetCallback(Messages::Receive);
-  morph->AddObserver(vtkCommand::ErrorEvent, onMessage);
-  morph->AddObserver(vtkCommand::WarningEvent, onMessage);
+  Messages messages(morph);
   const int frames = a.Frames > 0 ? a.Frames : 1;
   std::vector<double> times;
   for (int frame = 0; frame < frames; ++frame)
@@ -554,8 +570,6 @@ void RunMorph(const Arguments& a)
       Fail(fileError);
     }
   }
-  morph->RemoveObservers(vtkCommand::ErrorEvent);
-  morph->RemoveObservers(vtkCommand::WarningEvent);
   if (a.Json)
   {
     std::vector<double> later(times.begin() + 1, times.end());
@@ -579,17 +593,10 @@ void RunBake(const Arguments& a, vtkPolyData* simplified, vtkPolyData* original,
   bake->SetInputData(0, simplified);
   bake->SetOriginalData(original);
   bake->SetTextureSize(a.BakeTexture);
-  Messages messages;
-  vtkNew<vtkCallbackCommand> onMessage;
-  onMessage->SetClientData(&messages);
-  onMessage->SetCallback(Messages::Receive);
-  bake->AddObserver(vtkCommand::ErrorEvent, onMessage);
-  bake->AddObserver(vtkCommand::WarningEvent, onMessage);
+  Messages messages(bake);
   const auto start = std::chrono::steady_clock::now();
   bake->Update();
   const double bakeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  bake->RemoveObservers(vtkCommand::ErrorEvent);
-  bake->RemoveObservers(vtkCommand::WarningEvent);
   std::string fileError;
   if (!messages.Error.empty())
   {
