@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -114,42 +115,60 @@ void ReadValues(BakeSource& source, const vtkSimplification::TriangleInput& orig
   }
 }
 
-/// The texel (x, y) of an image's unsigned-char scalars, repeated, as RGBA.
-void ImageTexel(vtkUnsignedCharArray* scalars, const int dims[3], int x, int y, float rgba[4])
+/// An image's unsigned-char scalars looked up at texture coordinates: bilinear, repeated.
+class TextureImage
 {
-  x = ((x % dims[0]) + dims[0]) % dims[0];
-  y = ((y % dims[1]) + dims[1]) % dims[1];
-  const int n = scalars->GetNumberOfComponents();
-  const unsigned char* texel = scalars->GetPointer(0) + (static_cast<vtkIdType>(y) * dims[0] + x) * n;
-  for (int c = 0; c < 3; ++c)
+public:
+  explicit TextureImage(vtkImageData* image)
+    : Scalars(vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars()))
+    , Width(image->GetDimensions()[0])
+    , Height(image->GetDimensions()[1])
   {
-    rgba[c] = texel[n < 3 ? 0 : c];
   }
-  rgba[3] = n == 2 || n == 4 ? texel[n - 1] : 255.0f;
-}
 
-/// The image's colour at texture coordinates (u, v): bilinear, repeated.
-void LookUp(vtkImageData* image, float u, float v, unsigned char* to, int components)
-{
-  auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
-  const int* dims = image->GetDimensions();
-  const float x = u * dims[0] - 0.5f, y = v * dims[1] - 0.5f;
-  const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-  const float fx = x - x0, fy = y - y0;
-  float corners[4][4], mixed[4];
-  ImageTexel(scalars, dims, x0, y0, corners[0]);
-  ImageTexel(scalars, dims, x0 + 1, y0, corners[1]);
-  ImageTexel(scalars, dims, x0, y0 + 1, corners[2]);
-  ImageTexel(scalars, dims, x0 + 1, y0 + 1, corners[3]);
-  for (int c = 0; c < 4; ++c)
+  /// The first components of the RGBA colour at (u, v); nothing where u or v is not finite.
+  void LookUp(float u, float v, unsigned char* to, int components) const
   {
-    mixed[c] = (1 - fy) * ((1 - fx) * corners[0][c] + fx * corners[1][c]) + fy * ((1 - fx) * corners[2][c] + fx * corners[3][c]);
+    if (!std::isfinite(u) || !std::isfinite(v))
+    {
+      return;
+    }
+    const float x = (u - std::floor(u)) * this->Width - 0.5f, y = (v - std::floor(v)) * this->Height - 0.5f;
+    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+    const float fx = x - x0, fy = y - y0;
+    float corners[4][4];
+    this->Texel(x0, y0, corners[0]);
+    this->Texel(x0 + 1, y0, corners[1]);
+    this->Texel(x0, y0 + 1, corners[2]);
+    this->Texel(x0 + 1, y0 + 1, corners[3]);
+    for (int c = 0; c < components; ++c)
+    {
+      const float mixed = (1 - fy) * ((1 - fx) * corners[0][c] + fx * corners[1][c]) + fy * ((1 - fx) * corners[2][c] + fx * corners[3][c]);
+      to[c] = static_cast<unsigned char>(std::min(255.0f, std::max(0.0f, std::round(mixed))));
+    }
   }
-  for (int c = 0; c < components; ++c)
+
+  /// Whether the image has RGBA or grey and alpha.
+  bool HasAlpha() const { return this->Scalars->GetNumberOfComponents() % 2 == 0; }
+
+private:
+  /// Texel (x, y), repeated, as RGBA.
+  void Texel(int x, int y, float rgba[4]) const
   {
-    to[c] = static_cast<unsigned char>(std::min(255.0f, std::max(0.0f, std::round(mixed[c]))));
+    x = ((x % this->Width) + this->Width) % this->Width;
+    y = ((y % this->Height) + this->Height) % this->Height;
+    const int n = this->Scalars->GetNumberOfComponents();
+    const unsigned char* texel = this->Scalars->GetPointer((static_cast<vtkIdType>(y) * this->Width + x) * n);
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[c] = texel[n < 3 ? 0 : c];
+    }
+    rgba[3] = n % 2 == 0 ? texel[n - 1] : 255.0f;
   }
-}
+
+  vtkUnsignedCharArray* Scalars;
+  int Width, Height;
+};
 
 /// The lookup table for a mapped array: the user's, or blue to red over its range (a vector
 /// array's magnitude).
@@ -183,8 +202,7 @@ vtkSmartPointer<vtkUnsignedCharArray> TextureColours(const BakeSource& source, c
   }
   else if (source.Kind == BakeSource::TEXTURE)
   {
-    const int imageComponents = image->GetPointData()->GetScalars()->GetNumberOfComponents();
-    components = imageComponents == 2 || imageComponents == 4 ? 4 : 3;
+    components = TextureImage(image).HasAlpha() ? 4 : 3;
   }
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("BakedTexture");
@@ -192,6 +210,11 @@ vtkSmartPointer<vtkUnsignedCharArray> TextureColours(const BakeSource& source, c
   colours->SetNumberOfTuples(texels);
   std::fill_n(colours->GetPointer(0), texels * components, 0);
   vtkSmartPointer<vtkUnsignedCharArray> mapped;
+  std::optional<TextureImage> lookup;
+  if (source.Kind == BakeSource::TEXTURE)
+  {
+    lookup.emplace(image);
+  }
   if (source.Kind == BakeSource::MAPPED)
   {
     vtkNew<vtkFloatArray> values;
@@ -213,7 +236,7 @@ vtkSmartPointer<vtkUnsignedCharArray> TextureColours(const BakeSource& source, c
     }
     else if (source.Kind == BakeSource::TEXTURE)
     {
-      LookUp(image, value[0], value[1], to, components);
+      lookup->LookUp(value[0], value[1], to, components);
     }
     else
     {
