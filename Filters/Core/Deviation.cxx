@@ -29,16 +29,13 @@ std::vector<std::int32_t> UsableCorners(const TriangleMeshView& input, std::vect
   place.assign(static_cast<std::size_t>(input.NumberOfTriangles), -1);
   for (std::int64_t t = 0; t < input.NumberOfTriangles; ++t)
   {
-    const std::int64_t ids[3] = { input.Id(3 * t), input.Id(3 * t + 1), input.Id(3 * t + 2) };
-    bool usable = ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2];
-    for (int k = 0; k < 3 && usable; ++k)
-    {
-      usable = ids[k] >= 0 && ids[k] < input.NumberOfPoints && input.Point(ids[k]).allFinite();
-    }
-    if (usable)
+    if (UsableTriangle(input, t))
     {
       place[t] = static_cast<std::int32_t>(corners.size() / 3);
-      corners.insert(corners.end(), ids, ids + 3);
+      for (int k = 0; k < 3; ++k)
+      {
+        corners.push_back(static_cast<std::int32_t>(input.Id(3 * t + k)));
+      }
     }
   }
   return corners;

@@ -429,16 +429,12 @@ Surface UsableSurface(const TriangleMeshView& mesh, std::vector<std::int32_t>& t
   std::vector<std::int32_t> corners;
   for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
   {
-    const std::int64_t ids[3] = { mesh.Id(3 * t), mesh.Id(3 * t + 1), mesh.Id(3 * t + 2) };
-    bool usable = ids[0] != ids[1] && ids[1] != ids[2] && ids[2] != ids[0];
-    for (int k = 0; k < 3 && usable; ++k)
+    if (UsableTriangle(mesh, t))
     {
-      usable = ids[k] >= 0 && ids[k] < mesh.NumberOfPoints && points[ids[k]].allFinite();
-    }
-    if (usable)
-    {
-      corners.insert(corners.end(), { static_cast<std::int32_t>(ids[0]), static_cast<std::int32_t>(ids[1]),
-                                      static_cast<std::int32_t>(ids[2]) });
+      for (int k = 0; k < 3; ++k)
+      {
+        corners.push_back(static_cast<std::int32_t>(mesh.Id(3 * t + k)));
+      }
       triangle.push_back(static_cast<std::int32_t>(t));
     }
   }

@@ -13,20 +13,6 @@ namespace
 {
 using Vec3 = Eigen::Vector3d;
 
-/// Whether triangle t has three distinct corners in range with finite coordinates.
-bool Usable(const TriangleMeshView& mesh, std::int64_t t)
-{
-  const std::int64_t ids[3] = { mesh.Id(3 * t), mesh.Id(3 * t + 1), mesh.Id(3 * t + 2) };
-  for (int k = 0; k < 3; ++k)
-  {
-    if (ids[k] < 0 || ids[k] >= mesh.NumberOfPoints || ids[k] == ids[(k + 1) % 3] || !mesh.Point(ids[k]).allFinite())
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 double EdgeLength(const TriangleMeshView& mesh, std::int64_t t, int k)
 {
   return (mesh.Point(mesh.Id(3 * t + (k + 1) % 3)) - mesh.Point(mesh.Id(3 * t + k))).norm();
@@ -79,7 +65,7 @@ std::vector<AtlasSquare> PairTriangles(const TriangleMeshView& mesh, std::vector
   std::vector<std::uint8_t> usable(static_cast<std::size_t>(mesh.NumberOfTriangles));
   for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
   {
-    usable[t] = Usable(mesh, t);
+    usable[t] = UsableTriangle(mesh, t);
   }
   const std::vector<std::int32_t> across = EdgeNeighbours(mesh, usable);
   std::vector<std::uint8_t> placed(usable.size(), 0);

@@ -3,7 +3,6 @@
 #include "SurfaceSearch.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 

@@ -65,6 +65,21 @@ struct TriangleMeshView
   }
 };
 
+/// Whether triangle t of a view can be used: three distinct point ids in range, three finite
+/// corners.
+inline bool UsableTriangle(const TriangleMeshView& mesh, std::int64_t t)
+{
+  const std::int64_t ids[3] = { mesh.Id(3 * t), mesh.Id(3 * t + 1), mesh.Id(3 * t + 2) };
+  for (int k = 0; k < 3; ++k)
+  {
+    if (ids[k] < 0 || ids[k] >= mesh.NumberOfPoints || ids[k] == ids[(k + 1) % 3] || !mesh.Point(ids[k]).allFinite())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// One triangle around a vertex v: its id and its other corners, so that the triangle reads
 /// (v, Next, Previous) in its own orientation.
 struct Corner
