@@ -225,12 +225,13 @@ Nearest TriangleGrid::Find(const Surface& surface, const Vec3& x) const
  * triangles (each node splits its triangles at the median of their centres along its longest
  * axis, down to leaves of a few), searched nearer child first and skipping every box farther
  * than the nearest found so far. Nodes are stored flat, a node's two children next to each
- * other.
+ * other and after it. The top of the tree is split on one thread, the subtrees below it on all;
+ * the tree's shape, and so every answer, does not depend on the thread count.
  */
 class TriangleTree
 {
 public:
-  explicit TriangleTree(const Surface& surface);
+  TriangleTree(const Surface& surface, const ExecutionContext& context);
   void Nearer(const Surface& surface, const Vec3& x, Nearest& best) const;
 
 private:
@@ -241,74 +242,142 @@ private:
     std::int32_t First = 0; // a leaf's first triangle in Order, or an inner node's first child
     std::int32_t Count = 0; // a leaf's triangles; 0 for an inner node
   };
-  std::vector<Node> Nodes;
-  std::vector<std::int32_t> Order;
-};
-
-TriangleTree::TriangleTree(const Surface& surface)
-  : Order(static_cast<std::size_t>(surface.NumberOfTriangles()))
-{
-  std::iota(this->Order.begin(), this->Order.end(), 0);
-  if (this->Order.empty())
+  /// A triangle's centre next to its id, so that each split reorders them in place.
+  struct Entry
   {
-    return;
-  }
-  std::vector<Vec3> centres(this->Order.size());
-  for (std::size_t t = 0; t < centres.size(); ++t)
-  {
-    const auto triangle = static_cast<std::int32_t>(t);
-    centres[t] = (surface.Corner(triangle, 0) + surface.Corner(triangle, 1) + surface.Corner(triangle, 2)) / 3.0;
-  }
-  // Each pending node with its range of Order, split until its range is a leaf's.
+    Vec3 Centre;
+    std::int32_t Triangle;
+  };
+  /// A node still to split, with its range of entries.
   struct Pending
   {
     std::int32_t Node, Begin, End;
   };
-  this->Nodes.emplace_back();
-  std::vector<Pending> pending = { { 0, 0, static_cast<std::int32_t>(this->Order.size()) } };
+
+  /// Splits the range of nodes[root.Node] down to leaves, appending the nodes made; a range of
+  /// at most deferBelow entries (above a leaf's) is added to deferred instead, when not null.
+  static void Split(std::vector<Entry>& entries, std::vector<Node>& nodes, Pending root, std::int32_t deferBelow,
+    std::vector<Pending>* deferred);
+  /// The box of node n from its triangles or its children's boxes.
+  void Box(const Surface& surface, std::size_t n);
+
+  std::vector<Node> Nodes;
+  std::vector<std::int32_t> Order;
+};
+
+void TriangleTree::Split(std::vector<Entry>& entries, std::vector<Node>& nodes, Pending root,
+  std::int32_t deferBelow, std::vector<Pending>* deferred)
+{
+  std::vector<Pending> pending = { root };
   while (!pending.empty())
   {
     const Pending range = pending.back();
     pending.pop_back();
     if (range.End - range.Begin <= LeafSize)
     {
-      this->Nodes[range.Node].First = range.Begin;
-      this->Nodes[range.Node].Count = range.End - range.Begin;
+      nodes[range.Node].First = range.Begin;
+      nodes[range.Node].Count = range.End - range.Begin;
+      continue;
+    }
+    if (deferred && range.End - range.Begin <= deferBelow)
+    {
+      deferred->push_back(range);
       continue;
     }
     Eigen::AlignedBox3d middles;
     for (std::int32_t i = range.Begin; i < range.End; ++i)
     {
-      middles.extend(centres[this->Order[i]]);
+      middles.extend(entries[i].Centre);
     }
     int axis = 0;
     middles.sizes().maxCoeff(&axis);
     const std::int32_t middle = range.Begin + (range.End - range.Begin) / 2;
-    std::nth_element(this->Order.begin() + range.Begin, this->Order.begin() + middle, this->Order.begin() + range.End,
-      [&](std::int32_t a, std::int32_t b) { return centres[a][axis] < centres[b][axis] || (centres[a][axis] == centres[b][axis] && a < b); });
-    const auto first = static_cast<std::int32_t>(this->Nodes.size());
-    this->Nodes[range.Node].First = first;
-    this->Nodes.resize(this->Nodes.size() + 2);
+    std::nth_element(entries.begin() + range.Begin, entries.begin() + middle, entries.begin() + range.End,
+      [axis](const Entry& a, const Entry& b) {
+        return a.Centre[axis] < b.Centre[axis] || (a.Centre[axis] == b.Centre[axis] && a.Triangle < b.Triangle);
+      });
+    const auto first = static_cast<std::int32_t>(nodes.size());
+    nodes[range.Node].First = first;
+    nodes.resize(nodes.size() + 2);
     pending.push_back({ first, range.Begin, middle });
     pending.push_back({ first + 1, middle, range.End });
   }
-  // The boxes, bottom up: children come after their parent.
-  for (auto node = this->Nodes.rbegin(); node != this->Nodes.rend(); ++node)
+}
+
+void TriangleTree::Box(const Surface& surface, std::size_t n)
+{
+  Node& node = this->Nodes[n];
+  if (node.Count == 0)
   {
-    if (node->Count > 0)
+    node.Box = this->Nodes[node.First].Box.merged(this->Nodes[node.First + 1].Box);
+    return;
+  }
+  for (std::int32_t i = node.First; i < node.First + node.Count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
     {
-      for (std::int32_t i = node->First; i < node->First + node->Count; ++i)
+      node.Box.extend(surface.Corner(this->Order[i], k));
+    }
+  }
+}
+
+TriangleTree::TriangleTree(const Surface& surface, const ExecutionContext& context)
+  : Order(static_cast<std::size_t>(surface.NumberOfTriangles()))
+{
+  const auto n = static_cast<std::int32_t>(this->Order.size());
+  if (n == 0)
+  {
+    return;
+  }
+  std::vector<Entry> entries(this->Order.size());
+  context.For(n, [&](std::int64_t begin, std::int64_t end) {
+    for (auto t = static_cast<std::int32_t>(begin); t < end; ++t)
+    {
+      entries[t] = { (surface.Corner(t, 0) + surface.Corner(t, 1) + surface.Corner(t, 2)) / 3.0, t };
+    }
+  }, 10 * static_cast<std::int64_t>(n));
+  // 1. The top of the tree, down to ranges small enough to share among the threads.
+  this->Nodes.resize(1);
+  std::vector<Pending> deferred;
+  const std::int32_t share = context.Threads > 1 ? n / (4 * context.Threads) : 0;
+  Split(entries, this->Nodes, { 0, 0, n }, share, &deferred);
+  const std::size_t top = this->Nodes.size();
+  // 2. The subtrees below it, concurrently, each into nodes of its own (its root first).
+  std::vector<std::vector<Node>> subtrees(deferred.size());
+  context.For(static_cast<std::int64_t>(deferred.size()), [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t d = begin; d < end; ++d)
+    {
+      subtrees[d].resize(1);
+      Split(entries, subtrees[d], { 0, deferred[d].Begin, deferred[d].End }, 0, nullptr);
+    }
+  }, 200 * static_cast<std::int64_t>(n));
+  std::transform(entries.begin(), entries.end(), this->Order.begin(), [](const Entry& entry) { return entry.Triangle; });
+  // 3. Each subtree after the top, its root in the place the top gave it.
+  std::vector<std::size_t> offsets(deferred.size() + 1, top);
+  for (std::size_t d = 0; d < deferred.size(); ++d)
+  {
+    offsets[d + 1] = offsets[d] + subtrees[d].size() - 1;
+  }
+  this->Nodes.resize(offsets.back());
+  context.For(static_cast<std::int64_t>(deferred.size()), [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t d = begin; d < end; ++d)
+    {
+      const auto moved = [&](Node node) {
+        node.First += node.Count > 0 ? 0 : static_cast<std::int32_t>(offsets[d]) - 1;
+        return node;
+      };
+      this->Nodes[deferred[d].Node] = moved(subtrees[d][0]);
+      std::transform(subtrees[d].begin() + 1, subtrees[d].end(), this->Nodes.begin() + offsets[d], moved);
+      for (std::size_t node = offsets[d + 1]; node-- > offsets[d];)
       {
-        for (int k = 0; k < 3; ++k)
-        {
-          node->Box.extend(surface.Corner(this->Order[i], k));
-        }
+        this->Box(surface, node);
       }
     }
-    else
-    {
-      node->Box = this->Nodes[node->First].Box.merged(this->Nodes[node->First + 1].Box);
-    }
+  }, 50 * static_cast<std::int64_t>(n));
+  // 4. The boxes of the top, bottom up (children come after their parent).
+  for (std::size_t node = top; node-- > 0;)
+  {
+    this->Box(surface, node);
   }
 }
 
@@ -397,9 +466,14 @@ double PointTriangleDistance(const Vec3& x, const Vec3& a, const Vec3& b, const 
   return (x - ClosestPointOnTriangle(x, a, b, c)).norm();
 }
 
+void Surface::PrepareNearer(const ExecutionContext& context) const
+{
+  std::call_once(this->TreeMade, [this, &context] { this->Tree = std::make_unique<TriangleTree>(*this, context); });
+}
+
 Nearest Surface::Nearer(const Vec3& x, Nearest guess) const
 {
-  std::call_once(this->TreeMade, [this] { this->Tree = std::make_unique<TriangleTree>(*this); });
+  this->PrepareNearer(ExecutionContext());
   this->Tree->Nearer(*this, x, guess);
   return guess;
 }

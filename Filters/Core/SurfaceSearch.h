@@ -9,6 +9,7 @@
 #ifndef MeshSimplification_SurfaceSearch_h
 #define MeshSimplification_SurfaceSearch_h
 
+#include "Execution.h"
 #include "TriangleMesh.h"
 
 #include <Eigen/Core>
@@ -129,6 +130,8 @@ public:
   /// ended) leaves it little to visit; and the nearest within guess.Distance only, so that a
   /// guess of that distance and no triangle bounds the search.
   Nearest Nearer(const Eigen::Vector3d& x, Nearest guess) const;
+  /// Makes Nearer's tree now, on context's threads (else the first call makes it on its own).
+  void PrepareNearer(const ExecutionContext& context) const;
 
   const std::vector<Eigen::Vector3d> Points;
   const std::vector<std::int32_t> Corners;

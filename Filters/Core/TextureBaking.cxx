@@ -36,7 +36,8 @@ public:
   static constexpr std::int32_t CheckStep = 4;
 
   SquareBaker(const TriangleMeshView& mesh, const TextureAtlas& atlas, const TriangleMeshView& original,
-    const SurfaceValues& values, const std::vector<std::int32_t>& seeds, double maximumDistance)
+    const SurfaceValues& values, const std::vector<std::int32_t>& seeds, double maximumDistance,
+    const ExecutionContext& context)
     : Mesh(mesh)
     , Atlas(atlas)
     , Original(original)
@@ -45,6 +46,7 @@ public:
     , MaximumDistance(maximumDistance)
     , Search(UsableSurface(original, this->OriginalTriangle))
   {
+    this->Search.PrepareNearer(context);
   }
 
   /// Samples the texels on the square's triangles, then writes all its texels.
@@ -326,7 +328,7 @@ BakedTexture BakeTexels(const TriangleMeshView& mesh, const TextureAtlas& atlas,
   BakedTexture baked;
   baked.Components = values.Components;
   baked.Values.assign(static_cast<std::size_t>(atlas.Size) * atlas.Size * values.Components, std::numeric_limits<float>::quiet_NaN());
-  const SquareBaker baker(mesh, atlas, original, values, seeds, maximumDistance);
+  const SquareBaker baker(mesh, atlas, original, values, seeds, maximumDistance, context);
   // In batches of squares, so that progress moves and an abort is heard.
   const std::int64_t squares = static_cast<std::int64_t>(atlas.Squares.size()), batches = 20;
   std::vector<Scratch> scratches;

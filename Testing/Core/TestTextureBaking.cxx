@@ -212,10 +212,13 @@ void CoarseMeshTakesTheNearestPoint()
 void TreeSearchIsExact()
 {
   // The tree's search from no guess finds the grid's nearest distance; from a guess nearer than
-  // any triangle it keeps the guess; from a far guess it finds the nearest.
+  // any triangle it keeps the guess; from a far guess it finds the nearest. A tree made on
+  // three threads answers as the one made on one.
   Mesh sphere = Sphere(10);
   std::vector<std::int32_t> triangle;
   const meshsimp::Surface surface = meshsimp::UsableSurface(sphere.View(), triangle);
+  const meshsimp::Surface threaded = meshsimp::UsableSurface(sphere.View(), triangle);
+  threaded.PrepareNearer(meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-0.3, 1.3);
   for (int i = 0; i < 500; ++i)
@@ -223,6 +226,8 @@ void TreeSearchIsExact()
     const Vector3d x(coordinate(random), coordinate(random), coordinate(random));
     const meshsimp::Nearest exact = surface.Exact(x), found = surface.Nearer(x, meshsimp::Nearest());
     CHECK(found.Triangle >= 0 && std::abs(found.Distance - exact.Distance) <= 1e-12);
+    const meshsimp::Nearest same = threaded.Nearer(x, meshsimp::Nearest());
+    CHECK(same.Triangle == found.Triangle && same.Distance == found.Distance);
     meshsimp::Nearest tight;
     tight.Distance = 0.5 * exact.Distance;
     CHECK(surface.Nearer(x, tight).Triangle == -1);
