@@ -501,6 +501,7 @@ Surface UsableSurface(const TriangleMeshView& mesh, std::vector<std::int32_t>& t
     points[p] = mesh.Point(p);
   }
   std::vector<std::int32_t> corners;
+  triangle.clear();
   for (std::int64_t t = 0; t < mesh.NumberOfTriangles; ++t)
   {
     if (UsableTriangle(mesh, t))

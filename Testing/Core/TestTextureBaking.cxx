@@ -215,9 +215,9 @@ void TreeSearchIsExact()
   // any triangle it keeps the guess; from a far guess it finds the nearest. A tree made on
   // three threads answers as the one made on one.
   Mesh sphere = Sphere(10);
-  std::vector<std::int32_t> triangle;
+  std::vector<std::int32_t> triangle, alike;
   const meshsimp::Surface surface = meshsimp::UsableSurface(sphere.View(), triangle);
-  const meshsimp::Surface threaded = meshsimp::UsableSurface(sphere.View(), triangle);
+  const meshsimp::Surface threaded = meshsimp::UsableSurface(sphere.View(), alike);
   threaded.PrepareNearer(meshsimp_test::Threaded<meshsimp::ExecutionContext>(3));
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-0.3, 1.3);
