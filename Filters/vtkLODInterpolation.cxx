@@ -31,8 +31,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -48,13 +50,14 @@ struct MorphedArray
   vtkDataArray* Coarse = nullptr;
   vtkMTimeType DetailedTime = 0, CoarseTime = 0;
   std::vector<double> Values;
-  vtkSmartPointer<vtkDoubleArray> Output; // the last frame's
+  vtkSmartPointer<vtkDataArray> Output; // the last frame's, of the detailed array's type
 };
 
 /// The last frame's output arrays (see Reuse).
 struct FrameArrays
 {
   vtkSmartPointer<vtkDoubleArray> Places, Displacement;
+  vtkSmartPointer<vtkFloatArray> SinglePlaces; // the points, where the output's are floats
   vtkSmartPointer<vtkTypeInt32Array> Offsets, Connectivity;
 };
 
@@ -72,6 +75,53 @@ ArrayType* Reuse(vtkSmartPointer<ArrayType>& kept, int components, vtkIdType tup
   kept->SetNumberOfTuples(tuples);
   kept->Modified();
   return kept;
+}
+
+/// Reuse for an array holding values (components per tuple), copied on the threads.
+template <typename ArrayType>
+ArrayType* Copied(vtkSmartPointer<ArrayType>& kept, const double* values, int components, vtkIdType tuples,
+  const meshsimp::ExecutionContext& context)
+{
+  ArrayType* array = Reuse(kept, components, tuples);
+  auto* to = array->GetPointer(0);
+  context.For(components * tuples, [&](std::int64_t begin, std::int64_t end) {
+    std::copy(values + begin, values + end, to + begin);
+  }, components * tuples);
+  return array;
+}
+
+/// Reuse for an array of like's type and components.
+vtkDataArray* ReuseLike(vtkSmartPointer<vtkDataArray>& kept, vtkDataArray* like, vtkIdType tuples)
+{
+  if (!kept || kept->GetReferenceCount() > 1 || kept->GetDataType() != like->GetDataType())
+  {
+    kept.TakeReference(like->NewInstance());
+  }
+  kept->SetNumberOfComponents(like->GetNumberOfComponents());
+  kept->SetNumberOfTuples(tuples);
+  kept->Modified();
+  return kept;
+}
+
+/// A blended value in an array's type: an integer rounded and held to the type's range.
+template <typename Value>
+Value Stored(double value)
+{
+  if (std::is_integral<Value>::value)
+  {
+    const double lowest = static_cast<double>(std::numeric_limits<Value>::lowest());
+    const double highest = static_cast<double>(std::numeric_limits<Value>::max());
+    return static_cast<Value>(std::min(highest, std::max(lowest, std::round(value))));
+  }
+  return static_cast<Value>(value);
+}
+
+/// Whether a point array morphs: floating-point values, or unsigned-char colours (3 or 4
+/// components); integers besides (labels, ids) would mean nothing halfway.
+bool Morphs(vtkDataArray* array)
+{
+  const int type = array->GetDataType(), components = array->GetNumberOfComponents();
+  return type == VTK_FLOAT || type == VTK_DOUBLE || (type == VTK_UNSIGNED_CHAR && (components == 3 || components == 4));
 }
 }
 
@@ -223,32 +273,37 @@ struct BlendAtPartners
   }
 };
 
-/// A floating-point point array of the detailed surface for the frame at t: each point's value
-/// blended as its place, (1 − t) its own + t its partner's; the members of a merged set take
-/// their mean; unit vectors (normals) stay unit.
+/// A morphing point array of the detailed surface for the frame at t, into output (an array of
+/// its type): each point's value blended as its place, (1 − t) its own + t its partner's; the
+/// members of a merged set take their mean; unit vectors (normals) stay unit.
 struct MorphValues
 {
   template <typename DetailedArray>
   void operator()(DetailedArray* detailed, const std::vector<double>& towards, vtkDataArray* output,
     const meshsimp::MorphFrame& frame, double t, bool unit, const meshsimp::ExecutionContext& context) const
   {
+    using Value = vtk::GetAPIType<DetailedArray>;
     const auto own = vtk::DataArrayTupleRange(detailed);
-    auto out = vtk::DataArrayTupleRange(vtkAOSDataArrayTemplate<double>::FastDownCast(output));
+    auto out = vtk::DataArrayTupleRange(static_cast<DetailedArray*>(output));
     const int components = detailed->GetNumberOfComponents();
+    // Writes one tuple from values (components doubles), made unit where asked.
+    const auto write = [&](std::int64_t d, double* values) {
+      const double length2 = unit ? std::inner_product(values, values + components, values, 0.0) : 0.0;
+      const double scale = length2 > 0.0 ? 1.0 / std::sqrt(length2) : 1.0;
+      for (int k = 0; k < components; ++k)
+      {
+        out[d][k] = Stored<Value>(values[k] * scale);
+      }
+    };
     context.For(own.size(), [&](std::int64_t begin, std::int64_t end) {
+      std::vector<double> values(components);
       for (std::int64_t d = begin; d < end; ++d)
       {
-        double length2 = 0.0;
         for (int k = 0; k < components; ++k)
         {
-          out[d][k] = (1.0 - t) * static_cast<double>(own[d][k]) + t * towards[d * components + k];
-          length2 += out[d][k] * out[d][k];
+          values[k] = (1.0 - t) * static_cast<double>(own[d][k]) + t * towards[d * components + k];
         }
-        const double scale = unit && length2 > 0.0 ? 1.0 / std::sqrt(length2) : 1.0;
-        for (int k = 0; scale != 1.0 && k < components; ++k)
-        {
-          out[d][k] *= scale;
-        }
+        write(d, values.data());
       }
     }, 4 * components * own.size());
     context.For(frame.NumberOfGroups(), [&](std::int64_t begin, std::int64_t end) {
@@ -261,16 +316,12 @@ struct MorphValues
         {
           for (int k = 0; k < components; ++k)
           {
-            mean[k] += out[frame.GroupMembers[i]][k] / (last - first);
+            mean[k] += static_cast<double>(out[frame.GroupMembers[i]][k]) / (last - first);
           }
         }
-        const double length = unit ? std::sqrt(std::inner_product(mean.begin(), mean.end(), mean.begin(), 0.0)) : 1.0;
         for (std::int32_t i = first; i < last; ++i)
         {
-          for (int k = 0; k < components; ++k)
-          {
-            out[frame.GroupMembers[i]][k] = length > 0.0 ? mean[k] / length : mean[k];
-          }
+          write(frame.GroupMembers[i], mean.data());
         }
       }
     }, 10 * components * static_cast<std::int64_t>(frame.GroupOffsets.back()));
@@ -301,10 +352,10 @@ MorphedArray& PartnerValues(vtkDataArray* detailed, vtkDataArray* coarse,
   return *entry;
 }
 
-/// Every point array of the detailed surface for the frame: floating-point arrays that the
-/// coarse surface also has (same name and components) morphed as doubles, the others as they
-/// are (a merged set's triangles use its lowest id, whose value that is); the active attributes
-/// kept active, the normals unit.
+/// Every point array of the detailed surface for the frame: the arrays that morph (Morphs) and
+/// that the coarse surface also has (same name and components) morphed in their own type, the
+/// others as they are (a merged set's triangles use its lowest id, whose value that is); the
+/// active attributes kept active, the normals unit.
 void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp::MorphPartners& partners,
   const meshsimp::MorphFrame& frame, double t, const meshsimp::ExecutionContext& context,
   std::vector<MorphedArray>& kept, vtkPointData* output)
@@ -318,19 +369,18 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
       continue;
     }
     vtkDataArray* match = coarse->GetArray(array->GetName());
-    const bool morphs = t > 0.0 && match && match->GetNumberOfComponents() == array->GetNumberOfComponents() &&
-      (array->GetDataType() == VTK_FLOAT || array->GetDataType() == VTK_DOUBLE);
+    const bool morphs = t > 0.0 && match && match->GetNumberOfComponents() == array->GetNumberOfComponents() && Morphs(array);
     vtkSmartPointer<vtkDataArray> morphed = array;
     const int attribute = detailed->IsArrayAnAttribute(i);
     if (morphs)
     {
       MorphedArray& entry = PartnerValues(array, match, partners, context, kept);
-      morphed = Reuse(entry.Output, array->GetNumberOfComponents(), detailedPoints);
+      morphed = ReuseLike(entry.Output, array, detailedPoints);
       morphed->SetName(array->GetName());
       const std::vector<double>& towards = entry.Values;
       const bool unit = attribute == vtkDataSetAttributes::NORMALS;
       MorphValues worker;
-      if (!vtkArrayDispatch::DispatchByValueType<vtkArrayDispatch::Reals>::Execute(
+      if (!vtkArrayDispatch::DispatchByValueType<vtkTypeList::Create<float, double, unsigned char>>::Execute(
             array, worker, towards, morphed.Get(), frame, t, unit, context))
       {
         worker(array, towards, morphed.Get(), frame, t, unit, context);
@@ -395,23 +445,25 @@ void WriteShaderInput(vtkPolyData* detailed, const meshsimp::MorphPartners& part
   output->GetPointData()->SetTangents(targets);
 }
 
-/// The frame at t: its points, triangles with cell data, point data and Displacement.
+/// The frame at t: its points (of type precision, VTK_FLOAT or VTK_DOUBLE), triangles with cell
+/// data, point data and Displacement.
 void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t,
+  const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t, int precision,
   const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame, std::vector<MorphedArray>& kept,
   FrameArrays& written, vtkPolyData* output)
 {
   const meshsimp::TriangleMeshView& view = triangles.View;
   vtkDoubleArray* places = Reuse(written.Places, 3, view.NumberOfPoints);
   meshsimp::Morph(view, partners, merges, t, places->GetPointer(0), frame, context);
+  const bool single = precision == VTK_FLOAT;
   vtkNew<vtkPoints> points;
-  points->SetData(places);
+  points->SetData(single ? Copied(written.SinglePlaces, places->GetPointer(0), 3, view.NumberOfPoints, context)
+                         : static_cast<vtkDataArray*>(places));
   output->SetPoints(points);
   WriteTriangles(detailed, triangles, frame, written, output);
   MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, context, kept, output->GetPointData());
-  vtkDoubleArray* displacement = Reuse(written.Displacement, 1, view.NumberOfPoints);
+  vtkDoubleArray* displacement = Copied(written.Displacement, frame.Displacement.data(), 1, view.NumberOfPoints, context);
   displacement->SetName("Displacement");
-  std::copy(frame.Displacement.begin(), frame.Displacement.end(), displacement->GetPointer(0));
   output->GetPointData()->AddArray(displacement);
 }
 } // namespace
@@ -608,8 +660,10 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   }
   else
   {
-    WriteFrame(detailedData, coarseData, built.DetailedTriangles, built.Partners, built.Merges, t, context, built.Frame,
-      built.Arrays, built.Written, output);
+    const bool single = this->OutputPointsPrecision == SINGLE_PRECISION ||
+      (this->OutputPointsPrecision == DEFAULT_PRECISION && detailed->GetPoints()->GetDataType() == VTK_FLOAT);
+    WriteFrame(detailedData, coarseData, built.DetailedTriangles, built.Partners, built.Merges, t,
+      single ? VTK_FLOAT : VTK_DOUBLE, context, built.Frame, built.Arrays, built.Written, output);
   }
   output->GetFieldData()->PassData(detailed->GetFieldData());
   vtkNew<vtkIntArray> builds;
@@ -629,5 +683,6 @@ void vtkLODInterpolation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MorphInShader: " << this->MorphInShader << "\n";
   os << indent << "DetailedReduction: " << this->DetailedReduction << "\n";
   os << indent << "CoarseReduction: " << this->CoarseReduction << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "CorrespondenceBuilds: " << this->CorrespondenceBuilds << "\n";
 }

@@ -30,10 +30,12 @@
  * once per MergeDistance): a frame is one pass over the points and triangles, threaded. With
  * InterpolationFromTime the time asked for sets the frame (times 0 to 1 are reported).
  *
- * Point data: every floating-point point array of the detailed surface that the coarse surface
- * has too (same name and number of components) morphs towards it, as doubles (colours given
- * as floats and scalars morph); the others pass unchanged; the active normals stay unit. Cell
- * data follow the detailed triangles. The point array "Displacement" holds how far each point
+ * Point data: every floating-point point array of the detailed surface, and every unsigned-char
+ * colour array (3 or 4 components), that the coarse surface has too (same name and number of
+ * components) morphs towards it, in its own type (colours rounded); the others (labels, ids:
+ * integers that mean nothing halfway) pass unchanged; the active normals stay unit. The points
+ * are of the detailed surface's type (OutputPointsPrecision). Cell data follow the detailed
+ * triangles. The point array "Displacement" holds how far each point
  * stands from its place on the detailed surface (input units); the field data
  * "CorrespondenceBuilds" how many times the correspondence has been built.
  *
@@ -134,6 +136,17 @@ public:
   vtkGetMacro(CoarseReduction, double);
   ///@}
 
+  ///@{
+  /**
+   * The type of the frame's points: vtkAlgorithm::DEFAULT_PRECISION (default), the detailed
+   * surface's (floats stay floats: half the memory, and a renderer takes them without a
+   * conversion); SINGLE_PRECISION, floats; DOUBLE_PRECISION, doubles. The morph itself is
+   * computed in doubles.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
   /// The coarse surface (input 1).
   void SetCoarseConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetCoarseData(vtkDataObject* data) { this->SetInputData(1, data); }
@@ -168,6 +181,7 @@ private:
   bool MorphInShader = false;
   double DetailedReduction = 0.0;
   double CoarseReduction = 0.9;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
   int CorrespondenceBuilds = 0;
   struct Cache;
   std::unique_ptr<Cache> Built; // the correspondence and what it was built from

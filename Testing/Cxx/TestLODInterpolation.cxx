@@ -22,6 +22,7 @@
 #include "vtkInformation.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "TestBadInput.h"
 #include "TestImageHelpers.h"
@@ -126,12 +127,14 @@ vtkIdType Folds(vtkPolyData* output, vtkPolyData* detailed, vtkDataArray* ancest
   return folds;
 }
 
-/// A morph of detailed towards coarse.
+/// A morph of detailed towards coarse, its points in doubles, so that the morph's arithmetic
+/// can be checked to 1e-9 (the default keeps the sphere's floats: TestFrameKeepsTypes).
 vtkSmartPointer<vtkLODInterpolation> MorphOf(vtkPolyData* detailed, vtkPolyData* coarse)
 {
   auto morph = vtkSmartPointer<vtkLODInterpolation>::New();
   morph->SetInputData(0, detailed);
   morph->SetCoarseData(coarse);
+  morph->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   return morph;
 }
 
@@ -367,6 +370,63 @@ std::vector<std::string> MorphErrors(vtkPolyData* detailed, vtkPolyData* coarse)
   return errors;
 }
 
+/// A frame keeps the detailed surface's types: float points stay floats (the morph's doubles
+/// rounded), unsigned-char colours morph as rounded colours, integer labels pass as they are.
+void TestFrameKeepsTypes()
+{
+  vtkSmartPointer<vtkPolyData> detailed, coarse;
+  SphereAndCoarse(detailed, coarse);
+  const unsigned char coarseColour[3] = { 200, 10, 30 };
+  for (vtkPolyData* mesh : { detailed.GetPointer(), coarse.GetPointer() })
+  {
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetName("Colors");
+    colours->SetNumberOfComponents(3);
+    vtkNew<vtkIntArray> labels;
+    labels->SetName("Label");
+    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    {
+      const auto shade = static_cast<unsigned char>(127.5 * (1.0 + mesh->GetPoint(p)[2] / 0.5));
+      const unsigned char own[3] = { shade, static_cast<unsigned char>(255 - shade), 0 };
+      colours->InsertNextTypedTuple(mesh == coarse ? coarseColour : own);
+      labels->InsertNextValue(mesh == coarse ? 7 : static_cast<int>(p % 5));
+    }
+    mesh->GetPointData()->AddArray(colours);
+    mesh->GetPointData()->AddArray(labels);
+  }
+  CHECK(detailed->GetPoints()->GetDataType() == VTK_FLOAT);
+  const vtkSmartPointer<vtkLODInterpolation> morph = MorphOf(detailed, coarse), inDoubles = MorphOf(detailed, coarse);
+  morph->SetOutputPointsPrecision(vtkAlgorithm::DEFAULT_PRECISION);
+  for (const double t : { 0.5, 1.0 })
+  {
+    for (vtkLODInterpolation* filter : { morph.GetPointer(), inDoubles.GetPointer() })
+    {
+      filter->SetMergeDistance(0.0);
+      filter->SetInterpolation(t);
+      filter->Update();
+    }
+    vtkPolyData* out = morph->GetOutput();
+    vtkPolyData* exact = inDoubles->GetOutput();
+    CHECK(out->GetPoints()->GetDataType() == VTK_FLOAT && exact->GetPoints()->GetDataType() == VTK_DOUBLE);
+    auto* colours = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Colors"));
+    auto* own = vtkUnsignedCharArray::SafeDownCast(detailed->GetPointData()->GetArray("Colors"));
+    CHECK(colours != nullptr && out->GetPointData()->GetArray("Label") == detailed->GetPointData()->GetArray("Label"));
+    CHECK(out->GetPointData()->GetArray("Height")->GetDataType() == VTK_DOUBLE);
+    for (vtkIdType p = 0; colours && p < out->GetNumberOfPoints(); ++p)
+    {
+      double a[3], b[3];
+      out->GetPoint(p, a);
+      exact->GetPoint(p, b);
+      for (int k = 0; k < 3; ++k)
+      {
+        CHECK(a[k] == static_cast<float>(b[k]));
+        const double expected = (1.0 - t) * own->GetTypedComponent(p, k) + t * coarseColour[k];
+        CHECK(std::abs(colours->GetTypedComponent(p, k) - expected) <= 0.5 + 1e-9);
+      }
+    }
+  }
+}
+
 void TestBadInput()
 {
   // An empty coarse surface, one of points alone: one error of the filter's (none of the
@@ -455,6 +515,7 @@ int TestLODInterpolation(int argc, char* argv[])
   TestSequenceAlone();
   TestMorphInShader();
   TestTimeDrivesTheMorph();
+  TestFrameKeepsTypes();
   TestBadInput();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
