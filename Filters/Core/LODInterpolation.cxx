@@ -107,6 +107,20 @@ std::pair<double, double> MergeWindow(const Vec3& D, const Vec3& E, double epsil
   return b < 0.0 ? std::make_pair(C / q, unbounded) : none; // linear: 2 b t + C
 }
 
+/**
+ * When the triangle (a, b, c) turns over in a geomorph that sends b and c to one place B and a
+ * to A: the t in (0, 1) where its normal stands square to its normal at t = 0 (infinite where
+ * it never does). With c − b shrinking as (1 − t)(c − b), the normal is (1 − t) times
+ * ((b − a) + t ((B − A) − (b − a))) × (c − b), whose part along the first normal n goes
+ * linearly from |n|² at t = 0 to ((B − A) × (c − b)) · n at t = 1.
+ */
+double TurnOver(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& A, const Vec3& B)
+{
+  const Vec3 normal = (b - a).cross(c - a);
+  const double start = normal.squaredNorm(), end = (B - A).cross(c - b).dot(normal);
+  return start > 0.0 && end < 0.0 ? start / (start - end) : std::numeric_limits<double>::infinity();
+}
+
 /// A scheduled edge while the schedule is sorted.
 struct ScheduledEdge
 {
@@ -405,7 +419,7 @@ MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartne
   std::vector<std::vector<ScheduledEdge>> found(static_cast<std::size_t>(blocks));
   context.For(blocks, [&](std::int64_t begin, std::int64_t end) {
     std::int32_t corner[3];
-    for (std::int64_t block = begin; epsilon > 0.0 && block < end; ++block)
+    for (std::int64_t block = begin; (epsilon > 0.0 || samePartnerOnly) && block < end; ++block)
     {
       for (std::int64_t s = triangles * block / blocks, last = triangles * (block + 1) / blocks; s < last; ++s)
       {
@@ -416,7 +430,16 @@ MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartne
         for (int k = 0; k < 3; ++k)
         {
           const std::int32_t a = std::min(corner[k], corner[(k + 1) % 3]), b = std::max(corner[k], corner[(k + 1) % 3]);
-          const auto [from, to] = MergeWindow(detailed.Point(a) - detailed.Point(b), target(a) - target(b), epsilon);
+          auto [from, to] = MergeWindow(detailed.Point(a) - detailed.Point(b), target(a) - target(b), epsilon);
+          if (samePartnerOnly && samePartner(a, b))
+          {
+            // The triangle vanishes at t = 1: its edge joins before it would turn over, and its
+            // ends, closing in on one point, stay joined.
+            const std::int32_t opposite = corner[(k + 2) % 3];
+            from = std::min(from, TurnOver(detailed.Point(opposite), detailed.Point(corner[k]), detailed.Point(corner[(k + 1) % 3]),
+              target(opposite), target(corner[k])));
+            to = std::isfinite(from) ? std::numeric_limits<double>::infinity() : to;
+          }
           if (a != b && from < 1.0 && to > std::max(0.0, from) && (!samePartnerOnly || samePartner(a, b)))
           {
             found[block].push_back({ std::max(0.0, from), to, a, b });

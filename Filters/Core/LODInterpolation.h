@@ -102,7 +102,10 @@ struct MergeSchedule
  * t · mergeDistance on one interval of t (a quadratic's sign), computed here once so that a
  * frame only reads it. samePartnerOnly (a geomorph's rule): only points bound for one coarse
  * point join, so that at t = 1 the triangles left are those of the coarse mesh, whatever the
- * distance between its points.
+ * distance between its points; and a triangle that vanishes (two corners bound for one point)
+ * but would turn over on its way, where its third corner crosses the line of the other two,
+ * loses its edge at the moment it stands square to its first normal: those two corners join
+ * then, at any merge distance, and stay joined.
  */
 MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartners& partners, double mergeDistance,
   const ExecutionContext& context = {}, bool samePartnerOnly = false);

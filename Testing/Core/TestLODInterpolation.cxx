@@ -188,6 +188,31 @@ void GeomorphJoinsOnlyWhatMeetsAtOnePoint()
   }
 }
 
+void VanishingTriangleJoinsBeforeItTurnsOver()
+{
+  // A geomorph sends b and c to the origin and a from above it to below: the triangle (a, b, c)
+  // lies flat at t = 0.5 and would turn over after it. Its edge (b, c) joins there, whatever the
+  // merge distance (none here), so no frame shows it turned; before, it stands as it was.
+  Mesh detailed;
+  detailed.Points = { 0, 1, 0, -1, 0, 0, 1, 0, 0 };
+  detailed.Triangles = { 0, 1, 2 };
+  Mesh coarse;
+  coarse.Points = { 0, 0, 0, 0, -1, 0 };
+  const MorphPartners partners = meshsimp::PairAncestors(detailed.View(), coarse.View(), { 1, 0, 0 });
+  const meshsimp::MergeSchedule merges = meshsimp::ScheduleMerges(detailed.View(), partners, 0.0, {}, true);
+  for (const double t : { 0.25, 0.49, 0.51, 0.75, 1.0 })
+  {
+    Frame frame;
+    frame.Points.resize(detailed.Points.size());
+    meshsimp::Morph(detailed.View(), partners, merges, t, frame.Points.data(), frame.Morphed);
+    CHECK(frame.Morphed.NumberOfTriangles() == (t < 0.5 ? 1 : 0));
+    CHECK(t < 0.5 || (frame.Morphed.NumberOfGroups() == 1 && frame.Morphed.Root[2] == 1));
+  }
+  // Where a stays above the edge the triangle only flattens: nothing joins before t = 1.
+  const MorphPartners above = meshsimp::PairAncestors(detailed.View(), Mesh{ { 0, 0, 0, 0, 1, 0 }, {} }.View(), { 1, 0, 0 });
+  CHECK(meshsimp::ScheduleMerges(detailed.View(), above, 0.0, {}, true).NumberOfEdges() == 0);
+}
+
 void ScheduleMergesAsADirectTest()
 {
   // Random partners on a bumpy grid: at every t the scheduled sets are those of joining every
@@ -382,6 +407,7 @@ int main()
     { "FrameAtOneIsOnTheCoarseVertices", FrameAtOneIsOnTheCoarseVertices },
     { "AncestorsGoWhereTheyWent", AncestorsGoWhereTheyWent },
     { "GeomorphJoinsOnlyWhatMeetsAtOnePoint", GeomorphJoinsOnlyWhatMeetsAtOnePoint },
+    { "VanishingTriangleJoinsBeforeItTurnsOver", VanishingTriangleJoinsBeforeItTurnsOver },
     { "ScheduleMergesAsADirectTest", ScheduleMergesAsADirectTest },
     { "SurfacePointsAreTheClosest", SurfacePointsAreTheClosest },
     { "SameFrameOnAnyThreads", SameFrameOnAnyThreads },
