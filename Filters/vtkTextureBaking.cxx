@@ -292,6 +292,19 @@ void WriteMesh(vtkPolyData* simplified, const vtkSimplification::TriangleInput& 
   output->GetFieldData()->PassData(simplified->GetFieldData());
 }
 
+/// An input as a surface (vtkSimplification::AsSurface: another dataset's surface cells through
+/// vtkGeometryFilter), without the ids of its points and cells in the dataset that that adds.
+vtkSmartPointer<vtkPolyData> Surface(vtkDataObject* input, std::string& problem)
+{
+  vtkSmartPointer<vtkPolyData> surface = vtkSimplification::AsSurface(input, problem);
+  if (surface && surface.GetPointer() != input)
+  {
+    surface->GetPointData()->RemoveArray(vtkSimplification::SurfacePointIdsName);
+    surface->GetCellData()->RemoveArray(vtkSimplification::SurfaceCellIdsName);
+  }
+  return surface;
+}
+
 /// Per simplified point, the original point it came from (vtkOriginalPointIds), where in range.
 std::vector<std::int32_t> Seeds(vtkPolyData* simplified, vtkIdType originalPoints)
 {
@@ -372,7 +385,7 @@ vtkImageData* vtkTextureBaking::GetTexture()
 
 int vtkTextureBaking::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 2 ? "vtkImageData" : "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 2 ? "vtkImageData" : "vtkDataSet");
   if (port == 2)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -398,12 +411,19 @@ int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs
 {
   vtkPolyData* output = vtkPolyData::GetData(outputs, 0);
   vtkImageData* texture = vtkImageData::GetData(outputs, 1);
-  vtkSmartPointer<vtkPolyData> simplified = vtkPolyData::GetData(inputs[0]);
-  vtkSmartPointer<vtkPolyData> original = vtkPolyData::GetData(inputs[1]);
+  vtkDataObject* given[2] = { vtkDataObject::GetData(inputs[0]), vtkDataObject::GetData(inputs[1]) };
   vtkImageData* image = vtkImageData::GetData(inputs[2]);
-  if (!simplified || !original)
+  if (!given[0] || !given[1])
   {
     vtkErrorMacro("Cannot bake: Texture Baking needs the simplified surface (input 0) and the original (input 1).");
+    return 1;
+  }
+  std::string problem;
+  vtkSmartPointer<vtkPolyData> simplified = Surface(given[0], problem);
+  vtkSmartPointer<vtkPolyData> original = simplified ? Surface(given[1], problem) : nullptr;
+  if (!simplified || !original)
+  {
+    vtkErrorMacro("Cannot bake: the " << (simplified ? "original" : "simplified") << " surface: " << problem << ".");
     return 1;
   }
   vtkSimplification::TriangleInput simplifiedTriangles, originalTriangles;
@@ -412,7 +432,6 @@ int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs
   {
     return 1;
   }
-  std::string problem;
   BakeSource source = ChooseSource(this, simplifiedTriangles, originalTriangles, original, image, problem);
   if (!problem.empty())
   {

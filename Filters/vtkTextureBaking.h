@@ -5,7 +5,9 @@
  * Zhang, Shi and Pan, "A new simplification algorithm for colored or textured polygonal
  * models", §4.
  *
- * Input 0 is the simplified surface, input 1 the detailed original and what it shows: an
+ * Input 0 is the simplified surface, input 1 the detailed original (each polygonal data, or any
+ * dataset of surface cells, taken through vtkGeometryFilter as the simplifiers take it), and
+ * what the original shows: an
  * unsigned-char RGB or RGBA point or cell array, shown as it is; any other array, through the
  * LookupTable (by default blue to red over the array's range, VTK's default colour map; a
  * vector array by its magnitude); or, with a texture image on input 2, the original's texture

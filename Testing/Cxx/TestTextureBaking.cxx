@@ -19,7 +19,9 @@
 #include "vtkLookupTable.h"
 #include "vtkPointData.h"
 #include "vtkTexture.h"
+#include "vtkAppendFilter.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include "TestBadInput.h"
@@ -58,7 +60,7 @@ vtkSmartPointer<vtkPolyData> ColouredSphere(int resolution)
   return sphere;
 }
 
-vtkSmartPointer<vtkTextureBaking> Bake(vtkPolyData* simplified, vtkPolyData* original, int size = 1024)
+vtkSmartPointer<vtkTextureBaking> Bake(vtkDataSet* simplified, vtkDataSet* original, int size = 1024)
 {
   auto bake = vtkSmartPointer<vtkTextureBaking>::New();
   bake->SetInputData(0, simplified);
@@ -230,6 +232,23 @@ void TestSimplifiedBake()
     differ += std::abs(int(a->GetValue(i)) - int(b->GetValue(i))) > 1;
   }
   CHECK(a && b && differ < a->GetNumberOfValues() / 1000);
+  // Both surfaces as unstructured grids (a dataset of surface cells): the same texture, and the
+  // output carries no array of the conversion.
+  vtkSmartPointer<vtkDataSet> grids[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    vtkNew<vtkAppendFilter> append;
+    append->AddInputData(i == 0 ? simplified : sphere.GetPointer());
+    append->Update();
+    grids[i] = append->GetOutput();
+  }
+  const vtkSmartPointer<vtkTextureBaking> fromGrids = Bake(grids[0], grids[1]);
+  vtkUnsignedCharArray* c = vtkUnsignedCharArray::SafeDownCast(fromGrids->GetTexture()->GetPointData()->GetScalars());
+  CHECK(c && a && c->GetNumberOfValues() == a->GetNumberOfValues() &&
+    std::equal(a->GetPointer(0), a->GetPointer(0) + a->GetNumberOfValues(), c->GetPointer(0)));
+  CHECK(fromGrids->GetOutput()->GetNumberOfPolys() == bake->GetOutput()->GetNumberOfPolys() &&
+    fromGrids->GetOutput()->GetPointData()->GetNumberOfArrays() == bake->GetOutput()->GetPointData()->GetNumberOfArrays() &&
+    fromGrids->GetOutput()->GetCellData()->GetNumberOfArrays() == bake->GetOutput()->GetCellData()->GetNumberOfArrays());
 }
 
 void TestOtherSources()
@@ -322,7 +341,7 @@ void TestOtherSources()
 }
 
 /// The errors of a bake, one line each.
-std::vector<std::string> BakeErrors(vtkPolyData* simplified, vtkPolyData* original, vtkImageData* image = nullptr,
+std::vector<std::string> BakeErrors(vtkDataSet* simplified, vtkDataSet* original, vtkImageData* image = nullptr,
   int size = 1024, const char* array = nullptr)
 {
   vtkNew<vtkTextureBaking> bake;
@@ -343,6 +362,21 @@ std::vector<std::string> BakeErrors(vtkPolyData* simplified, vtkPolyData* origin
   return log->Errors;
 }
 
+/// One tetrahedron: a dataset of a 3-D cell, no surface.
+vtkSmartPointer<vtkUnstructuredGrid> Tetrahedron()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  points->InsertNextPoint(0, 0, 1);
+  grid->SetPoints(points);
+  const vtkIdType corners[4] = { 0, 1, 2, 3 };
+  grid->InsertNextCell(VTK_TETRA, 4, corners);
+  return grid;
+}
+
 void TestBadInput()
 {
   const vtkSmartPointer<vtkPolyData> sphere = ColouredSphere(60);
@@ -357,6 +391,7 @@ void TestBadInput()
     { BakeErrors(sphere, empty), "Cannot bake: the original has no triangles." },
     { BakeErrors(sphere, sphere, nullptr, 256), "cannot hold 6960 triangles with a gutter of 2 texels: it needs 512 x 512" },
     { BakeErrors(sphere, sphere, nullptr, 1024, "Nothing"), "the original has no point array 'Nothing' to bake" },
+    { BakeErrors(sphere, Tetrahedron()), "Cannot bake: the original surface: the vtkUnstructuredGrid has 3-D cells" },
   };
   for (const auto& [errors, expected] : cases)
   {
