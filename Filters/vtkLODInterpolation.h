@@ -24,7 +24,9 @@
  * closer than Interpolation · MergeDistance (a fraction of the detailed surface's diagonal) join
  * at the place of the member nearest to their mean, with the mean of their point data; the
  * triangles use the lowest id of each joined set (the others are left
- * unused, at the same place) and the triangles left without area go. Point ids thus stay the
+ * unused, at the same place) and the triangles left without area go; with EXACT, two adjacent
+ * points bound for one coarse point also join before a triangle between them would turn over,
+ * and at Interpolation 1 at the latest, whatever the MergeDistance. Point ids thus stay the
  * detailed surface's in every frame. Interpolation 0 gives the detailed surface exactly.
  * Changing Interpolation alone reuses the correspondence and which points join when (computed
  * once per MergeDistance): a frame is one pass over the points and triangles, threaded. With

@@ -433,12 +433,14 @@ MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartne
           auto [from, to] = MergeWindow(detailed.Point(a) - detailed.Point(b), target(a) - target(b), epsilon);
           if (samePartnerOnly && samePartner(a, b))
           {
-            // The triangle vanishes at t = 1: its edge joins before it would turn over, and its
-            // ends, closing in on one point, stay joined.
+            // The triangle vanishes at t = 1: its edge joins before it would turn over, at the
+            // latest at t = 1, where its ends meet, and its ends, closing in on one point, stay
+            // joined.
             const std::int32_t opposite = corner[(k + 2) % 3];
-            from = std::min(from, TurnOver(detailed.Point(opposite), detailed.Point(corner[k]), detailed.Point(corner[(k + 1) % 3]),
-              target(opposite), target(corner[k])));
-            to = std::isfinite(from) ? std::numeric_limits<double>::infinity() : to;
+            from = std::min({ from, std::nextafter(1.0, 0.0),
+              TurnOver(detailed.Point(opposite), detailed.Point(corner[k]), detailed.Point(corner[(k + 1) % 3]),
+                target(opposite), target(corner[k])) });
+            to = std::numeric_limits<double>::infinity();
           }
           if (a != b && from < 1.0 && to > std::max(0.0, from) && (!samePartnerOnly || samePartner(a, b)))
           {

@@ -105,7 +105,8 @@ struct MergeSchedule
  * distance between its points; and a triangle that vanishes (two corners bound for one point)
  * but would turn over on its way, where its third corner crosses the line of the other two,
  * loses its edge at the moment it stands square to its first normal: those two corners join
- * then, at any merge distance, and stay joined.
+ * then, and stay joined; any two adjacent points bound for one point join at t = 1 at the
+ * latest, where they meet, whatever the merge distance.
  */
 MergeSchedule ScheduleMerges(const TriangleMeshView& detailed, const MorphPartners& partners, double mergeDistance,
   const ExecutionContext& context = {}, bool samePartnerOnly = false);

@@ -208,9 +208,17 @@ void VanishingTriangleJoinsBeforeItTurnsOver()
     CHECK(frame.Morphed.NumberOfTriangles() == (t < 0.5 ? 1 : 0));
     CHECK(t < 0.5 || (frame.Morphed.NumberOfGroups() == 1 && frame.Morphed.Root[2] == 1));
   }
-  // Where a stays above the edge the triangle only flattens: nothing joins before t = 1.
+  // Where a stays above the edge the triangle only flattens: its edge joins at t = 1, where its
+  // ends meet, and not before.
   const MorphPartners above = meshsimp::PairAncestors(detailed.View(), Mesh{ { 0, 0, 0, 0, 1, 0 }, {} }.View(), { 1, 0, 0 });
-  CHECK(meshsimp::ScheduleMerges(detailed.View(), above, 0.0, {}, true).NumberOfEdges() == 0);
+  const meshsimp::MergeSchedule atOne = meshsimp::ScheduleMerges(detailed.View(), above, 0.0, {}, true);
+  for (const double t : { 0.99, 1.0 })
+  {
+    Frame frame;
+    frame.Points.resize(detailed.Points.size());
+    meshsimp::Morph(detailed.View(), above, atOne, t, frame.Points.data(), frame.Morphed);
+    CHECK(frame.Morphed.NumberOfTriangles() == (t < 1.0 ? 1 : 0));
+  }
 }
 
 void ScheduleMergesAsADirectTest()
