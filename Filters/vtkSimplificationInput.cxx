@@ -259,7 +259,7 @@ vtkSmartPointer<vtkPolyData> AsSurface(vtkDataObject* data, std::string& problem
     if (vtkCellTypes::GetDimension(static_cast<unsigned char>(dataSet->GetCellType(c))) == 3)
     {
       problem = std::string("the ") + dataSet->GetClassName() +
-        " has 3-D cells; apply Extract Surface first to simplify its boundary surface";
+        " has 3-D cells; apply Extract Surface first to use its boundary surface";
       return nullptr;
     }
   }
