@@ -20,35 +20,15 @@ namespace
 using Vec3 = Eigen::Vector3d;
 constexpr double Infinity = std::numeric_limits<double>::infinity();
 
-/// The input's usable triangles' corners (distinct points in range with finite coordinates),
-/// and each input triangle's place among them (-1: not usable).
-std::vector<std::int32_t> UsableCorners(const TriangleMeshView& input, std::vector<std::int32_t>& place)
+/// Per triangle of a mesh, its place among those listed (-1: not listed).
+std::vector<std::int32_t> Places(const std::vector<std::int32_t>& listed, std::int64_t triangles)
 {
-  std::vector<std::int32_t> corners;
-  corners.reserve(3 * static_cast<std::size_t>(input.NumberOfTriangles));
-  place.assign(static_cast<std::size_t>(input.NumberOfTriangles), -1);
-  for (std::int64_t t = 0; t < input.NumberOfTriangles; ++t)
+  std::vector<std::int32_t> place(static_cast<std::size_t>(triangles), -1);
+  for (std::size_t s = 0; s < listed.size(); ++s)
   {
-    if (UsableTriangle(input, t))
-    {
-      place[t] = static_cast<std::int32_t>(corners.size() / 3);
-      for (int k = 0; k < 3; ++k)
-      {
-        corners.push_back(static_cast<std::int32_t>(input.Id(3 * t + k)));
-      }
-    }
+    place[listed[s]] = static_cast<std::int32_t>(s);
   }
-  return corners;
-}
-
-std::vector<Vec3> InputPoints(const TriangleMeshView& input)
-{
-  std::vector<Vec3> points(static_cast<std::size_t>(input.NumberOfPoints));
-  for (std::int64_t i = 0; i < input.NumberOfPoints; ++i)
-  {
-    points[i] = input.Point(i);
-  }
-  return points;
+  return place;
 }
 
 std::vector<Vec3> OutputPoints(const SimplifiedMesh& output)
@@ -67,11 +47,19 @@ std::vector<Vec3> OutputPoints(const SimplifiedMesh& output)
 struct DeviationInput::Data
 {
   explicit Data(const TriangleMeshView& input)
-    : Surface(InputPoints(input), UsableCorners(input, this->Usable))
+    : Data(input, std::vector<std::int32_t>())
   {
   }
-  std::vector<std::int32_t> Usable; // per input triangle, its place among Surface's, or -1
   const meshsimp::Surface Surface;
+  const std::vector<std::int32_t> Usable; // per input triangle, its place among Surface's, or -1
+
+private:
+  /// listed: the usable triangles' input ids, as UsableSurface gives them.
+  Data(const TriangleMeshView& input, std::vector<std::int32_t>&& listed)
+    : Surface(UsableSurface(input, listed))
+    , Usable(Places(listed, input.NumberOfTriangles))
+  {
+  }
 };
 
 namespace
