@@ -9,8 +9,6 @@
 #include "vtkSimplificationPieces.h"
 #include "vtkSimplificationThreads.h"
 
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkInformation.h"
@@ -111,18 +109,7 @@ vtkTypeBool vtkMeshSimplificationFilter::ProcessRequest(
 {
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
   {
-    vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-    vtkInformation* outInfo = outputVector->GetInformationObject(0);
-    vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-    const bool composite = vtkCompositeDataSet::SafeDownCast(input) != nullptr;
-    const int type = composite ? input->GetDataObjectType() : VTK_POLY_DATA;
-    if (!output || output->GetDataObjectType() != type)
-    {
-      vtkSmartPointer<vtkDataObject> created = composite
-        ? vtkSmartPointer<vtkDataObject>::Take(input->NewInstance())
-        : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<vtkPolyData>::New());
-      outInfo->Set(vtkDataObject::DATA_OBJECT(), created);
-    }
+    vtkSimplification::MakeSurfacesOutput(vtkDataObject::GetData(inputVector[0], 0), outputVector->GetInformationObject(0));
     return 1;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);

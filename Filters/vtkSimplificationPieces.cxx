@@ -4,6 +4,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 namespace vtkSimplification
 {
@@ -94,6 +96,19 @@ bool CollectPieces(vtkDataObject* input, vtkDataObject* output, std::vector<Piec
   return true;
 }
 
+void MakeSurfacesOutput(vtkDataObject* input, vtkInformation* outInfo)
+{
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  const bool composite = vtkCompositeDataSet::SafeDownCast(input) != nullptr;
+  const int type = composite ? input->GetDataObjectType() : VTK_POLY_DATA;
+  if (!output || output->GetDataObjectType() != type)
+  {
+    vtkSmartPointer<vtkDataObject> created = composite ? vtk::TakeSmartPointer(input->NewInstance())
+                                                       : vtkSmartPointer<vtkDataObject>(vtkSmartPointer<vtkPolyData>::New());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), created);
+  }
+}
+
 void PreparePieces(vtkAlgorithm* filter, InputPieces& run)
 {
   std::vector<const TriangleInput*> triangles;
@@ -117,6 +132,60 @@ void PreparePieces(vtkAlgorithm* filter, InputPieces& run)
   {
     run.Totals = GatherTotals(triangles);
   }
+}
+
+std::size_t JoinedTriangles::PieceOfPoint(std::int64_t p) const
+{
+  return static_cast<std::size_t>(std::upper_bound(this->FirstPoint.begin(), this->FirstPoint.end(), p) - this->FirstPoint.begin()) - 1;
+}
+
+bool JoinTriangles(const std::vector<Piece>& pieces, JoinedTriangles& joined, std::string& problem)
+{
+  joined.FirstPoint.assign(1, 0);
+  joined.FirstTriangle.assign(1, 0);
+  for (const Piece& piece : pieces)
+  {
+    joined.FirstPoint.push_back(joined.FirstPoint.back() + piece.Triangles.View.NumberOfPoints);
+    joined.FirstTriangle.push_back(joined.FirstTriangle.back() + piece.Triangles.View.NumberOfTriangles);
+  }
+  if (joined.FirstPoint.back() > std::numeric_limits<std::int32_t>::max() ||
+    3 * joined.FirstTriangle.back() > std::numeric_limits<std::int32_t>::max())
+  {
+    problem = "the blocks together have more points or triangles than 32-bit ids can number";
+    return false;
+  }
+  if (pieces.size() == 1)
+  {
+    joined.View = pieces[0].Triangles.View;
+    return true;
+  }
+  joined.Points.reserve(3 * static_cast<std::size_t>(joined.FirstPoint.back()));
+  joined.Triangles.reserve(3 * static_cast<std::size_t>(joined.FirstTriangle.back()));
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+  {
+    const meshsimp::TriangleMeshView& view = pieces[i].Triangles.View;
+    for (std::int64_t p = 0; p < view.NumberOfPoints; ++p)
+    {
+      const Eigen::Vector3d point = view.Point(p);
+      joined.Points.insert(joined.Points.end(), point.data(), point.data() + 3);
+    }
+    for (std::int64_t t = 0; t < view.NumberOfTriangles; ++t)
+    {
+      // An unusable triangle's ids could name another piece's points once shifted: it gets
+      // one repeated id instead, which keeps it unusable.
+      const bool usable = meshsimp::UsableTriangle(view, t);
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::int64_t id = usable ? view.Id(3 * t + k) : 0;
+        joined.Triangles.push_back(static_cast<std::int32_t>(joined.FirstPoint[i] + id));
+      }
+    }
+  }
+  joined.View.Points = joined.Points.data();
+  joined.View.NumberOfPoints = joined.FirstPoint.back();
+  joined.View.Triangles = joined.Triangles.data();
+  joined.View.NumberOfTriangles = joined.FirstTriangle.back();
+  return true;
 }
 
 } // namespace vtkSimplification

@@ -22,6 +22,7 @@
 
 class vtkAlgorithm;
 class vtkDataObject;
+class vtkInformation;
 class vtkPolyData;
 
 namespace vtkSimplification
@@ -62,12 +63,38 @@ struct InputPieces
  */
 bool CollectPieces(vtkDataObject* input, vtkDataObject* output, std::vector<Piece>& pieces, std::string& problem);
 
+/// The output (of outInfo) that holds the pieces' surfaces: vtkPolyData, or for composite input
+/// an empty instance of input's type, made anew only where the output is not of that type
+/// already. For the data-object request of a filter whose port declares vtkDataObject.
+void MakeSurfacesOutput(vtkDataObject* input, vtkInformation* outInfo);
+
 /**
  * Each piece's triangles read (PrepareTriangles: a one-line error of filter's for a piece that
  * cannot be), the points each piece shares with another piece locked (collective under MPI:
  * every process calls it, whatever it holds), and for a shared execution the totals.
  */
 void PreparePieces(vtkAlgorithm* filter, InputPieces& run);
+
+/**
+ * Pieces' triangles as one surface, for a filter that treats all of them at once (one texture
+ * atlas for every block): their points and triangles one after the other, with where each
+ * piece starts. A single piece is viewed in place; a triangle that cannot be used in its piece
+ * cannot be used in the joined surface either.
+ */
+struct JoinedTriangles
+{
+  meshsimp::TriangleMeshView View;
+  std::vector<std::int64_t> FirstPoint, FirstTriangle; // per piece, then the totals
+  std::vector<double> Points;                          // the copies (none for a single piece)
+  std::vector<std::int32_t> Triangles;
+
+  /// The piece that point p of View belongs to.
+  std::size_t PieceOfPoint(std::int64_t p) const;
+};
+
+/// The pieces' triangles joined; false with a message in problem when the joined surface has
+/// more points or triangles than 32-bit ids can number.
+bool JoinTriangles(const std::vector<Piece>& pieces, JoinedTriangles& joined, std::string& problem);
 
 } // namespace vtkSimplification
 

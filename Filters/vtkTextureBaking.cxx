@@ -4,10 +4,14 @@
 #include "TextureAtlas.h"
 #include "TextureBaking.h"
 #include "vtkSimplificationInput.h"
+#include "vtkSimplificationPieces.h"
 #include "vtkSimplificationThreads.h"
+#include "vtkTextureBakingSource.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkFloatArray.h"
 #include "vtkFieldData.h"
@@ -16,7 +20,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkLookupTable.h"
+#include "vtkScalarsToColors.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -25,8 +29,6 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
-#include <cmath>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,318 +37,154 @@ vtkCxxSetObjectMacro(vtkTextureBaking, LookupTable, vtkScalarsToColors);
 
 namespace
 {
-/// What the texture shows, and the values the baker interpolates (per original point or
-/// triangle).
-struct BakeSource
+/// One input of the bake: its surfaces (the input, or the polygonal leaves of composite data)
+/// and their triangles joined into one surface.
+struct BakeInput
 {
-  enum Kinds
-  {
-    COLOURS, // unsigned-char RGB(A), as they are
-    MAPPED,  // any other array, through a lookup table
-    TEXTURE  // texture coordinates, looked up in an image
-  };
-  Kinds Kind = COLOURS;
-  vtkDataArray* Array = nullptr;
-  bool PerTriangle = false;
-  std::vector<float> Values;
+  std::vector<vtkSimplification::Piece> Pieces;
+  vtkSimplification::JoinedTriangles Joined;
 };
 
-bool IsColours(vtkDataArray* array)
+/// Reads an input (each piece's output placed in output's structure, where output is given).
+/// False with a message in problem, or after PrepareTriangles' own error (problem empty).
+bool ReadInput(vtkAlgorithm* filter, vtkDataObject* input, vtkDataObject* output, BakeInput& side, std::string& problem)
 {
-  return array && array->GetDataType() == VTK_UNSIGNED_CHAR && (array->GetNumberOfComponents() == 3 || array->GetNumberOfComponents() == 4);
+  if (!vtkSimplification::CollectPieces(input, output, side.Pieces, problem))
+  {
+    return false;
+  }
+  for (vtkSimplification::Piece& piece : side.Pieces)
+  {
+    // A surface AsSurface made carries its points' and cells' ids in the dataset: not arrays
+    // the user gave, so not carried.
+    if (!vtkCompositeDataSet::SafeDownCast(input) && piece.Input.GetPointer() != input)
+    {
+      piece.Input->GetPointData()->RemoveArray(vtkSimplification::SurfacePointIdsName);
+      piece.Input->GetCellData()->RemoveArray(vtkSimplification::SurfaceCellIdsName);
+    }
+    if (!vtkSimplification::PrepareTriangles(filter, piece.Input, piece.Triangles))
+    {
+      return false;
+    }
+  }
+  return vtkSimplification::JoinTriangles(side.Pieces, side.Joined, problem);
 }
 
-/// The first unsigned-char RGB(A) array of data, or null.
-vtkDataArray* FirstColours(vtkDataSetAttributes* data)
+/// Where the split surface's points and triangles go: per piece, its points and triangles in
+/// the split's order, and each point's index among its piece's.
+struct SplitParts
 {
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-  {
-    if (IsColours(data->GetArray(a)))
-    {
-      return data->GetArray(a);
-    }
-  }
-  return nullptr;
-}
-
-/// The array input array 0 selects on the original (perCell set for cell data); without a
-/// selection, the active point scalars, the first colours among the points, then the cells.
-/// Null, with a message in problem, where the selection names no array of the original.
-vtkDataArray* ShownArray(vtkAlgorithm* filter, vtkPolyData* original, bool& perCell, std::string& problem)
-{
-  vtkInformation* selection = filter->GetInputArrayInformation(0);
-  const std::string name = selection->Has(vtkDataObject::FIELD_NAME()) ? selection->Get(vtkDataObject::FIELD_NAME()) : "";
-  if (!name.empty() && name != "None")
-  {
-    const int association = selection->Has(vtkDataObject::FIELD_ASSOCIATION()) ? selection->Get(vtkDataObject::FIELD_ASSOCIATION())
-                                                                               : vtkDataObject::FIELD_ASSOCIATION_POINTS;
-    perCell = association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-    vtkDataArray* array = (perCell ? static_cast<vtkDataSetAttributes*>(original->GetCellData()) : original->GetPointData())->GetArray(name.c_str());
-    problem = array ? "" : "the original has no " + std::string(perCell ? "cell" : "point") + " array '" + name + "' to bake";
-    return array;
-  }
-  for (vtkDataSetAttributes* data : { static_cast<vtkDataSetAttributes*>(original->GetPointData()), static_cast<vtkDataSetAttributes*>(original->GetCellData()) })
-  {
-    perCell = data == original->GetCellData();
-    if (vtkDataArray* array = data->GetScalars() ? data->GetScalars() : FirstColours(data))
-    {
-      return array;
-    }
-  }
-  problem = "the original has no colours to bake: give it an unsigned-char RGB point array, select an array, or connect a "
-            "texture image for its texture coordinates";
-  return nullptr;
-}
-
-/// The source's values as floats: per original point, or per original triangle (its cell's).
-void ReadValues(BakeSource& source, const vtkSimplification::TriangleInput& original)
-{
-  vtkDataArray* array = source.Array;
-  const int n = source.Kind == BakeSource::TEXTURE ? 2 : array->GetNumberOfComponents();
-  const std::int64_t count = source.PerTriangle ? original.View.NumberOfTriangles : original.View.NumberOfPoints;
-  source.Values.resize(static_cast<std::size_t>(count) * n);
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    const vtkIdType tuple = source.PerTriangle ? original.SourceCell(i) : i;
-    for (int c = 0; c < n; ++c)
-    {
-      source.Values[i * n + c] = static_cast<float>(array->GetComponent(tuple, c));
-    }
-  }
-}
-
-/// An image's unsigned-char scalars looked up at texture coordinates: bilinear, repeated.
-class TextureImage
-{
-public:
-  explicit TextureImage(vtkImageData* image)
-    : Scalars(vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars()))
-    , Width(image->GetDimensions()[0])
-    , Height(image->GetDimensions()[1])
-  {
-  }
-
-  /// The first components of the RGBA colour at (u, v); nothing where u or v is not finite.
-  void LookUp(float u, float v, unsigned char* to, int components) const
-  {
-    if (!std::isfinite(u) || !std::isfinite(v))
-    {
-      return;
-    }
-    const float x = (u - std::floor(u)) * this->Width - 0.5f, y = (v - std::floor(v)) * this->Height - 0.5f;
-    const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
-    const float fx = x - x0, fy = y - y0;
-    float corners[4][4];
-    this->Texel(x0, y0, corners[0]);
-    this->Texel(x0 + 1, y0, corners[1]);
-    this->Texel(x0, y0 + 1, corners[2]);
-    this->Texel(x0 + 1, y0 + 1, corners[3]);
-    for (int c = 0; c < components; ++c)
-    {
-      const float mixed = (1 - fy) * ((1 - fx) * corners[0][c] + fx * corners[1][c]) + fy * ((1 - fx) * corners[2][c] + fx * corners[3][c]);
-      to[c] = static_cast<unsigned char>(std::min(255.0f, std::max(0.0f, std::round(mixed))));
-    }
-  }
-
-  /// Whether the image has RGBA or grey and alpha.
-  bool HasAlpha() const { return this->Scalars->GetNumberOfComponents() % 2 == 0; }
-
-private:
-  /// Texel (x, y), repeated, as RGBA.
-  void Texel(int x, int y, float rgba[4]) const
-  {
-    x = ((x % this->Width) + this->Width) % this->Width;
-    y = ((y % this->Height) + this->Height) % this->Height;
-    const int n = this->Scalars->GetNumberOfComponents();
-    const unsigned char* texel = this->Scalars->GetPointer((static_cast<vtkIdType>(y) * this->Width + x) * n);
-    for (int c = 0; c < 3; ++c)
-    {
-      rgba[c] = texel[n < 3 ? 0 : c];
-    }
-    rgba[3] = n % 2 == 0 ? texel[n - 1] : 255.0f;
-  }
-
-  vtkUnsignedCharArray* Scalars;
-  int Width, Height;
+  std::vector<std::vector<std::int32_t>> Points, Triangles;
+  std::vector<std::int32_t> Local;
 };
 
-/// The lookup table for a mapped array: the user's, or blue to red over its range (a vector
-/// array's magnitude).
-vtkSmartPointer<vtkScalarsToColors> TableFor(vtkScalarsToColors* chosen, vtkDataArray* array)
+SplitParts SortOut(const meshsimp::SeamSplit& split, const vtkSimplification::JoinedTriangles& joined)
 {
-  if (chosen)
+  SplitParts parts;
+  parts.Points.resize(joined.FirstPoint.size() - 1);
+  parts.Triangles.resize(parts.Points.size());
+  parts.Local.resize(split.SourcePoints.size());
+  for (std::size_t p = 0; p < split.SourcePoints.size(); ++p)
   {
-    return chosen;
+    std::vector<std::int32_t>& piece = parts.Points[joined.PieceOfPoint(split.SourcePoints[p])];
+    parts.Local[p] = static_cast<std::int32_t>(piece.size());
+    piece.push_back(static_cast<std::int32_t>(p));
   }
-  vtkNew<vtkLookupTable> table;
-  const int component = array->GetNumberOfComponents() == 1 ? 0 : -1;
-  double range[2];
-  array->GetRange(range, component);
-  table->SetRange(range);
-  table->SetHueRange(0.6667, 0.0);
-  table->SetVectorModeToMagnitude();
-  table->Build();
-  return table.GetPointer();
+  for (std::size_t t = 0; t < split.SourceTriangles.size(); ++t)
+  {
+    parts.Triangles[joined.PieceOfPoint(split.SourcePoints[split.Triangles[3 * t]])].push_back(static_cast<std::int32_t>(t));
+  }
+  return parts;
 }
 
-/// The baked values as the texture's unsigned-char colours; texels of no triangle are 0.
-vtkSmartPointer<vtkUnsignedCharArray> TextureColours(const BakeSource& source, const meshsimp::BakedTexture& baked,
-  vtkScalarsToColors* table, vtkImageData* image)
+/// Piece k of the simplified surface: its triangles, split at the atlas's seams, with texture
+/// coordinates and its point and cell data.
+void WriteMesh(const BakeInput& simplified, std::size_t k, const meshsimp::SeamSplit& split, const SplitParts& parts)
 {
-  const vtkIdType texels = static_cast<vtkIdType>(baked.Values.size() / baked.Components);
-  const int n = baked.Components;
-  int components = 3;
-  if (source.Kind == BakeSource::COLOURS)
-  {
-    components = n;
-  }
-  else if (source.Kind == BakeSource::TEXTURE)
-  {
-    components = TextureImage(image).HasAlpha() ? 4 : 3;
-  }
-  vtkNew<vtkUnsignedCharArray> colours;
-  colours->SetName("BakedTexture");
-  colours->SetNumberOfComponents(components);
-  colours->SetNumberOfTuples(texels);
-  std::fill_n(colours->GetPointer(0), texels * components, 0);
-  vtkSmartPointer<vtkUnsignedCharArray> mapped;
-  std::optional<TextureImage> lookup;
-  if (source.Kind == BakeSource::TEXTURE)
-  {
-    lookup.emplace(image);
-  }
-  if (source.Kind == BakeSource::MAPPED)
-  {
-    vtkNew<vtkFloatArray> values;
-    values->SetNumberOfComponents(n);
-    values->SetArray(const_cast<float*>(baked.Values.data()), texels * n, 1);
-    mapped.TakeReference(TableFor(table, source.Array)->MapScalars(values, VTK_COLOR_MODE_MAP_SCALARS, -1, VTK_RGB));
-  }
-  for (vtkIdType t = 0; t < texels; ++t)
-  {
-    const float* value = baked.Values.data() + t * n;
-    unsigned char* to = colours->GetPointer(t * components);
-    if (std::isnan(value[0]))
-    {
-      continue;
-    }
-    if (source.Kind == BakeSource::COLOURS)
-    {
-      std::transform(value, value + n, to, [](float v) { return static_cast<unsigned char>(std::min(255.0f, std::max(0.0f, std::round(v)))); });
-    }
-    else if (source.Kind == BakeSource::TEXTURE)
-    {
-      lookup->LookUp(value[0], value[1], to, components);
-    }
-    else
-    {
-      std::copy_n(mapped->GetPointer(3 * t), 3, to);
-    }
-  }
-  return colours;
-}
-
-/// The simplified surface's triangles, split at the atlas's seams, with texture coordinates and
-/// its point and cell data.
-void WriteMesh(vtkPolyData* simplified, const vtkSimplification::TriangleInput& triangles, const meshsimp::SeamSplit& split,
-  vtkPolyData* output)
-{
-  const vtkIdType points = static_cast<vtkIdType>(split.SourcePoints.size());
+  vtkPolyData* surface = simplified.Pieces[k].Input;
+  vtkPolyData* output = simplified.Pieces[k].Output;
+  const std::vector<std::int32_t>& pointIds = parts.Points[k];
+  const vtkIdType points = static_cast<vtkIdType>(pointIds.size());
   vtkNew<vtkPoints> coordinates;
-  coordinates->SetDataType(simplified->GetPoints()->GetDataType());
+  coordinates->SetDataType(surface->GetPoints()->GetDataType());
   coordinates->SetNumberOfPoints(points);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(points);
   vtkNew<vtkIdList> from, to;
   from->SetNumberOfIds(points);
   to->SetNumberOfIds(points);
   for (vtkIdType p = 0; p < points; ++p)
   {
-    coordinates->SetPoint(p, simplified->GetPoint(split.SourcePoints[p]));
-    from->SetId(p, split.SourcePoints[p]);
+    const vtkIdType source = split.SourcePoints[pointIds[p]] - simplified.Joined.FirstPoint[k];
+    coordinates->SetPoint(p, surface->GetPoint(source));
+    tcoords->SetTypedTuple(p, split.TextureCoordinates.data() + 2 * pointIds[p]);
+    from->SetId(p, source);
     to->SetId(p, p);
   }
   output->SetPoints(coordinates);
-  output->GetPointData()->CopyAllocate(simplified->GetPointData(), points);
-  output->GetPointData()->CopyData(simplified->GetPointData(), from, to);
-  vtkNew<vtkFloatArray> tcoords;
-  tcoords->SetName("TCoords");
-  tcoords->SetNumberOfComponents(2);
-  tcoords->SetNumberOfTuples(points);
-  std::copy(split.TextureCoordinates.begin(), split.TextureCoordinates.end(), tcoords->GetPointer(0));
+  output->GetPointData()->CopyAllocate(surface->GetPointData(), points);
+  output->GetPointData()->CopyData(surface->GetPointData(), from, to);
   output->GetPointData()->SetTCoords(tcoords);
 
-  const vtkIdType cells = static_cast<vtkIdType>(split.SourceTriangles.size());
+  const std::vector<std::int32_t>& triangleIds = parts.Triangles[k];
+  const vtkIdType cells = static_cast<vtkIdType>(triangleIds.size());
   vtkNew<vtkCellArray> polys;
   polys->AllocateExact(cells, 3 * cells);
   from->SetNumberOfIds(cells);
   to->SetNumberOfIds(cells);
   for (vtkIdType t = 0; t < cells; ++t)
   {
-    const vtkIdType corners[3] = { split.Triangles[3 * t], split.Triangles[3 * t + 1], split.Triangles[3 * t + 2] };
-    polys->InsertNextCell(3, corners);
-    from->SetId(t, triangles.SourceCell(split.SourceTriangles[t]));
+    const std::int32_t* corners = split.Triangles.data() + 3 * triangleIds[t];
+    const vtkIdType local[3] = { parts.Local[corners[0]], parts.Local[corners[1]], parts.Local[corners[2]] };
+    polys->InsertNextCell(3, local);
+    from->SetId(t, simplified.Pieces[k].Triangles.SourceCell(split.SourceTriangles[triangleIds[t]] - simplified.Joined.FirstTriangle[k]));
     to->SetId(t, t);
   }
   output->SetPolys(polys);
-  output->GetCellData()->CopyAllocate(simplified->GetCellData(), cells);
-  output->GetCellData()->CopyData(simplified->GetCellData(), from, to);
-  output->GetFieldData()->PassData(simplified->GetFieldData());
+  output->GetCellData()->CopyAllocate(surface->GetCellData(), cells);
+  output->GetCellData()->CopyData(surface->GetCellData(), from, to);
+  output->GetFieldData()->PassData(surface->GetFieldData());
 }
 
-/// An input as a surface (vtkSimplification::AsSurface: another dataset's surface cells through
-/// vtkGeometryFilter), without the ids of its points and cells in the dataset that that adds.
-vtkSmartPointer<vtkPolyData> Surface(vtkDataObject* input, std::string& problem)
+/// Per point of the joined simplified surface, the point of the joined original it came from:
+/// its piece's vtkOriginalPointIds, read in the original's piece at the same place, where in
+/// range (-1 elsewhere); none when no piece has them or the two inputs' pieces do not match.
+std::vector<std::int32_t> Seeds(const BakeInput& simplified, const BakeInput& original)
 {
-  vtkSmartPointer<vtkPolyData> surface = vtkSimplification::AsSurface(input, problem);
-  if (surface && surface.GetPointer() != input)
-  {
-    surface->GetPointData()->RemoveArray(vtkSimplification::SurfacePointIdsName);
-    surface->GetCellData()->RemoveArray(vtkSimplification::SurfaceCellIdsName);
-  }
-  return surface;
-}
-
-/// Per simplified point, the original point it came from (vtkOriginalPointIds), where in range.
-std::vector<std::int32_t> Seeds(vtkPolyData* simplified, vtkIdType originalPoints)
-{
-  vtkDataArray* ids = simplified->GetPointData()->GetArray("vtkOriginalPointIds");
   std::vector<std::int32_t> seeds;
-  if (!ids || ids->GetNumberOfComponents() != 1)
+  for (std::size_t k = 0; simplified.Pieces.size() == original.Pieces.size() && k < simplified.Pieces.size(); ++k)
   {
-    return seeds;
-  }
-  seeds.resize(static_cast<std::size_t>(ids->GetNumberOfTuples()), -1);
-  for (vtkIdType p = 0; p < ids->GetNumberOfTuples(); ++p)
-  {
-    const double id = ids->GetComponent(p, 0);
-    seeds[p] = id >= 0.0 && id < static_cast<double>(originalPoints) ? static_cast<std::int32_t>(id) : -1;
+    vtkDataArray* ids = simplified.Pieces[k].Input->GetPointData()->GetArray("vtkOriginalPointIds");
+    if (!ids || ids->GetNumberOfComponents() != 1)
+    {
+      continue;
+    }
+    seeds.resize(static_cast<std::size_t>(simplified.Joined.FirstPoint.back()), -1);
+    const std::int64_t first = original.Joined.FirstPoint[k], count = original.Joined.FirstPoint[k + 1] - first;
+    const vtkIdType points = std::min<vtkIdType>(ids->GetNumberOfTuples(), simplified.Pieces[k].Triangles.View.NumberOfPoints);
+    for (vtkIdType p = 0; p < points; ++p)
+    {
+      const double id = ids->GetComponent(p, 0);
+      if (id >= 0.0 && id < static_cast<double>(count))
+      {
+        seeds[simplified.Joined.FirstPoint[k] + p] = static_cast<std::int32_t>(first + static_cast<std::int64_t>(id));
+      }
+    }
   }
   return seeds;
 }
 
-/// What the texture shows, or why nothing can be baked (problem, in the order of the checks).
-BakeSource ChooseSource(vtkAlgorithm* filter, const vtkSimplification::TriangleInput& simplifiedTriangles,
-  const vtkSimplification::TriangleInput& originalTriangles, vtkPolyData* original, vtkImageData* image, std::string& problem)
+/// The length of the diagonal of the box around every piece of an input.
+double Diagonal(const BakeInput& side)
 {
-  BakeSource source;
-  problem = simplifiedTriangles.View.NumberOfTriangles == 0 ? "the simplified surface has no triangles"
-    : originalTriangles.View.NumberOfTriangles == 0                    ? "the original has no triangles"
-                                                                       : "";
-  if (problem.empty() && image)
+  vtkBoundingBox box;
+  for (const vtkSimplification::Piece& piece : side.Pieces)
   {
-    source.Kind = BakeSource::TEXTURE;
-    source.Array = original->GetPointData()->GetTCoords();
-    const bool usable = image->GetPointData()->GetScalars() && image->GetPointData()->GetScalars()->GetDataType() == VTK_UNSIGNED_CHAR &&
-      image->GetNumberOfPoints() > 0;
-    problem = !usable ? "the texture image (input 2) has no unsigned-char scalars"
-      : !source.Array ? "the original has no texture coordinates for the texture image (input 2)"
-                      : "";
+    box.AddBounds(piece.Input->GetBounds());
   }
-  else if (problem.empty())
-  {
-    source.Array = ShownArray(filter, original, source.PerTriangle, problem);
-    source.Kind = IsColours(source.Array) ? BakeSource::COLOURS : BakeSource::MAPPED;
-  }
-  return source;
+  return box.IsValid() ? box.GetDiagonalLength() : 0.0;
 }
 
 /// TextureSize rounded down to a power of two.
@@ -383,19 +221,32 @@ vtkImageData* vtkTextureBaking::GetTexture()
   return vtkImageData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
+vtkTypeBool vtkTextureBaking::ProcessRequest(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    vtkSimplification::MakeSurfacesOutput(vtkDataObject::GetData(inputs[0], 0), outputs->GetInformationObject(0));
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputs, outputs);
+}
+
 int vtkTextureBaking::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 2 ? "vtkImageData" : "vtkDataSet");
   if (port == 2)
   {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
   }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   return 1;
 }
 
 int vtkTextureBaking::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkImageData" : "vtkPolyData");
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkImageData" : "vtkDataObject");
   return 1;
 }
 
@@ -409,54 +260,68 @@ int vtkTextureBaking::RequestInformation(vtkInformation*, vtkInformationVector**
 
 int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
-  vtkPolyData* output = vtkPolyData::GetData(outputs, 0);
   vtkImageData* texture = vtkImageData::GetData(outputs, 1);
-  vtkDataObject* given[2] = { vtkDataObject::GetData(inputs[0]), vtkDataObject::GetData(inputs[1]) };
   vtkImageData* image = vtkImageData::GetData(inputs[2]);
+  vtkDataObject* given[2] = { vtkDataObject::GetData(inputs[0]), vtkDataObject::GetData(inputs[1]) };
   if (!given[0] || !given[1])
   {
     vtkErrorMacro("Cannot bake: Texture Baking needs the simplified surface (input 0) and the original (input 1).");
     return 1;
   }
+  BakeInput simplified, original;
   std::string problem;
-  vtkSmartPointer<vtkPolyData> simplified = Surface(given[0], problem);
-  vtkSmartPointer<vtkPolyData> original = simplified ? Surface(given[1], problem) : nullptr;
-  if (!simplified || !original)
+  const char* side = "simplified";
+  bool read = ReadInput(this, given[0], vtkDataObject::GetData(outputs, 0), simplified, problem);
+  if (read)
   {
-    vtkErrorMacro("Cannot bake: the " << (simplified ? "original" : "simplified") << " surface: " << problem << ".");
+    side = "original";
+    read = ReadInput(this, given[1], nullptr, original, problem);
+  }
+  if (!read)
+  {
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot bake: the " << side << " surface: " << problem << ".");
+    }
     return 1;
   }
-  vtkSimplification::TriangleInput simplifiedTriangles, originalTriangles;
-  if (!vtkSimplification::PrepareTriangles(this, simplified, simplifiedTriangles) ||
-    !vtkSimplification::PrepareTriangles(this, original, originalTriangles))
+  problem = simplified.Joined.View.NumberOfTriangles == 0 ? "the simplified surface has no triangles"
+    : original.Joined.View.NumberOfTriangles == 0         ? "the original has no triangles"
+                                                          : "";
+  vtkSimplification::BakeSource source;
+  if (problem.empty())
   {
-    return 1;
+    source = vtkSimplification::ChooseBakeSource(this, original.Pieces, image, problem);
   }
-  BakeSource source = ChooseSource(this, simplifiedTriangles, originalTriangles, original, image, problem);
   if (!problem.empty())
   {
     vtkErrorMacro("Cannot bake: " << problem << ".");
     return 1;
   }
-  const meshsimp::TextureAtlas atlas = meshsimp::MakeTextureAtlas(simplifiedTriangles.View, PowerOfTwo(this->TextureSize), this->GutterWidth);
+  const meshsimp::TextureAtlas atlas = meshsimp::MakeTextureAtlas(simplified.Joined.View, PowerOfTwo(this->TextureSize), this->GutterWidth);
   if (!atlas.Error.empty())
   {
     vtkErrorMacro("Cannot bake: " << atlas.Error << "; raise Texture Size or lower Gutter Width.");
     return 1;
   }
-  ReadValues(source, originalTriangles);
+  vtkSimplification::ReadBakeValues(source, original.Pieces);
   this->UpdateProgress(0.05);
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
-  const meshsimp::BakedTexture baked = meshsimp::BakeTexels(simplifiedTriangles.View, atlas, originalTriangles.View,
-    { source.Values.data(), source.Kind == BakeSource::TEXTURE ? 2 : source.Array->GetNumberOfComponents(), source.PerTriangle },
-    Seeds(simplified, original->GetNumberOfPoints()), this->MaximumDistance * original->GetLength(), context);
+  const meshsimp::BakedTexture baked = meshsimp::BakeTexels(simplified.Joined.View, atlas, original.Joined.View,
+    { source.Values.data(), source.Components, source.PerTriangle }, Seeds(simplified, original),
+    this->MaximumDistance * Diagonal(original), context);
   if (baked.Aborted)
   {
     return 1;
   }
-  WriteMesh(simplified, simplifiedTriangles, meshsimp::SplitAtSeams(simplifiedTriangles.View, atlas), output);
+  const meshsimp::SeamSplit split = meshsimp::SplitAtSeams(simplified.Joined.View, atlas);
+  const SplitParts parts = SortOut(split, simplified.Joined);
+  for (std::size_t k = 0; k < simplified.Pieces.size(); ++k)
+  {
+    WriteMesh(simplified, k, split, parts);
+  }
   texture->SetDimensions(atlas.Size, atlas.Size, 1);
-  texture->GetPointData()->SetScalars(TextureColours(source, baked, this->LookupTable, image));
+  texture->GetPointData()->SetScalars(vtkSimplification::BakedColours(source, baked, this->LookupTable, image));
   const std::pair<const char*, std::int64_t> counts[] = { { "TriangleTexels", baked.InsideTexels },
     { "EmptyTexels", baked.EmptyTexels }, { "ExactSearches", baked.ExactSearches }, { "CorrectedWalks", baked.CorrectedWalks } };
   for (const auto& [name, count] : counts)

@@ -5,15 +5,18 @@
  * Zhang, Shi and Pan, "A new simplification algorithm for colored or textured polygonal
  * models", §4.
  *
- * Input 0 is the simplified surface, input 1 the detailed original (each polygonal data, or any
- * dataset of surface cells, taken through vtkGeometryFilter as the simplifiers take it), and
- * what the original shows: an
+ * Input 0 is the simplified surface, input 1 the detailed original (each polygonal data, any
+ * dataset of surface cells, taken through vtkGeometryFilter as the simplifiers take it, or
+ * composite data whose polygonal blocks together make the surface: one texture for all of
+ * them), and what the original shows: an
  * unsigned-char RGB or RGBA point or cell array, shown as it is; any other array, through the
  * LookupTable (by default blue to red over the array's range, VTK's default colour map; a
  * vector array by its magnitude); or, with a texture image on input 2, the original's texture
  * coordinates looked up in that image (bilinear, repeated). The array is the one selected as
  * input array 0 (SetInputArrayToProcess on port 1), else the original's active point scalars,
- * else its first unsigned-char RGB(A) point array, else the same among its cell data.
+ * else its first unsigned-char RGB(A) point array, else the same among its cell data; in
+ * composite data, each block's by that rule, and the blocks' arrays must agree in kind, place
+ * and components.
  *
  * Stage 1 gives every simplified triangle half of a square of a TextureSize² atlas, adjacent
  * triangles paired on one square along their common edge (meshsimp::MakeTextureAtlas); stage 2
@@ -21,14 +24,15 @@
  * triangle it maps to, interpolated from that original triangle's corners (the values, before
  * any lookup table). The nearest point is found by walking over the original from the points
  * the simplified corners came from (the point data vtkOriginalPointIds, which every filter of
- * this module writes with GenerateOriginalIds) or else from an exact search for each square's
+ * this module writes with GenerateOriginalIds; in composite data, ids into the original's block
+ * at the same place) or else from an exact search for each square's
  * first texel; exact searches within MaximumDistance check the walks on a lattice of texels
  * and around every walk they correct (a walk can stop on the wrong hill of a rugged terrain).
  * Texels run on all threads (the result does not depend on how many).
  *
  * Output 0 is the simplified surface's triangles with texture coordinates "TCoords" (points
  * split where the atlas puts a point's triangles apart, each copy with the point's data) and
- * its cell data; output 1 is the texture, vtkImageData of TextureSize² unsigned-char RGB (RGBA
+ * its cell data, for composite input 0 in its blocks (other blocks passed unchanged); output 1 is the texture, vtkImageData of TextureSize² unsigned-char RGB (RGBA
  * where the colours have alpha) in the point array "BakedTexture"; texels of no triangle are 0. Its
  * field data count the texels on triangles (TriangleTexels), those that found no point of the
  * original (EmptyTexels), the squares searched for without a record (ExactSearches) and the
@@ -107,6 +111,7 @@ public:
 protected:
   vtkTextureBaking();
   ~vtkTextureBaking() override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

@@ -4,8 +4,9 @@
 // simplification, the texture is closer to the colours than the simplification's own vertex
 // colours; points split only at seams and carry their data, cells carry theirs; a scalar array
 // goes through the lookup table, cell colours fill their triangles, a texture image is looked
-// up through the original's coordinates; bad inputs give one-line errors and the inputs stay as
-// they were. With -V, the Jacksboro terrain at 99 % with its baked elevation against its
+// up through the original's coordinates; a multiblock bakes one texture for all its blocks and
+// keeps them (each with its own arrays), the texture of the one surface they make together;
+// bad inputs give one-line errors and the inputs stay as they were. With -V, the Jacksboro terrain at 99 % with its baked elevation against its
 // baseline image.
 #include "vtkTextureBaking.h"
 #include "vtkVolumeTriangleCollapse.h"
@@ -20,6 +21,10 @@
 #include "vtkPointData.h"
 #include "vtkTexture.h"
 #include "vtkAppendFilter.h"
+#include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLPolyDataReader.h"
@@ -71,10 +76,8 @@ vtkSmartPointer<vtkTextureBaking> Bake(vtkDataSet* simplified, vtkDataSet* origi
 }
 
 /// The texture's colour (bilinear) at a point of an output triangle, by its texture coordinates.
-std::array<double, 3> Sampled(vtkTextureBaking* bake, vtkIdType triangle, const double weights[3])
+std::array<double, 3> Sampled(vtkPolyData* out, vtkImageData* texture, vtkIdType triangle, const double weights[3])
 {
-  vtkPolyData* out = bake->GetOutput();
-  vtkImageData* texture = bake->GetTexture();
   const vtkIdType* ids;
   vtkIdType n;
   out->GetPolys()->GetCellAtId(triangle, n, ids);
@@ -122,16 +125,16 @@ std::array<double, 3> At(vtkPolyData* out, vtkIdType triangle, const double weig
 
 /// The largest and the mean colour difference between the texture and Linear over a few points
 /// of every output triangle.
-std::pair<double, double> TextureError(vtkTextureBaking* bake)
+std::pair<double, double> TextureError(vtkPolyData* out, vtkImageData* texture)
 {
   const double places[4][3] = { { 1 / 3.0, 1 / 3.0, 1 / 3.0 }, { 0.6, 0.2, 0.2 }, { 0.2, 0.6, 0.2 }, { 0.2, 0.2, 0.6 } };
   double largest = 0.0, sum = 0.0;
   int count = 0;
-  for (vtkIdType t = 0; t < bake->GetOutput()->GetNumberOfPolys(); ++t)
+  for (vtkIdType t = 0; t < out->GetNumberOfPolys(); ++t)
   {
     for (const double* w : places)
     {
-      const std::array<double, 3> p = At(bake->GetOutput(), t, w), expected = Linear(p.data()), got = Sampled(bake, t, w);
+      const std::array<double, 3> p = At(out, t, w), expected = Linear(p.data()), got = Sampled(out, texture, t, w);
       for (int c = 0; c < 3; ++c)
       {
         largest = std::max(largest, std::abs(expected[c] - got[c]));
@@ -163,7 +166,7 @@ void TestSelfBake()
   CHECK(bake->GetTexture()->GetDimensions()[0] == 1024 && bake->GetTexture()->GetDimensions()[1] == 1024);
   vtkDataArray* texels = bake->GetTexture()->GetPointData()->GetScalars();
   CHECK(texels && std::strcmp(texels->GetName(), "BakedTexture") == 0 && texels->GetNumberOfComponents() == 3);
-  const std::pair<double, double> error = TextureError(bake);
+  const std::pair<double, double> error = TextureError(bake->GetOutput(), bake->GetTexture());
   CHECK(error.first < 1.5 && error.second < 0.6); // rounding to 0..255, and bilinear filtering
   // Points split only at seams: more than the sphere's, and fewer than three per triangle (a
   // pair of triangles shares the two points of its diagonal); each
@@ -196,7 +199,7 @@ void TestSimplifiedBake()
   simplify->Update();
   vtkPolyData* simplified = simplify->GetOutput();
   const vtkSmartPointer<vtkTextureBaking> bake = Bake(simplified, sphere);
-  const std::pair<double, double> baked = TextureError(bake);
+  const std::pair<double, double> baked = TextureError(bake->GetOutput(), bake->GetTexture());
   vtkFieldData* counts = bake->GetTexture()->GetFieldData();
   CHECK(counts->GetArray("TriangleTexels")->GetTuple1(0) > 0.25 * 1024 * 1024);
   CHECK(counts->GetArray("EmptyTexels")->GetTuple1(0) == 0);
@@ -277,11 +280,11 @@ void TestOtherSources()
   bake->SetTextureSize(512);
   bake->Update();
   const double centre[3] = { 1 / 3.0, 1 / 3.0, 1 / 3.0 };
-  const std::array<double, 3> top = Sampled(bake, 0, centre); // a triangle at the top: red
+  const std::array<double, 3> top = Sampled(bake->GetOutput(), bake->GetTexture(), 0, centre); // a triangle at the top: red
   CHECK(top[0] > 200 && top[2] < 60);
   bake->SetLookupTable(green);
   bake->Update();
-  const std::array<double, 3> greenTop = Sampled(bake, 0, centre);
+  const std::array<double, 3> greenTop = Sampled(bake->GetOutput(), bake->GetTexture(), 0, centre);
   CHECK(greenTop[0] < 1 && greenTop[1] > 254 && greenTop[2] < 1);
   // Cell colours: every texel of a triangle has its cell's.
   vtkNew<vtkUnsignedCharArray> cellColours;
@@ -299,7 +302,7 @@ void TestOtherSources()
   bake->SetOriginalData(cells);
   bake->Update();
   const vtkIdType triangle = 100, cell = triangle + sphere->GetNumberOfCells() - sphere->GetNumberOfPolys();
-  const std::array<double, 3> cellColour = Sampled(bake, triangle, centre);
+  const std::array<double, 3> cellColour = Sampled(bake->GetOutput(), bake->GetTexture(), triangle, centre);
   CHECK(std::abs(cellColour[0] - cell % 256) < 0.01 && std::abs(cellColour[1] - (3 * cell) % 256) < 0.01);
   // A texture image through the original's coordinates: u < 0.5 red, else blue.
   vtkNew<vtkFloatArray> tcoords;
@@ -330,7 +333,7 @@ void TestOtherSources()
   int checked = 0;
   for (vtkIdType t = 0; t < bake->GetOutput()->GetNumberOfPolys(); t += 7)
   {
-    const std::array<double, 3> p = At(bake->GetOutput(), t, centre), colour = Sampled(bake, t, centre);
+    const std::array<double, 3> p = At(bake->GetOutput(), t, centre), colour = Sampled(bake->GetOutput(), bake->GetTexture(), t, centre);
     if (std::abs(p[0]) > 0.05 && std::abs(p[0]) < 0.4) // away from the edge and the wrap
     {
       CHECK((p[0] < 0 ? colour[0] : colour[2]) > 250 && (p[0] < 0 ? colour[2] : colour[0]) < 5);
@@ -340,8 +343,112 @@ void TestOtherSources()
   CHECK(checked > 50);
 }
 
+/// The sphere's triangles whose centre lies above z = 0 (upper) or not, on all its points.
+vtkSmartPointer<vtkPolyData> Half(vtkPolyData* sphere, bool upper)
+{
+  auto half = vtkSmartPointer<vtkPolyData>::New();
+  half->SetPoints(sphere->GetPoints());
+  half->GetPointData()->ShallowCopy(sphere->GetPointData());
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
+  {
+    const double third[3] = { 1 / 3.0, 1 / 3.0, 1 / 3.0 };
+    if (sphere->GetCellType(c) == VTK_TRIANGLE && (At(sphere, c - sphere->GetNumberOfVerts() - sphere->GetNumberOfLines(), third)[2] > 0) == upper)
+    {
+      polys->InsertNextCell(sphere->GetCell(c)->GetPointIds());
+    }
+  }
+  half->SetPolys(polys);
+  return half;
+}
+
+/// The blocks of composite data that are polygonal data, in order.
+std::vector<vtkPolyData*> Surfaces(vtkDataObject* data)
+{
+  std::vector<vtkPolyData*> surfaces;
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  vtkSmartPointer<vtkCompositeDataIterator> block = vtk::TakeSmartPointer(composite->NewIterator());
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+  {
+    if (auto* surface = vtkPolyData::SafeDownCast(block->GetCurrentDataObject()))
+    {
+      surfaces.push_back(surface);
+    }
+  }
+  return surfaces;
+}
+
+/// Composite data of polygonal blocks as one surface, without the record of where points came
+/// from.
+vtkSmartPointer<vtkPolyData> Appended(vtkDataObject* data)
+{
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkPolyData* surface : Surfaces(data))
+  {
+    append->AddInputData(surface);
+  }
+  append->Update();
+  auto appended = vtkSmartPointer<vtkPolyData>::New();
+  appended->DeepCopy(append->GetOutput());
+  appended->GetPointData()->RemoveArray("vtkOriginalPointIds");
+  return appended;
+}
+
+void TestCompositeBake()
+{
+  // A multiblock of the sphere's two halves, simplified block by block at 95 %: one texture for
+  // both, found from where each block's points came from; every block of the output keeps its
+  // triangles and its own arrays, and the texture shows the linear colours on both.
+  const vtkSmartPointer<vtkPolyData> sphere = ColouredSphere(80);
+  vtkNew<vtkMultiBlockDataSet> halves;
+  halves->SetBlock(0, Half(sphere, true));
+  halves->SetBlock(2, Half(sphere, false)); // block 1 stays empty
+  vtkNew<vtkIntArray> upperOnly;
+  upperOnly->SetName("UpperOnly");
+  upperOnly->SetNumberOfTuples(vtkPolyData::SafeDownCast(halves->GetBlock(0))->GetNumberOfCells());
+  upperOnly->Fill(1);
+  vtkPolyData::SafeDownCast(halves->GetBlock(0))->GetCellData()->AddArray(upperOnly);
+  vtkNew<vtkVolumeTriangleCollapse> simplify;
+  simplify->SetInputData(halves);
+  simplify->SetTargetReduction(0.95);
+  simplify->GenerateOriginalIdsOn();
+  vtkNew<vtkTextureBaking> bake;
+  bake->SetInputConnection(0, simplify->GetOutputPort());
+  bake->SetOriginalData(halves);
+  bake->SetTextureSize(1024);
+  bake->Update();
+  auto* out = vtkMultiBlockDataSet::SafeDownCast(bake->GetOutputDataObject(0));
+  CHECK(out && out->GetNumberOfBlocks() == 3 && !out->GetBlock(1));
+  const std::vector<vtkPolyData*> simplified = Surfaces(simplify->GetOutputDataObject(0)), baked = out ? Surfaces(out) : std::vector<vtkPolyData*>();
+  CHECK(baked.size() == 2 && simplified.size() == 2);
+  for (std::size_t b = 0; b < baked.size() && b < simplified.size(); ++b)
+  {
+    CHECK(baked[b]->GetNumberOfPolys() == simplified[b]->GetNumberOfPolys() && baked[b]->GetPointData()->GetTCoords());
+    CHECK(TextureError(baked[b], bake->GetTexture()).second < 2.0);
+    CHECK((baked[b]->GetCellData()->GetArray("UpperOnly") != nullptr) == (b == 0));
+  }
+  CHECK(bake->GetTexture()->GetFieldData()->GetArray("ExactSearches")->GetTuple1(0) == 0);
+  CHECK(bake->GetTexture()->GetFieldData()->GetArray("EmptyTexels")->GetTuple1(0) == 0);
+  // Without the record, the blocks bake the texture of the one surface they make together.
+  const vtkSmartPointer<vtkPolyData> joinedSimplified = Appended(simplify->GetOutputDataObject(0)), joinedOriginal = Appended(halves);
+  for (vtkPolyData* surface : simplified)
+  {
+    surface->GetPointData()->RemoveArray("vtkOriginalPointIds");
+  }
+  bake->SetInputData(0, simplify->GetOutputDataObject(0));
+  bake->Update();
+  vtkDataArray* blocks = bake->GetTexture()->GetPointData()->GetScalars();
+  const vtkSmartPointer<vtkTextureBaking> whole = Bake(joinedSimplified, joinedOriginal);
+  vtkDataArray* one = whole->GetTexture()->GetPointData()->GetScalars();
+  CHECK(blocks && one && blocks->GetNumberOfValues() == one->GetNumberOfValues());
+  for (vtkIdType i = 0; blocks && one && i < one->GetNumberOfValues() && i < blocks->GetNumberOfValues(); i += 7)
+  {
+    CHECK(blocks->GetComponent(i / 3, i % 3) == one->GetComponent(i / 3, i % 3));
+  }
+}
+
 /// The errors of a bake, one line each.
-std::vector<std::string> BakeErrors(vtkDataSet* simplified, vtkDataSet* original, vtkImageData* image = nullptr,
+std::vector<std::string> BakeErrors(vtkDataObject* simplified, vtkDataObject* original, vtkImageData* image = nullptr,
   int size = 1024, const char* array = nullptr)
 {
   vtkNew<vtkTextureBaking> bake;
@@ -382,9 +489,19 @@ void TestBadInput()
   const vtkSmartPointer<vtkPolyData> sphere = ColouredSphere(60);
   vtkNew<vtkPolyData> copy;
   copy->DeepCopy(sphere);
-  vtkNew<vtkPolyData> plain, empty;
+  vtkNew<vtkPolyData> plain, empty, grey;
   plain->ShallowCopy(sphere);
   plain->GetPointData()->Initialize();
+  grey->ShallowCopy(plain);
+  vtkNew<vtkFloatArray> level;
+  level->SetNumberOfTuples(sphere->GetNumberOfPoints());
+  level->Fill(0.5);
+  grey->GetPointData()->SetScalars(level);
+  vtkNew<vtkMultiBlockDataSet> partlyPlain, mixed;
+  partlyPlain->SetBlock(0, sphere);
+  partlyPlain->SetBlock(1, plain);
+  mixed->SetBlock(0, sphere);
+  mixed->SetBlock(1, grey);
   const std::pair<std::vector<std::string>, const char*> cases[] = {
     { BakeErrors(sphere, plain), "Cannot bake: the original has no colours to bake" },
     { BakeErrors(empty, sphere), "Cannot bake: the simplified surface has no triangles." },
@@ -392,6 +509,8 @@ void TestBadInput()
     { BakeErrors(sphere, sphere, nullptr, 256), "cannot hold 6960 triangles with a gutter of 2 texels: it needs 512 x 512" },
     { BakeErrors(sphere, sphere, nullptr, 1024, "Nothing"), "the original has no point array 'Nothing' to bake" },
     { BakeErrors(sphere, Tetrahedron()), "Cannot bake: the original surface: the vtkUnstructuredGrid has 3-D cells" },
+    { BakeErrors(sphere, partlyPlain), "Cannot bake: block 1 of the original has no colours to bake" },
+    { BakeErrors(sphere, mixed), "Cannot bake: block 1 of the original shows an array unlike the other blocks'" },
   };
   for (const auto& [errors, expected] : cases)
   {
@@ -444,6 +563,7 @@ int TestTextureBaking(int argc, char* argv[])
   TestSelfBake();
   TestSimplifiedBake();
   TestOtherSources();
+  TestCompositeBake();
   TestBadInput();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -3,7 +3,8 @@
 and baked. Its defaults; the first output carries texture coordinates on the simplified
 triangles, the second is the texture; shown through a Texture proxy fed by the second output,
 the render has the elevation's colours from red at the top to blue at the bottom; a lookup
-table from the session (Grayscale) gives grey texels."""
+table from the session (Grayscale) gives grey texels. A multiblock of two spheres bakes one
+texture for both blocks, and shows it on both."""
 import os
 
 from paraview import servermanager
@@ -51,14 +52,21 @@ shot = os.path.join(args.temp or ".", "TestTextureBakingPlugin.png")
 SaveScreenshot(shot, view, ImageResolution=[300, 300])
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
-reader = vtkPNGReader()
-reader.SetFileName(shot)
-reader.Update()
-image = reader.GetOutput()
-top = [image.GetScalarComponentAsDouble(150, 200, 0, c) for c in range(3)]
-bottom = [image.GetScalarComponentAsDouble(150, 100, 0, c) for c in range(3)]
-check(top[0] > top[2] + 40 and bottom[2] > bottom[0] + 40,
-      "rendered red above and blue below (top %s, bottom %s)" % (top, bottom))
+
+
+def check_red_above_blue(x, what):
+    """The screenshot's column x: red above the middle, blue below."""
+    reader = vtkPNGReader()
+    reader.SetFileName(shot)
+    reader.Update()
+    image = reader.GetOutput()
+    top = [image.GetScalarComponentAsDouble(x, 200, 0, c) for c in range(3)]
+    bottom = [image.GetScalarComponentAsDouble(x, 100, 0, c) for c in range(3)]
+    check(top[0] > top[2] + 40 and bottom[2] > bottom[0] + 40,
+          "%s: red above and blue below (top %s, bottom %s)" % (what, top, bottom))
+
+
+check_red_above_blue(150, "rendered")
 
 # A lookup table of the session's: Grayscale gives grey texels.
 table = GetColorTransferFunction("Elevation")
@@ -69,6 +77,28 @@ texels = servermanager.Fetch(bake, idx=1).GetPointData().GetArray("BakedTexture"
 grey = [texels.GetTuple3(i) for i in range(0, texels.GetNumberOfTuples(), 997)]
 check(all(abs(r - g) <= 1 and abs(g - b) <= 1 for r, g, b in grey) and any(r > 0 for r, _, _ in grey),
       "grey texels through the session's Grayscale table")
+
+# A multiblock of two spheres: one texture for both, and the output keeps the two blocks.
+pair = Triangulate(Input=Elevation(Input=GroupDatasets(Input=[Sphere(Center=[-0.6, 0, 0], ThetaResolution=64, PhiResolution=64),
+                                                              Sphere(Center=[0.6, 0, 0], ThetaResolution=64, PhiResolution=64)]),
+                                   LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5]))
+pairBake = TextureBaking(Simplified=OctreeVertexClustering(Input=pair, TargetReduction=0.95, GenerateOriginalIds=1),
+                         Original=pair, TextureSize="512")
+pairBake.UpdatePipeline()
+blocks = servermanager.Fetch(pairBake)
+check(blocks.IsA("vtkMultiBlockDataSet") and blocks.GetNumberOfBlocks() == 2 and
+      all(blocks.GetBlock(b).GetPointData().GetTCoords() is not None for b in range(2)), "two blocks with texture coordinates")
+Hide(bake, view)
+pairDisplay = Show(OutputPort(pairBake, 0), view)
+ColorBy(pairDisplay, None)
+pairTexture = servermanager.rendering.Texture()
+pairTexture.Input = OutputPort(pairBake, 1)
+pairDisplay.Texture = pairTexture
+view.ResetCamera()
+Render(view)
+SaveScreenshot(shot, view, ImageResolution=[300, 300])
+check_red_above_blue(80, "the left block")
+check_red_above_blue(220, "the right block")
 Delete(view)
 del view
 finish()
