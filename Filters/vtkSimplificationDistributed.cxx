@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkSimplificationDistributed.h"
 
+#include "vtkMultiBlockDataSet.h"
 #include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
 
 #include <Eigen/Core>
 
@@ -140,6 +143,52 @@ double SumOverProcesses(double value)
   std::vector<double> values{ value };
   ReduceOverProcesses(values, vtkCommunicator::SUM_OP);
   return values[0];
+}
+
+void MaximumOverProcesses(unsigned char* values, vtkIdType count)
+{
+  if (!IsDistributed() || count == 0)
+  {
+    return;
+  }
+  std::vector<unsigned char> local(values, values + count);
+  vtkMultiProcessController::GetGlobalController()->AllReduce(local.data(), values, count, vtkCommunicator::MAX_OP);
+}
+
+std::vector<vtkSmartPointer<vtkPolyData>> GatherSurfaces(const std::vector<vtkPolyData*>& surfaces, std::size_t& first)
+{
+  std::vector<vtkSmartPointer<vtkPolyData>> all(surfaces.begin(), surfaces.end());
+  first = 0;
+  if (!IsDistributed())
+  {
+    return all;
+  }
+  // One multiblock a process, its surfaces as blocks in order.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  vtkNew<vtkMultiBlockDataSet> sent;
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    sent->SetBlock(static_cast<unsigned int>(i), surfaces[i]);
+  }
+  std::vector<vtkSmartPointer<vtkDataObject>> received;
+  controller->AllGather(sent, received);
+  all.clear();
+  for (int process = 0; process < static_cast<int>(received.size()); ++process)
+  {
+    if (process == controller->GetLocalProcessId())
+    {
+      first = all.size();
+      all.insert(all.end(), surfaces.begin(), surfaces.end());
+      continue;
+    }
+    auto* blocks = vtkMultiBlockDataSet::SafeDownCast(received[process]);
+    for (unsigned int b = 0; blocks && b < blocks->GetNumberOfBlocks(); ++b)
+    {
+      vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(blocks->GetBlock(b));
+      all.push_back(surface ? surface : vtkSmartPointer<vtkPolyData>::New());
+    }
+  }
+  return all;
 }
 
 meshsimp::BorderExchange MakeBorderExchange()

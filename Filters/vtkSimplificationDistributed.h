@@ -11,9 +11,13 @@
 
 #include "SharedBorders.h"
 #include "vtkSimplificationInput.h"
+#include "vtkSmartPointer.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
+
+class vtkPolyData;
 
 namespace vtkSimplification
 {
@@ -44,6 +48,15 @@ Totals GatherTotals(const std::vector<const TriangleInput*>& pieces);
 
 /// The sum of value over the processes (value itself without MPI).
 double SumOverProcesses(double value);
+
+/// The largest of each value over the processes, in place (unchanged without MPI).
+void MaximumOverProcesses(unsigned char* values, vtkIdType count);
+
+/**
+ * Every process's surfaces, in process order (surfaces alone without MPI): this process's as
+ * they are, the others' as copies received. first: where this process's begin.
+ */
+std::vector<vtkSmartPointer<vtkPolyData>> GatherSurfaces(const std::vector<vtkPolyData*>& surfaces, std::size_t& first);
 
 /// The border round's exchanges (meshsimp::SimplifySharedBorders) over the global controller's
 /// processes, or within this one.

@@ -3,6 +3,7 @@
 
 #include "TextureAtlas.h"
 #include "TextureBaking.h"
+#include "vtkSimplificationDistributed.h"
 #include "vtkSimplificationInput.h"
 #include "vtkSimplificationPieces.h"
 #include "vtkSimplificationThreads.h"
@@ -20,6 +21,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkScalarsToColors.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -37,17 +39,20 @@ vtkCxxSetObjectMacro(vtkTextureBaking, LookupTable, vtkScalarsToColors);
 
 namespace
 {
-/// One input of the bake: its surfaces (the input, or the polygonal leaves of composite data)
-/// and their triangles joined into one surface.
+/// One input of the bake: its surfaces (the input, or the polygonal leaves of composite data;
+/// under MPI every process's, in process order) and their triangles joined into one surface.
 struct BakeInput
 {
   std::vector<vtkSimplification::Piece> Pieces;
+  std::size_t FirstLocal = 0, LocalPieces = 0; // this process's pieces
   vtkSimplification::JoinedTriangles Joined;
+
+  bool IsLocal(std::size_t k) const { return k >= this->FirstLocal && k < this->FirstLocal + this->LocalPieces; }
 };
 
-/// Reads an input (each piece's output placed in output's structure, where output is given).
-/// False with a message in problem, or after PrepareTriangles' own error (problem empty).
-bool ReadInput(vtkAlgorithm* filter, vtkDataObject* input, vtkDataObject* output, BakeInput& side, std::string& problem)
+/// This process's pieces of an input, each one's output placed in output's structure (where
+/// output is given). False with a message in problem.
+bool CollectInput(vtkDataObject* input, vtkDataObject* output, BakeInput& side, std::string& problem)
 {
   if (!vtkSimplification::CollectPieces(input, output, side.Pieces, problem))
   {
@@ -62,12 +67,53 @@ bool ReadInput(vtkAlgorithm* filter, vtkDataObject* input, vtkDataObject* output
       piece.Input->GetPointData()->RemoveArray(vtkSimplification::SurfacePointIdsName);
       piece.Input->GetCellData()->RemoveArray(vtkSimplification::SurfaceCellIdsName);
     }
+  }
+  side.LocalPieces = side.Pieces.size();
+  return true;
+}
+
+/// The other processes' pieces added (collective under MPI: every process then holds every
+/// piece, so the checks below agree), every piece's triangles read and joined. False with a
+/// message in problem, or after PrepareTriangles' own error (problem empty).
+bool PrepareInput(vtkAlgorithm* filter, BakeInput& side, std::string& problem)
+{
+  std::vector<vtkPolyData*> local;
+  for (const vtkSimplification::Piece& piece : side.Pieces)
+  {
+    local.push_back(piece.Input);
+  }
+  const std::vector<vtkSmartPointer<vtkPolyData>> all = vtkSimplification::GatherSurfaces(local, side.FirstLocal);
+  std::vector<vtkSimplification::Piece> pieces(all.size());
+  for (std::size_t k = 0; k < all.size(); ++k)
+  {
+    if (side.IsLocal(k))
+    {
+      pieces[k] = std::move(side.Pieces[k - side.FirstLocal]);
+    }
+    pieces[k].Input = all[k];
+  }
+  side.Pieces = std::move(pieces);
+  for (vtkSimplification::Piece& piece : side.Pieces)
+  {
     if (!vtkSimplification::PrepareTriangles(filter, piece.Input, piece.Triangles))
     {
       return false;
     }
   }
   return vtkSimplification::JoinTriangles(side.Pieces, side.Joined, problem);
+}
+
+/// The atlas's squares whose triangles are this process's: the texels it bakes (under MPI each
+/// process bakes its own squares of the one atlas, and the textures are merged).
+meshsimp::TextureAtlas OwnSquares(const meshsimp::TextureAtlas& atlas, const BakeInput& simplified)
+{
+  meshsimp::TextureAtlas own = atlas;
+  const std::int64_t first = simplified.Joined.FirstTriangle[simplified.FirstLocal];
+  const std::int64_t end = simplified.Joined.FirstTriangle[simplified.FirstLocal + simplified.LocalPieces];
+  own.Squares.erase(std::remove_if(own.Squares.begin(), own.Squares.end(),
+                      [&](const meshsimp::AtlasSquare& square) { return square.Triangles[0] < first || square.Triangles[0] >= end; }),
+    own.Squares.end());
+  return own;
 }
 
 /// Where the split surface's points and triangles go: per piece, its points and triangles in
@@ -187,6 +233,54 @@ double Diagonal(const BakeInput& side)
   return box.IsValid() ? box.GetDiagonalLength() : 0.0;
 }
 
+/// Both inputs read, with a one-line error where one cannot be; false then, and on every
+/// process where one could not read its pieces (collective under MPI).
+bool ReadInputs(vtkAlgorithm* filter, vtkDataObject* const given[2], vtkDataObject* output, BakeInput& simplified, BakeInput& original)
+{
+  std::string problem;
+  const char* side = "simplified";
+  bool read = CollectInput(given[0], output, simplified, problem);
+  if (read)
+  {
+    side = "original";
+    read = CollectInput(given[1], nullptr, original, problem);
+  }
+  if (!read && !problem.empty())
+  {
+    vtkErrorWithObjectMacro(filter, "Cannot bake: the " << side << " surface: " << problem << ".");
+  }
+  if (vtkSimplification::SumOverProcesses(read ? 0.0 : 1.0) > 0.0) // one process could not: all stop
+  {
+    return false;
+  }
+  read = PrepareInput(filter, simplified, problem);
+  side = read ? "original" : "simplified";
+  read = read && PrepareInput(filter, original, problem);
+  if (!read && !problem.empty())
+  {
+    vtkErrorWithObjectMacro(filter, "Cannot bake: the " << side << " surface: " << problem << ".");
+  }
+  return read;
+}
+
+/// The texture: the baked colours (under MPI, each process's squares merged into one texture
+/// that every process holds) and the counts as field data, summed over the processes.
+void WriteTexture(const meshsimp::BakedTexture& baked, vtkUnsignedCharArray* colours, int size, vtkImageData* texture)
+{
+  vtkSimplification::MaximumOverProcesses(colours->GetPointer(0), colours->GetNumberOfValues());
+  texture->SetDimensions(size, size, 1);
+  texture->GetPointData()->SetScalars(colours);
+  const std::pair<const char*, std::int64_t> counts[] = { { "TriangleTexels", baked.InsideTexels },
+    { "EmptyTexels", baked.EmptyTexels }, { "ExactSearches", baked.ExactSearches }, { "CorrectedWalks", baked.CorrectedWalks } };
+  for (const auto& [name, count] : counts)
+  {
+    vtkNew<vtkIdTypeArray> value;
+    value->SetName(name);
+    value->InsertNextValue(static_cast<vtkIdType>(vtkSimplification::SumOverProcesses(static_cast<double>(count))));
+    texture->GetFieldData()->AddArray(value);
+  }
+}
+
 /// TextureSize rounded down to a power of two.
 int PowerOfTwo(int size)
 {
@@ -258,9 +352,26 @@ int vtkTextureBaking::RequestInformation(vtkInformation*, vtkInformationVector**
   return 1;
 }
 
+int vtkTextureBaking::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector*)
+{
+  // Under MPI every process takes its own piece of both surfaces whichever output asks, so that
+  // all bake the one texture of the whole surface: a texture consumer asks for the whole image
+  // (one piece), and with that request passed on every process would bake the whole surface.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  for (int port = 0; port < 2 && vtkSimplification::IsDistributed(); ++port)
+  {
+    for (int connection = 0; connection < inputs[port]->GetNumberOfInformationObjects(); ++connection)
+    {
+      vtkInformation* request = inputs[port]->GetInformationObject(connection);
+      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), controller->GetLocalProcessId());
+      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), controller->GetNumberOfProcesses());
+    }
+  }
+  return 1;
+}
+
 int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
-  vtkImageData* texture = vtkImageData::GetData(outputs, 1);
   vtkImageData* image = vtkImageData::GetData(inputs[2]);
   vtkDataObject* given[2] = { vtkDataObject::GetData(inputs[0]), vtkDataObject::GetData(inputs[1]) };
   if (!given[0] || !given[1])
@@ -269,25 +380,13 @@ int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs
     return 1;
   }
   BakeInput simplified, original;
-  std::string problem;
-  const char* side = "simplified";
-  bool read = ReadInput(this, given[0], vtkDataObject::GetData(outputs, 0), simplified, problem);
-  if (read)
+  if (!ReadInputs(this, given, vtkDataObject::GetData(outputs, 0), simplified, original))
   {
-    side = "original";
-    read = ReadInput(this, given[1], nullptr, original, problem);
-  }
-  if (!read)
-  {
-    if (!problem.empty())
-    {
-      vtkErrorMacro("Cannot bake: the " << side << " surface: " << problem << ".");
-    }
     return 1;
   }
-  problem = simplified.Joined.View.NumberOfTriangles == 0 ? "the simplified surface has no triangles"
-    : original.Joined.View.NumberOfTriangles == 0         ? "the original has no triangles"
-                                                          : "";
+  std::string problem = simplified.Joined.View.NumberOfTriangles == 0 ? "the simplified surface has no triangles"
+    : original.Joined.View.NumberOfTriangles == 0                     ? "the original has no triangles"
+                                                                      : "";
   vtkSimplification::BakeSource source;
   if (problem.empty())
   {
@@ -306,31 +405,22 @@ int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs
   }
   vtkSimplification::ReadBakeValues(source, original.Pieces);
   this->UpdateProgress(0.05);
+  const bool distributed = vtkSimplification::IsDistributed();
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
-  const meshsimp::BakedTexture baked = meshsimp::BakeTexels(simplified.Joined.View, atlas, original.Joined.View,
-    { source.Values.data(), source.Components, source.PerTriangle }, Seeds(simplified, original),
+  const meshsimp::BakedTexture baked = meshsimp::BakeTexels(simplified.Joined.View, distributed ? OwnSquares(atlas, simplified) : atlas,
+    original.Joined.View, { source.Values.data(), source.Components, source.PerTriangle }, Seeds(simplified, original),
     this->MaximumDistance * Diagonal(original), context);
-  if (baked.Aborted)
+  if (vtkSimplification::SumOverProcesses(baked.Aborted ? 1.0 : 0.0) > 0.0)
   {
     return 1;
   }
   const meshsimp::SeamSplit split = meshsimp::SplitAtSeams(simplified.Joined.View, atlas);
   const SplitParts parts = SortOut(split, simplified.Joined);
-  for (std::size_t k = 0; k < simplified.Pieces.size(); ++k)
+  for (std::size_t k = simplified.FirstLocal; k < simplified.FirstLocal + simplified.LocalPieces; ++k)
   {
     WriteMesh(simplified, k, split, parts);
   }
-  texture->SetDimensions(atlas.Size, atlas.Size, 1);
-  texture->GetPointData()->SetScalars(vtkSimplification::BakedColours(source, baked, this->LookupTable, image));
-  const std::pair<const char*, std::int64_t> counts[] = { { "TriangleTexels", baked.InsideTexels },
-    { "EmptyTexels", baked.EmptyTexels }, { "ExactSearches", baked.ExactSearches }, { "CorrectedWalks", baked.CorrectedWalks } };
-  for (const auto& [name, count] : counts)
-  {
-    vtkNew<vtkIdTypeArray> value;
-    value->SetName(name);
-    value->InsertNextValue(static_cast<vtkIdType>(count));
-    texture->GetFieldData()->AddArray(value);
-  }
+  WriteTexture(baked, vtkSimplification::BakedColours(source, baked, this->LookupTable, image), atlas.Size, vtkImageData::GetData(outputs, 1));
   return 1;
 }
 

@@ -28,7 +28,10 @@
  * at the same place) or else from an exact search for each square's
  * first texel; exact searches within MaximumDistance check the walks on a lattice of texels
  * and around every walk they correct (a walk can stop on the wrong hill of a rugged terrain).
- * Texels run on all threads (the result does not depend on how many).
+ * Texels run on all threads (the result does not depend on how many). Under MPI every process
+ * gathers all pieces of both inputs and bakes its own triangles' squares of the one atlas, and
+ * the textures are merged: every process holds the whole texture, its piece the coordinates
+ * into it; each process asks its inputs for its own piece, whichever output asks.
  *
  * Output 0 is the simplified surface's triangles with texture coordinates "TCoords" (points
  * split where the atlas puts a point's triangles apart, each copy with the point's data) and
@@ -115,6 +118,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:

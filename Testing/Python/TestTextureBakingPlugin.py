@@ -10,7 +10,7 @@ import os
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403 (the pvpython idiom)
 
-from plugintest import arguments, check, finish
+from plugintest import arguments, check, finish, render_textured
 
 args = arguments("--temp")
 
@@ -35,38 +35,18 @@ check(texture.GetDimensions() == (512, 512, 1) and texture.GetPointData().GetArr
       "a 512 x 512 texture")
 
 # Shown textured: a Texture proxy fed by the second output, scalar colouring off.
-view = CreateRenderView()
-view.ViewSize = [300, 300]
-view.OrientationAxesVisibility = 0
-display = Show(OutputPort(bake, 0), view)
-ColorBy(display, None)
-picture = servermanager.rendering.Texture()
-picture.Input = OutputPort(bake, 1)
-display.Texture = picture
-view.CameraPosition = [0, -3, 0]
-view.CameraFocalPoint = [0, 0, 0]
-view.CameraViewUp = [0, 0, 1]
-view.ResetCamera()
-Render(view)
 shot = os.path.join(args.temp or ".", "TestTextureBakingPlugin.png")
-SaveScreenshot(shot, view, ImageResolution=[300, 300])
-from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
 
-
-def check_red_above_blue(x, what):
-    """The screenshot's column x: red above the middle, blue below."""
-    reader = vtkPNGReader()
-    reader.SetFileName(shot)
-    reader.Update()
-    image = reader.GetOutput()
+def check_red_above_blue(image, x, what):
+    """The render's column x: red above the middle, blue below."""
     top = [image.GetScalarComponentAsDouble(x, 200, 0, c) for c in range(3)]
     bottom = [image.GetScalarComponentAsDouble(x, 100, 0, c) for c in range(3)]
     check(top[0] > top[2] + 40 and bottom[2] > bottom[0] + 40,
           "%s: red above and blue below (top %s, bottom %s)" % (what, top, bottom))
 
 
-check_red_above_blue(150, "rendered")
+check_red_above_blue(render_textured(bake, shot), 150, "rendered")
 
 # A lookup table of the session's: Grayscale gives grey texels.
 table = GetColorTransferFunction("Elevation")
@@ -88,17 +68,7 @@ pairBake.UpdatePipeline()
 blocks = servermanager.Fetch(pairBake)
 check(blocks.IsA("vtkMultiBlockDataSet") and blocks.GetNumberOfBlocks() == 2 and
       all(blocks.GetBlock(b).GetPointData().GetTCoords() is not None for b in range(2)), "two blocks with texture coordinates")
-Hide(bake, view)
-pairDisplay = Show(OutputPort(pairBake, 0), view)
-ColorBy(pairDisplay, None)
-pairTexture = servermanager.rendering.Texture()
-pairTexture.Input = OutputPort(pairBake, 1)
-pairDisplay.Texture = pairTexture
-view.ResetCamera()
-Render(view)
-SaveScreenshot(shot, view, ImageResolution=[300, 300])
-check_red_above_blue(80, "the left block")
-check_red_above_blue(220, "the right block")
-Delete(view)
-del view
+image = render_textured(pairBake, shot)
+check_red_above_blue(image, 80, "the left block")
+check_red_above_blue(image, 220, "the right block")
 finish()

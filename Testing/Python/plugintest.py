@@ -136,6 +136,34 @@ def check_front_end(simplifier_class, source, tolerance):
     check(abs(got - 1000) <= 2 * tolerance * 1000 + 2, "a count of 1000 over two blocks gives %d" % got)
 
 
+def render_textured(bake, path):
+    """Texture Baking's first output drawn with its second as its texture (a Texture proxy,
+    scalar colouring off), seen along +y with z up, 300 x 300, saved to path and read back as
+    vtkImageData."""
+    from paraview import servermanager
+    from paraview.simple import ColorBy, CreateRenderView, Delete, OutputPort, Render, SaveScreenshot, Show
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    view = CreateRenderView()
+    view.ViewSize = [300, 300]
+    view.OrientationAxesVisibility = 0
+    display = Show(OutputPort(bake, 0), view)
+    ColorBy(display, None)
+    texture = servermanager.rendering.Texture()
+    texture.Input = OutputPort(bake, 1)
+    display.Texture = texture
+    view.CameraPosition = [0, -3, 0]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    Render(view)
+    SaveScreenshot(path, view, ImageResolution=[300, 300])
+    Delete(view)
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
 def finish():
     print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
     sys.exit(1 if failures else 0)
