@@ -4,6 +4,7 @@
 #include "LODInterpolation.h"
 #include "vtkSimplificationAttributes.h"
 #include "vtkSimplificationInput.h"
+#include "vtkSimplificationPieces.h"
 #include "vtkSimplificationThreads.h"
 
 #include "vtkArrayDispatch.h"
@@ -469,16 +470,26 @@ void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplificat
 } // namespace
 
 vtkLODInterpolation::vtkLODInterpolation()
-  : Built(new Cache)
 {
   this->SetNumberOfInputPorts(2);
 }
 
 vtkLODInterpolation::~vtkLODInterpolation() = default;
 
+vtkTypeBool vtkLODInterpolation::ProcessRequest(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    vtkSimplification::MakeSurfacesOutput(vtkDataObject::GetData(inputs[0], 0), outputs->GetInformationObject(0));
+    return 1;
+  }
+  return this->Superclass::ProcessRequest(request, inputs, outputs);
+}
+
 int vtkLODInterpolation::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // a Progressive Mesh sequence alone
@@ -486,9 +497,18 @@ int vtkLODInterpolation::FillInputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
-bool vtkLODInterpolation::Levels(vtkPolyData* sequence, vtkPolyData*& detailed, vtkPolyData*& coarse)
+int vtkLODInterpolation::FillOutputPortInformation(int, vtkInformation* info)
 {
-  if (!sequence->GetPointData()->GetArray("Parent") || !sequence->GetCellData()->GetArray("RemovedAt"))
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+bool vtkLODInterpolation::Levels(vtkDataObject* sequence, vtkDataObject*& detailed, vtkDataObject*& coarse)
+{
+  std::vector<vtkSimplification::Piece> pieces;
+  std::string problem;
+  if (!vtkSimplification::CollectPieces(sequence, nullptr, pieces, problem) || pieces.empty() ||
+    !pieces[0].Input->GetPointData()->GetArray("Parent") || !pieces[0].Input->GetCellData()->GetArray("RemovedAt"))
   {
     return false;
   }
@@ -507,14 +527,14 @@ bool vtkLODInterpolation::Levels(vtkPolyData* sequence, vtkPolyData*& detailed, 
     level->ComputeDeviationOff();
     level->Update();
   }
-  detailed = this->DetailedLevel->GetOutput();
-  coarse = this->CoarseLevel->GetOutput();
+  detailed = this->DetailedLevel->GetOutputDataObject(0);
+  coarse = this->CoarseLevel->GetOutputDataObject(0);
   return true;
 }
 
-bool vtkLODInterpolation::MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context)
+bool vtkLODInterpolation::MakePartners(
+  vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context, Cache& built)
 {
-  Cache& built = *this->Built;
   const meshsimp::TriangleMeshView& d = built.DetailedTriangles.View;
   const meshsimp::TriangleMeshView& c = built.CoarseTriangles.View;
   switch (this->Correspondence)
@@ -557,9 +577,8 @@ bool vtkLODInterpolation::MakePartners(vtkPolyData* detailed, vtkPolyData* coars
   return true;
 }
 
-bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context)
+bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context, Cache& built)
 {
-  Cache& built = *this->Built;
   if (built.Detailed == detailed && built.Coarse == coarse && built.DetailedTime == GeometryTime(detailed) &&
     built.CoarseTime == GeometryTime(coarse) && built.Mode == this->Correspondence &&
     (this->Correspondence != EXACT || built.Record == Record(coarse)))
@@ -584,7 +603,7 @@ bool vtkLODInterpolation::Pair(vtkPolyData* detailed, vtkPolyData* coarse, const
     built = Cache();
     return false;
   }
-  if (!this->MakePartners(detailed, coarse, context))
+  if (!this->MakePartners(detailed, coarse, context, built))
   {
     built = Cache();
     return false;
@@ -623,22 +642,58 @@ int vtkLODInterpolation::RequestInformation(vtkInformation*, vtkInformationVecto
 
 int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
-  vtkPolyData* detailed = vtkPolyData::GetData(inputs[0]);
-  vtkPolyData* coarse = vtkPolyData::GetData(inputs[1]);
-  vtkPolyData* output = vtkPolyData::GetData(outputs);
-  output->Initialize(); // empty unless a frame is made
+  vtkDataObject* detailed = vtkDataObject::GetData(inputs[0]);
+  vtkDataObject* coarse = vtkDataObject::GetData(inputs[1]);
+  vtkDataObject* output = vtkDataObject::GetData(outputs);
+  if (auto* surface = vtkPolyData::SafeDownCast(output))
+  {
+    surface->Initialize(); // empty unless a frame is made
+  }
   if (!detailed || (!coarse && !this->Levels(detailed, detailed, coarse)))
   {
     vtkErrorMacro("Cannot morph: LoD Interpolation needs two surfaces, the detailed one (input 0) and the coarse one "
                   "(input 1), or a Progressive Mesh sequence alone (input 0).");
     return 1;
   }
-  const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
-  if (!this->Pair(detailed, coarse, context))
+  // Composite data morphs block by block: the detailed input's surfaces with the coarse one's
+  // in the same order, each pair with its own correspondence.
+  std::vector<vtkSimplification::Piece> details, coarses;
+  std::string problem;
+  if (!vtkSimplification::CollectPieces(detailed, output, details, problem) ||
+    !vtkSimplification::CollectPieces(coarse, nullptr, coarses, problem))
   {
+    vtkErrorMacro("Cannot morph: " << problem << ".");
     return 1;
   }
-  Cache& built = *this->Built;
+  if (details.size() != coarses.size())
+  {
+    vtkErrorMacro("Cannot morph: the detailed input has " << details.size() << " surfaces and the coarse input "
+                                                          << coarses.size() << "; give both the same blocks.");
+    return 1;
+  }
+  vtkInformation* request = outputs->GetInformationObject(0);
+  const double t = this->InterpolationFromTime && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? std::min(1.0, std::max(0.0, request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())))
+    : this->Interpolation;
+  const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
+  this->Built.resize(details.size());
+  for (std::size_t k = 0; k < details.size(); ++k)
+  {
+    if (!this->Morph(details[k].Input, coarses[k].Input, t, context, this->Built[k], details[k].Output))
+    {
+      return 1;
+    }
+  }
+  return 1;
+}
+
+bool vtkLODInterpolation::Morph(vtkPolyData* detailed, vtkPolyData* coarse, double t, const meshsimp::ExecutionContext& context,
+  Cache& built, vtkPolyData* output)
+{
+  if (!this->Pair(detailed, coarse, context, built))
+  {
+    return false;
+  }
   const double mergeDistance = this->MergeDistance * built.Diagonal;
   if (!this->MorphInShader && built.Scheduled != mergeDistance)
   {
@@ -647,10 +702,6 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
     built.Scheduled = mergeDistance;
   }
   this->UpdateProgress(0.5);
-  vtkInformation* request = outputs->GetInformationObject(0);
-  const double t = this->InterpolationFromTime && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-    ? std::min(1.0, std::max(0.0, request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())))
-    : this->Interpolation;
   // The data the frame maps: without arrays shorter than their points or cells (a warning each).
   const vtkSmartPointer<vtkPolyData> detailedData = vtkSimplification::WithUsableAttributes(this, detailed);
   const vtkSmartPointer<vtkPolyData> coarseData = vtkSimplification::WithUsableAttributes(this, coarse);
@@ -670,7 +721,7 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
   builds->SetName("CorrespondenceBuilds");
   builds->InsertNextValue(this->CorrespondenceBuilds);
   output->GetFieldData()->AddArray(builds);
-  return 1;
+  return true;
 }
 
 void vtkLODInterpolation::PrintSelf(ostream& os, vtkIndent indent)

@@ -6,7 +6,10 @@
  *
  * Input 0 is the detailed surface, input 1 the coarse one; any two surfaces (outputs of this
  * module's filters, of ParaView's Decimate, two files). Or input 0 alone, a Progressive Mesh
- * sequence: the surfaces are two of its levels (DetailedReduction, CoarseReduction). Every detailed point gets a partner on
+ * sequence: the surfaces are two of its levels (DetailedReduction, CoarseReduction). Composite
+ * data morphs block by block: the detailed input's polygonal blocks with the coarse input's in
+ * the same order (both must have as many), each pair with its own correspondence, into an
+ * output of the detailed input's structure. Every detailed point gets a partner on
  * the coarse surface once (Correspondence): NEAREST_VERTEX, the paper's, pairs every coarse
  * point with its nearest detailed point and every other detailed point with its nearest coarse
  * point; NEAREST_SURFACE_POINT (default) sends every detailed point to the closest point of the
@@ -50,7 +53,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // for the levels' filters
 
-#include <memory>
+#include <vector>
 
 class vtkProgressiveMesh;
 
@@ -160,21 +163,28 @@ public:
 protected:
   vtkLODInterpolation();
   ~vtkLODInterpolation() override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
   vtkLODInterpolation(const vtkLODInterpolation&) = delete;
   void operator=(const vtkLODInterpolation&) = delete;
-  /// The correspondence for these inputs, built again only where their geometry or the
-  /// Correspondence changed; false, with an error, where it cannot be.
-  bool Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context);
+  struct Cache;
+  /// The correspondence for these surfaces in built, built again only where their geometry or
+  /// the Correspondence changed; false, with an error, where it cannot be.
+  bool Pair(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context, Cache& built);
   /// The partners of the Correspondence for the triangles Pair extracted.
-  bool MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context);
-  /// With a sequence alone: its two levels (made by filters kept here, which extract them from
-  /// the sequence without building it again).
-  bool Levels(vtkPolyData* sequence, vtkPolyData*& detailed, vtkPolyData*& coarse);
+  bool MakePartners(vtkPolyData* detailed, vtkPolyData* coarse, const meshsimp::ExecutionContext& context, Cache& built);
+  /// The frame at t of one surface (or block) into output; false, with an error, where it cannot
+  /// be made.
+  bool Morph(vtkPolyData* detailed, vtkPolyData* coarse, double t, const meshsimp::ExecutionContext& context, Cache& built,
+    vtkPolyData* output);
+  /// With a sequence alone (or composite data of sequences): its two levels (made by filters
+  /// kept here, which extract them from the sequence without building it again).
+  bool Levels(vtkDataObject* sequence, vtkDataObject*& detailed, vtkDataObject*& coarse);
 
   double Interpolation = 0.0;
   double MergeDistance = 0.001;
@@ -185,8 +195,7 @@ private:
   double CoarseReduction = 0.9;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   int CorrespondenceBuilds = 0;
-  struct Cache;
-  std::unique_ptr<Cache> Built; // the correspondence and what it was built from
+  std::vector<Cache> Built; // per surface (block): the correspondence and what it was built from
   vtkSmartPointer<vtkProgressiveMesh> DetailedLevel, CoarseLevel; // with a sequence alone
 };
 

@@ -4,8 +4,8 @@
 // surface never falls as t grows; no triangle turns over; a point array of both inputs morphs;
 // the correspondence is built once for 11 frames; the geomorph of a recorded simplification
 // ends on the coarse triangles, also between two levels of a Progressive Mesh sequence given
-// alone; the GPU output carries the places at t = 1; the time can set the frame; bad inputs give
-// one-line errors. With -V, the
+// alone; a multiblock morphs block by block; the GPU output carries the places at t = 1; the
+// time can set the frame; bad inputs give one-line errors. With -V, the
 // cow at t = 0.5 against its baseline image.
 #include "vtkAppearancePreservingCollapse.h"
 #include "vtkLODInterpolation.h"
@@ -16,7 +16,9 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkGenericCell.h"
+#include "vtkIdList.h"
 #include "vtkIntArray.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkPointData.h"
 #include "vtkSphereSource.h"
 #include "vtkInformation.h"
@@ -292,6 +294,109 @@ void TestSequenceAlone()
   CHECK(log->Errors.size() == 1 && meshsimp_test::Mentions(log->Errors[0], "or a Progressive Mesh sequence alone"));
 }
 
+/// Whether two surfaces have the same points and triangles.
+bool SameSurface(vtkPolyData* a, vtkPolyData* b)
+{
+  if (!a || !b || a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfPolys() != b->GetNumberOfPolys())
+  {
+    return false;
+  }
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    if (!std::equal(a->GetPoint(p), a->GetPoint(p) + 3, b->GetPoint(p)))
+    {
+      return false;
+    }
+  }
+  vtkNew<vtkIdList> x, y;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellPoints(c, x);
+    b->GetCellPoints(c, y);
+    if (x->GetNumberOfIds() != y->GetNumberOfIds() || !std::equal(x->begin(), x->end(), y->begin()))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void TestComposite()
+{
+  // A multiblock of two spheres, simplified block by block: its frame is, block by block, the
+  // frame of each pair alone (each with its own correspondence, built once); a Progressive Mesh
+  // sequence of the blocks morphs alone too; blocks that do not pair up give one line.
+  vtkSmartPointer<vtkPolyData> sphere, unused;
+  SphereAndCoarse(sphere, unused);
+  vtkNew<vtkPolyData> shifted;
+  shifted->DeepCopy(sphere);
+  for (vtkIdType p = 0; p < shifted->GetNumberOfPoints(); ++p)
+  {
+    const double* at = sphere->GetPoint(p);
+    shifted->GetPoints()->SetPoint(p, at[0] + 2.0, at[1], at[2]);
+  }
+  vtkNew<vtkMultiBlockDataSet> detailed;
+  detailed->SetBlock(0, sphere);
+  detailed->SetBlock(1, shifted);
+  vtkNew<vtkAppearancePreservingCollapse> simplify;
+  simplify->SetInputData(detailed);
+  simplify->SetTargetReduction(0.95);
+  simplify->GenerateOriginalIdsOn();
+  simplify->Update();
+  auto* coarse = vtkMultiBlockDataSet::SafeDownCast(simplify->GetOutputDataObject(0));
+  for (const int correspondence : { vtkLODInterpolation::NEAREST_SURFACE_POINT, vtkLODInterpolation::EXACT })
+  {
+    vtkNew<vtkLODInterpolation> morph;
+    morph->SetInputData(0, detailed);
+    morph->SetCoarseData(coarse);
+    morph->SetCorrespondence(correspondence);
+    morph->SetInterpolation(0.5);
+    morph->Update();
+    auto* frames = vtkMultiBlockDataSet::SafeDownCast(morph->GetOutputDataObject(0));
+    CHECK(frames && frames->GetNumberOfBlocks() == 2);
+    for (unsigned int b = 0; frames && b < 2; ++b)
+    {
+      vtkNew<vtkLODInterpolation> alone;
+      alone->SetInputData(0, detailed->GetBlock(b));
+      alone->SetCoarseData(coarse->GetBlock(b));
+      alone->SetCorrespondence(correspondence);
+      alone->SetInterpolation(0.5);
+      alone->Update();
+      CHECK(SameSurface(vtkPolyData::SafeDownCast(frames->GetBlock(b)), alone->GetOutput()));
+    }
+    morph->SetInterpolation(0.75);
+    morph->Update();
+    CHECK(morph->GetCorrespondenceBuilds() == 2);
+  }
+  vtkNew<vtkProgressiveMesh> levels;
+  levels->SetInputData(detailed);
+  levels->SetTargetReduction(0.95);
+  levels->Update();
+  vtkNew<vtkLODInterpolation> sequence;
+  sequence->SetInputData(0, levels->GetOutputDataObject(1));
+  sequence->SetCoarseReduction(0.95);
+  sequence->SetCorrespondence(vtkLODInterpolation::EXACT);
+  sequence->SetInterpolation(1.0);
+  sequence->Update();
+  auto* frames = vtkMultiBlockDataSet::SafeDownCast(sequence->GetOutputDataObject(0));
+  auto* coarsest = vtkMultiBlockDataSet::SafeDownCast(levels->GetOutputDataObject(0));
+  CHECK(frames && coarsest && frames->GetNumberOfBlocks() == 2);
+  for (unsigned int b = 0; frames && coarsest && b < 2; ++b)
+  {
+    CHECK(vtkPolyData::SafeDownCast(frames->GetBlock(b))->GetNumberOfPolys() ==
+      vtkPolyData::SafeDownCast(coarsest->GetBlock(b))->GetNumberOfPolys());
+  }
+  vtkNew<vtkMultiBlockDataSet> one;
+  one->SetBlock(0, coarse->GetBlock(0));
+  vtkNew<meshsimp_test::MessageLog> log;
+  vtkNew<vtkLODInterpolation> unpaired;
+  unpaired->AddObserver(vtkCommand::ErrorEvent, log);
+  unpaired->SetInputData(0, detailed);
+  unpaired->SetCoarseData(one);
+  unpaired->Update();
+  CHECK(log->Errors.size() == 1 && meshsimp_test::Mentions(log->Errors[0], "the detailed input has 2 surfaces and the coarse input 1"));
+}
+
 void TestMorphInShader()
 {
   // For the GPU: the detailed surface as it is, with each point's place at t = 1 as its
@@ -513,6 +618,7 @@ int TestLODInterpolation(int argc, char* argv[])
   TestMorph();
   TestExact();
   TestSequenceAlone();
+  TestComposite();
   TestMorphInShader();
   TestTimeDrivesTheMorph();
   TestFrameKeepsTypes();
