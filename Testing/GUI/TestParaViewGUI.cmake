@@ -1,6 +1,8 @@
 # The plugin in the ParaView GUI: paraview runs Python/GuiLoadPlugin.py and exits; the script
 # writes the triangle counts of the cow simplified by each filter to MARKER (the progressive
-# mesh's at two targets, and its number of builds).
+# mesh's at two targets, and its number of builds), then Texture Baking's four flags (its surface
+# shown with its texture, by Solid Color, rendered in the texture's colours, the texture
+# unregistered with its filter).
 file(REMOVE "${MARKER}")
 set(ENV{MESHSIMPLIFICATION_PLUGIN} "${PLUGIN}")
 set(ENV{MESHSIMPLIFICATION_COW} "${COW}")
@@ -13,7 +15,7 @@ if (NOT EXISTS "${MARKER}")
 endif ()
 file(READ "${MARKER}" counts)
 string(STRIP "${counts}" counts)
-if (NOT counts MATCHES "^([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+)$")
+if (NOT counts MATCHES "^([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([01] [01] [01] [01])$")
   message(FATAL_ERROR "unexpected result from the GUI: ${counts}")
 endif ()
 set(octree "${CMAKE_MATCH_1}")
@@ -22,6 +24,7 @@ set(parallel "${CMAKE_MATCH_3}")
 set(coarse "${CMAKE_MATCH_4}")
 set(fine "${CMAKE_MATCH_5}")
 set(builds "${CMAKE_MATCH_6}")
+set(texture "${CMAKE_MATCH_7}")
 if (octree LESS 563 OR octree GREATER 598 OR volume LESS 575 OR volume GREATER 585
     OR parallel LESS 568 OR parallel GREATER 592)
   message(FATAL_ERROR
@@ -31,5 +34,9 @@ endif ()
 if (NOT coarse EQUAL 580 OR NOT fine EQUAL 2902 OR NOT builds EQUAL 1)
   message(FATAL_ERROR
     "unexpected progressive mesh from the GUI: ${coarse} and ${fine} triangles, ${builds} builds")
+endif ()
+if (NOT texture STREQUAL "1 1 1 1")
+  message(FATAL_ERROR
+    "Texture Baking in the GUI (textured, solid colour, rendered, texture removed): ${texture}")
 endif ()
 message(STATUS "ParaView GUI simplified the cow to ${octree} (octree), ${volume} (volume) and ${parallel} (parallel) triangles")

@@ -1,13 +1,54 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Run by the ParaView GUI (paraview --script=... --exit): load the plugin, simplify the cow with
 each filter, and write the triangle counts ("octree volume parallel progressive-at-90 %
-progressive-at-50 % builds", the progressive mesh's second level from its first build) - or the
-error - to the file MESHSIMPLIFICATION_MARKER names, for Testing/GUI/TestParaViewGUI.cmake to
-check."""
+progressive-at-50 % builds", the progressive mesh's second level from its first build), then
+Texture Baking's four flags (1 where it holds: the surface shown has the filter's texture, a
+Texture proxy fed by its second output in the textures group that the Texture menu lists; it is
+coloured by Solid Color; the render shows the baked elevation, red above and blue below;
+deleting the filter unregisters its texture) - or the error - to the file
+MESHSIMPLIFICATION_MARKER names, for Testing/GUI/TestParaViewGUI.cmake to check."""
 import os
 import traceback
 
 marker = os.environ["MESHSIMPLIFICATION_MARKER"]
+
+
+def baked_texture_flags():
+    """Texture Baking of a sphere coloured by its Elevation, shown in the GUI: the four flags.
+    (The plugin's filters are this module's names, as LoadPlugin put them.)"""
+    from paraview import servermanager
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    sphere = Triangulate(Input=Elevation(Input=Sphere(ThetaResolution=64, PhiResolution=64),
+                                         LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5]))
+    bake = TextureBaking(Simplified=OctreeVertexClustering(Input=sphere, TargetReduction=0.95, GenerateOriginalIds=1),
+                         Original=sphere, TextureSize="512")
+    view = GetActiveViewOrCreate("RenderView")
+    for shown in view.Representations:
+        shown.Visibility = 0
+    display = Show(bake, view)
+    texture = display.Texture
+    textures = servermanager.ProxyManager().GetProxiesInGroup("textures").values()
+    textured = texture is not None and texture.Input is not None and texture.Input.Port == 1 and \
+        texture.Input.GetXMLName() == "TextureBaking" and texture in textures
+    solid = display.ColorArrayName[1] == ""
+    view.OrientationAxesVisibility = 0
+    view.CameraPosition = [0, -3, 0]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    shot = marker + ".png"
+    SaveScreenshot(shot, view, ImageResolution=[300, 300])
+    reader = vtkPNGReader()
+    reader.SetFileName(shot)
+    reader.Update()
+    top = [reader.GetOutput().GetScalarComponentAsDouble(150, 200, 0, c) for c in range(3)]
+    bottom = [reader.GetOutput().GetScalarComponentAsDouble(150, 100, 0, c) for c in range(3)]
+    rendered = top[0] > top[2] + 40 and bottom[2] > bottom[0] + 40
+    Delete(bake)
+    removed = len(servermanager.ProxyManager().GetProxiesInGroup("textures")) == 0
+    return " ".join(str(int(flag)) for flag in (textured, solid, rendered, removed))
+
+
 try:
     from paraview.simple import *  # noqa: F401,F403
 
@@ -34,6 +75,7 @@ try:
                                        collapsed.GetDataInformation().GetNumberOfCells(),
                                        decimated.GetDataInformation().GetNumberOfCells(),
                                        coarse, fine, levels.GetPropertyValue("NumberOfBuilds"))
+    result = result.strip() + " " + baked_texture_flags() + "\n"
 except Exception:
     result = "error\n" + traceback.format_exc()
 with open(marker, "w") as out:
