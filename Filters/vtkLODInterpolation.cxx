@@ -11,6 +11,7 @@
 #include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -147,6 +148,12 @@ struct vtkLODInterpolation::Cache
 
 namespace
 {
+/// Whether a surface has polygons or strips.
+bool HasSurfaceCells(vtkPolyData* surface)
+{
+  return surface->GetNumberOfPolys() + surface->GetNumberOfStrips() > 0;
+}
+
 /// When a surface's points or cells last changed. (Not the data object's time: ParaView's
 /// pipeline touches a source's point, cell and field data on every update downstream, which
 /// would rebuild the correspondence at every frame.)
@@ -677,8 +684,15 @@ int vtkLODInterpolation::RequestData(vtkInformation*, vtkInformationVector** inp
     : this->Interpolation;
   const meshsimp::ExecutionContext context = vtkSimplification::MakeExecutionContext(this, 0);
   this->Built.resize(details.size());
+  const bool blocks = vtkCompositeDataSet::SafeDownCast(detailed) != nullptr;
   for (std::size_t k = 0; k < details.size(); ++k)
   {
+    const bool flat[2] = { !HasSurfaceCells(details[k].Input), !HasSurfaceCells(coarses[k].Input) };
+    if (blocks && (flat[0] || flat[1])) // an empty block (after a clip, say) leaves the others to morph
+    {
+      vtkWarningMacro("Block " << k << ": the " << (flat[0] ? "detailed" : "coarse") << " block has no triangles; its frame is left empty.");
+      continue;
+    }
     if (!this->Morph(details[k].Input, coarses[k].Input, t, context, this->Built[k], details[k].Output))
     {
       return 1;

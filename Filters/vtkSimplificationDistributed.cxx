@@ -155,13 +155,14 @@ void MaximumOverProcesses(unsigned char* values, vtkIdType count)
   vtkMultiProcessController::GetGlobalController()->AllReduce(local.data(), values, count, vtkCommunicator::MAX_OP);
 }
 
-std::vector<vtkSmartPointer<vtkPolyData>> GatherSurfaces(const std::vector<vtkPolyData*>& surfaces, std::size_t& first)
+bool GatherSurfaces(const std::vector<vtkPolyData*>& surfaces, std::vector<vtkSmartPointer<vtkPolyData>>& all,
+  std::vector<std::size_t>& counts)
 {
-  std::vector<vtkSmartPointer<vtkPolyData>> all(surfaces.begin(), surfaces.end());
-  first = 0;
+  all.assign(surfaces.begin(), surfaces.end());
+  counts.assign(1, surfaces.size());
   if (!IsDistributed())
   {
-    return all;
+    return true;
   }
   // One multiblock a process, its surfaces as blocks in order.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
@@ -171,24 +172,23 @@ std::vector<vtkSmartPointer<vtkPolyData>> GatherSurfaces(const std::vector<vtkPo
     sent->SetBlock(static_cast<unsigned int>(i), surfaces[i]);
   }
   std::vector<vtkSmartPointer<vtkDataObject>> received;
-  controller->AllGather(sent, received);
+  bool arrived = controller->AllGather(sent, received) != 0 && received.size() == static_cast<std::size_t>(controller->GetNumberOfProcesses());
   all.clear();
-  for (int process = 0; process < static_cast<int>(received.size()); ++process)
+  counts.clear();
+  for (int process = 0; arrived && process < static_cast<int>(received.size()); ++process)
   {
-    if (process == controller->GetLocalProcessId())
-    {
-      first = all.size();
-      all.insert(all.end(), surfaces.begin(), surfaces.end());
-      continue;
-    }
     auto* blocks = vtkMultiBlockDataSet::SafeDownCast(received[process]);
-    for (unsigned int b = 0; blocks && b < blocks->GetNumberOfBlocks(); ++b)
+    arrived = process == controller->GetLocalProcessId() || blocks;
+    counts.push_back(process == controller->GetLocalProcessId() ? surfaces.size() : blocks ? blocks->GetNumberOfBlocks() : 0);
+    for (std::size_t b = 0; arrived && b < counts.back(); ++b)
     {
-      vtkSmartPointer<vtkPolyData> surface = vtkPolyData::SafeDownCast(blocks->GetBlock(b));
+      vtkSmartPointer<vtkPolyData> surface = process == controller->GetLocalProcessId()
+        ? surfaces[b]
+        : vtkPolyData::SafeDownCast(blocks->GetBlock(static_cast<unsigned int>(b)));
       all.push_back(surface ? surface : vtkSmartPointer<vtkPolyData>::New());
     }
   }
-  return all;
+  return SumOverProcesses(arrived ? 0.0 : 1.0) == 0.0;
 }
 
 meshsimp::BorderExchange MakeBorderExchange()

@@ -2,9 +2,10 @@
 /**
  * @file vtkSimplificationDistributed.h
  * @brief What the filters agree on across the pieces of a composite or distributed input
- * (private to the module): the points pieces share, which stay locked, and the totals a target
- * is shared out by. Each function is collective under MPI: every process calls it once per
- * execution, whatever pieces it holds.
+ * (private to the module): the points pieces share, which stay locked, the totals a target is
+ * shared out by, the reductions of values over the processes, and every process's surfaces for
+ * a filter that needs them all (Texture Baking). Each function is collective under MPI: every
+ * process calls it, in the same order, whatever pieces it holds.
  */
 #ifndef vtkSimplificationDistributed_h
 #define vtkSimplificationDistributed_h
@@ -53,10 +54,12 @@ double SumOverProcesses(double value);
 void MaximumOverProcesses(unsigned char* values, vtkIdType count);
 
 /**
- * Every process's surfaces, in process order (surfaces alone without MPI): this process's as
- * they are, the others' as copies received. first: where this process's begin.
+ * Every process's surfaces into all, in process order (surfaces alone without MPI): this
+ * process's as they are, the others' as copies received; counts: how many each process gave.
+ * False on every process where one process's surfaces did not arrive.
  */
-std::vector<vtkSmartPointer<vtkPolyData>> GatherSurfaces(const std::vector<vtkPolyData*>& surfaces, std::size_t& first);
+bool GatherSurfaces(const std::vector<vtkPolyData*>& surfaces, std::vector<vtkSmartPointer<vtkPolyData>>& all,
+  std::vector<std::size_t>& counts);
 
 /// The border round's exchanges (meshsimp::SimplifySharedBorders) over the global controller's
 /// processes, or within this one.

@@ -83,6 +83,12 @@ void PreparePieces(vtkAlgorithm* filter, InputPieces& run);
  */
 struct JoinedTriangles
 {
+  JoinedTriangles() = default;
+  JoinedTriangles(const JoinedTriangles&) = delete; // View may point into the copies below
+  JoinedTriangles& operator=(const JoinedTriangles&) = delete;
+  JoinedTriangles(JoinedTriangles&&) = default;
+  JoinedTriangles& operator=(JoinedTriangles&&) = default;
+
   meshsimp::TriangleMeshView View;
   std::vector<std::int64_t> FirstPoint, FirstTriangle; // per piece, then the totals
   std::vector<double> Points;                          // the copies (none for a single piece)

@@ -7,7 +7,7 @@
 #include "vtkSimplificationInput.h"
 #include "vtkSimplificationPieces.h"
 #include "vtkSimplificationThreads.h"
-#include "vtkTextureBakingSource.h"
+#include "vtkTextureBakingColours.h"
 
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
@@ -31,6 +31,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -44,29 +45,47 @@ namespace
 struct BakeInput
 {
   std::vector<vtkSimplification::Piece> Pieces;
+  std::vector<std::size_t> PiecesPerProcess;   // one count without MPI
   std::size_t FirstLocal = 0, LocalPieces = 0; // this process's pieces
+  bool Composite = false;
   vtkSimplification::JoinedTriangles Joined;
 
   bool IsLocal(std::size_t k) const { return k >= this->FirstLocal && k < this->FirstLocal + this->LocalPieces; }
+
+  /// Piece k in messages, before "the original": "" for one surface, else its block (the
+  /// index among its process's polygonal blocks) and, under MPI, its process.
+  std::string Name(std::size_t k) const
+  {
+    std::size_t process = 0, first = 0;
+    while (process + 1 < this->PiecesPerProcess.size() && k >= first + this->PiecesPerProcess[process])
+    {
+      first += this->PiecesPerProcess[process++];
+    }
+    const std::string owner = this->PiecesPerProcess.size() > 1 ? "process " + std::to_string(process) + "'s " : "";
+    return this->Composite ? owner + "block " + std::to_string(k - first) + " of " : owner.empty() ? "" : owner + "piece of ";
+  }
 };
 
 /// This process's pieces of an input, each one's output placed in output's structure (where
-/// output is given). False with a message in problem.
-bool CollectInput(vtkDataObject* input, vtkDataObject* output, BakeInput& side, std::string& problem)
+/// output is given), without arrays shorter than their points or cells (a warning each). False
+/// with a message in problem.
+bool CollectInput(vtkAlgorithm* filter, vtkDataObject* input, vtkDataObject* output, BakeInput& side, std::string& problem)
 {
   if (!vtkSimplification::CollectPieces(input, output, side.Pieces, problem))
   {
     return false;
   }
+  side.Composite = vtkCompositeDataSet::SafeDownCast(input) != nullptr;
   for (vtkSimplification::Piece& piece : side.Pieces)
   {
     // A surface AsSurface made carries its points' and cells' ids in the dataset: not arrays
     // the user gave, so not carried.
-    if (!vtkCompositeDataSet::SafeDownCast(input) && piece.Input.GetPointer() != input)
+    if (!side.Composite && piece.Input.GetPointer() != input)
     {
       piece.Input->GetPointData()->RemoveArray(vtkSimplification::SurfacePointIdsName);
       piece.Input->GetCellData()->RemoveArray(vtkSimplification::SurfaceCellIdsName);
     }
+    piece.Input = vtkSimplification::WithUsableAttributes(filter, piece.Input);
   }
   side.LocalPieces = side.Pieces.size();
   return true;
@@ -82,7 +101,14 @@ bool PrepareInput(vtkAlgorithm* filter, BakeInput& side, std::string& problem)
   {
     local.push_back(piece.Input);
   }
-  const std::vector<vtkSmartPointer<vtkPolyData>> all = vtkSimplification::GatherSurfaces(local, side.FirstLocal);
+  std::vector<vtkSmartPointer<vtkPolyData>> all;
+  if (!vtkSimplification::GatherSurfaces(local, all, side.PiecesPerProcess))
+  {
+    problem = "the pieces of the other processes did not arrive";
+    return false;
+  }
+  const int process = vtkSimplification::IsDistributed() ? vtkMultiProcessController::GetGlobalController()->GetLocalProcessId() : 0;
+  side.FirstLocal = std::accumulate(side.PiecesPerProcess.begin(), side.PiecesPerProcess.begin() + process, std::size_t{ 0 });
   std::vector<vtkSimplification::Piece> pieces(all.size());
   for (std::size_t k = 0; k < all.size(); ++k)
   {
@@ -196,11 +222,12 @@ void WriteMesh(const BakeInput& simplified, std::size_t k, const meshsimp::SeamS
 
 /// Per point of the joined simplified surface, the point of the joined original it came from:
 /// its piece's vtkOriginalPointIds, read in the original's piece at the same place, where in
-/// range (-1 elsewhere); none when no piece has them or the two inputs' pieces do not match.
+/// range (-1 elsewhere); none when no piece has them or the two inputs' pieces do not match
+/// (as many on every process).
 std::vector<std::int32_t> Seeds(const BakeInput& simplified, const BakeInput& original)
 {
   std::vector<std::int32_t> seeds;
-  for (std::size_t k = 0; simplified.Pieces.size() == original.Pieces.size() && k < simplified.Pieces.size(); ++k)
+  for (std::size_t k = 0; simplified.PiecesPerProcess == original.PiecesPerProcess && k < simplified.Pieces.size(); ++k)
   {
     vtkDataArray* ids = simplified.Pieces[k].Input->GetPointData()->GetArray("vtkOriginalPointIds");
     if (!ids || ids->GetNumberOfComponents() != 1)
@@ -239,11 +266,11 @@ bool ReadInputs(vtkAlgorithm* filter, vtkDataObject* const given[2], vtkDataObje
 {
   std::string problem;
   const char* side = "simplified";
-  bool read = CollectInput(given[0], output, simplified, problem);
+  bool read = CollectInput(filter, given[0], output, simplified, problem);
   if (read)
   {
     side = "original";
-    read = CollectInput(given[1], nullptr, original, problem);
+    read = CollectInput(filter, given[1], nullptr, original, problem);
   }
   if (!read && !problem.empty())
   {
@@ -352,19 +379,29 @@ int vtkTextureBaking::RequestInformation(vtkInformation*, vtkInformationVector**
   return 1;
 }
 
-int vtkTextureBaking::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector*)
+int vtkTextureBaking::RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
+  this->Superclass::RequestUpdateExtent(request, inputs, outputs);
+  if (!vtkSimplification::IsDistributed())
+  {
+    return 1;
+  }
   // Under MPI every process takes its own piece of both surfaces whichever output asks, so that
-  // all bake the one texture of the whole surface: a texture consumer asks for the whole image
-  // (one piece), and with that request passed on every process would bake the whole surface.
+  // all bake the one texture of the whole surface (a texture consumer asks for the whole image,
+  // one piece), and the whole texture image, which every piece looks its colours up in.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  for (int port = 0; port < 2 && vtkSimplification::IsDistributed(); ++port)
+  for (int port = 0; port < 3; ++port)
   {
     for (int connection = 0; connection < inputs[port]->GetNumberOfInformationObjects(); ++connection)
     {
-      vtkInformation* request = inputs[port]->GetInformationObject(connection);
-      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), controller->GetLocalProcessId());
-      request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), controller->GetNumberOfProcesses());
+      vtkInformation* input = inputs[port]->GetInformationObject(connection);
+      const bool whole = port == 2;
+      input->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), whole ? 0 : controller->GetLocalProcessId());
+      input->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), whole ? 1 : controller->GetNumberOfProcesses());
+      if (whole && input->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+      {
+        input->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), input->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+      }
     }
   }
   return 1;
@@ -390,7 +427,12 @@ int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs
   vtkSimplification::BakeSource source;
   if (problem.empty())
   {
-    source = vtkSimplification::ChooseBakeSource(this, original.Pieces, image, problem);
+    std::vector<std::string> names;
+    for (std::size_t k = 0; k < original.Pieces.size(); ++k)
+    {
+      names.push_back(original.Name(k));
+    }
+    source = vtkSimplification::ChooseBakeSource(this, original.Pieces, names, image, problem);
   }
   if (!problem.empty())
   {

@@ -35,13 +35,15 @@
  *
  * Output 0 is the simplified surface's triangles with texture coordinates "TCoords" (points
  * split where the atlas puts a point's triangles apart, each copy with the point's data) and
- * its cell data, for composite input 0 in its blocks (other blocks passed unchanged); output 1 is the texture, vtkImageData of TextureSize² unsigned-char RGB (RGBA
- * where the colours have alpha) in the point array "BakedTexture"; texels of no triangle are 0. Its
- * field data count the texels on triangles (TriangleTexels), those that found no point of the
- * original (EmptyTexels), the squares searched for without a record (ExactSearches) and the
- * texels whose walk the exact search corrected (CorrectedWalks).
- * To show it in ParaView, feed output 1 to a texture of the representation (see the module's
- * README); vtkOBJWriter takes it on its second input.
+ * its cell data, for composite input 0 in its blocks (other blocks passed unchanged); output 1
+ * is the texture, vtkImageData of TextureSize² unsigned-char RGB (RGBA where the colours have
+ * alpha) in the point array "BakedTexture"; texels of no triangle are 0. Its field data count
+ * the texels on triangles (TriangleTexels), those that found no point of the original
+ * (EmptyTexels), the squares searched for without a record (ExactSearches) and the texels whose
+ * walk the exact search corrected (CorrectedWalks).
+ * In the ParaView GUI the plugin shows output 0 with output 1 as its texture; elsewhere feed
+ * output 1 to a texture of the representation (see the module's README); vtkOBJWriter takes it
+ * on its second input.
  *
  * @sa vtkMeshSimplificationFilter vtkLODInterpolation
  */
@@ -118,7 +120,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:

@@ -325,7 +325,8 @@ void TestComposite()
 {
   // A multiblock of two spheres, simplified block by block: its frame is, block by block, the
   // frame of each pair alone (each with its own correspondence, built once); a Progressive Mesh
-  // sequence of the blocks morphs alone too; blocks that do not pair up give one line.
+  // sequence of the blocks morphs alone too; an empty block stays empty; blocks that do not pair
+  // up give one line.
   vtkSmartPointer<vtkPolyData> sphere, unused;
   SphereAndCoarse(sphere, unused);
   vtkNew<vtkPolyData> shifted;
@@ -386,6 +387,23 @@ void TestComposite()
     CHECK(vtkPolyData::SafeDownCast(frames->GetBlock(b))->GetNumberOfPolys() ==
       vtkPolyData::SafeDownCast(coarsest->GetBlock(b))->GetNumberOfPolys());
   }
+  // An empty block (after a clip, say) is left empty with a warning, and the others morph.
+  vtkNew<vtkMultiBlockDataSet> withEmpty, coarseWithEmpty;
+  vtkNew<vtkPolyData> empty;
+  withEmpty->SetBlock(0, sphere);
+  withEmpty->SetBlock(1, empty);
+  coarseWithEmpty->SetBlock(0, coarse->GetBlock(0));
+  coarseWithEmpty->SetBlock(1, empty);
+  vtkNew<meshsimp_test::MessageLog> warnings;
+  vtkNew<vtkLODInterpolation> partly;
+  partly->AddObserver(vtkCommand::WarningEvent, warnings);
+  partly->SetInputData(0, withEmpty);
+  partly->SetCoarseData(coarseWithEmpty);
+  partly->Update();
+  frames = vtkMultiBlockDataSet::SafeDownCast(partly->GetOutputDataObject(0));
+  CHECK(frames && vtkPolyData::SafeDownCast(frames->GetBlock(0))->GetNumberOfPolys() == sphere->GetNumberOfPolys() &&
+    vtkPolyData::SafeDownCast(frames->GetBlock(1))->GetNumberOfPolys() == 0);
+  CHECK(warnings->Warnings.size() == 1 && meshsimp_test::Mentions(warnings->Warnings[0], "Block 1: the detailed block has no triangles"));
   vtkNew<vtkMultiBlockDataSet> one;
   one->SetBlock(0, coarse->GetBlock(0));
   vtkNew<meshsimp_test::MessageLog> log;

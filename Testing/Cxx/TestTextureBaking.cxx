@@ -5,9 +5,9 @@
 // colours; points split only at seams and carry their data, cells carry theirs; a scalar array
 // goes through the lookup table, cell colours fill their triangles, a texture image is looked
 // up through the original's coordinates; a multiblock bakes one texture for all its blocks and
-// keeps them (each with its own arrays), the texture of the one surface they make together;
-// bad inputs give one-line errors and the inputs stay as they were. With -V, the Jacksboro terrain at 99 % with its baked elevation against its
-// baseline image.
+// keeps them (each with its own arrays), the texture of the one surface they make together; bad
+// inputs give one-line errors and the inputs stay as they were. With -V, the Jacksboro terrain
+// at 99 % with its baked elevation against its baseline image.
 #include "vtkTextureBaking.h"
 #include "vtkVolumeTriangleCollapse.h"
 #include "vtkOctreeVertexClustering.h"
@@ -510,7 +510,7 @@ void TestBadInput()
     { BakeErrors(sphere, sphere, nullptr, 1024, "Nothing"), "the original has no point array 'Nothing' to bake" },
     { BakeErrors(sphere, Tetrahedron()), "Cannot bake: the original surface: the vtkUnstructuredGrid has 3-D cells" },
     { BakeErrors(sphere, partlyPlain), "Cannot bake: block 1 of the original has no colours to bake" },
-    { BakeErrors(sphere, mixed), "Cannot bake: block 1 of the original shows an array unlike the other blocks'" },
+    { BakeErrors(sphere, mixed), "Cannot bake: block 1 of the original shows an array unlike the other pieces'" },
   };
   for (const auto& [errors, expected] : cases)
   {

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @file vtkTextureBakingSource.h
+ * @file vtkTextureBakingColours.h
  * @brief What Texture Baking shows (private to the module): the original's array, chosen by one
  * rule in every piece of the original, its values as the baker reads them, and the baked values
  * as the texture's colours.
  */
-#ifndef vtkTextureBakingSource_h
-#define vtkTextureBakingSource_h
+#ifndef vtkTextureBakingColours_h
+#define vtkTextureBakingColours_h
 
 #include "TextureBaking.h"
 #include "vtkSimplificationPieces.h"
@@ -46,9 +46,10 @@ struct BakeSource
  * it; else in every piece with triangles the array that input array 0 of filter selects, else
  * its active point scalars, else its first unsigned-char RGB(A) point array, else the same among
  * its cell data; all of one kind (colours or not), place and number of components. A one-line
- * reason in problem where nothing can be shown.
+ * reason in problem where nothing can be shown, which starts with the piece's name (names[k]).
  */
-BakeSource ChooseBakeSource(vtkAlgorithm* filter, const std::vector<Piece>& original, vtkImageData* image, std::string& problem);
+BakeSource ChooseBakeSource(vtkAlgorithm* filter, const std::vector<Piece>& original, const std::vector<std::string>& names,
+  vtkImageData* image, std::string& problem);
 
 /// The source's values as floats into source.Values, piece after piece.
 void ReadBakeValues(BakeSource& source, const std::vector<Piece>& original);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkTextureBakingSource.h"
+#include "vtkTextureBakingColours.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellData.h"
@@ -75,13 +75,10 @@ vtkDataArray* PieceArray(vtkAlgorithm* filter, vtkPolyData* piece, vtkImageData*
   {
     return ShownArray(filter, piece, perCell, problem);
   }
-  const bool usable = image->GetPointData()->GetScalars() && image->GetPointData()->GetScalars()->GetDataType() == VTK_UNSIGNED_CHAR &&
-    image->GetNumberOfPoints() > 0;
   vtkDataArray* coordinates = piece->GetPointData()->GetTCoords();
-  problem = !usable ? "the texture image (input 2) has no unsigned-char scalars"
-    : !coordinates || coordinates->GetNumberOfComponents() < 2 ? "the original has no texture coordinates for the texture image (input 2)"
-                                                                : "";
-  return problem.empty() ? coordinates : nullptr;
+  const bool usable = coordinates && coordinates->GetNumberOfComponents() >= 2;
+  problem = usable ? "" : "the original has no texture coordinates for the texture image (input 2)";
+  return usable ? coordinates : nullptr;
 }
 
 /// An image's unsigned-char scalars looked up at texture coordinates: bilinear, repeated.
@@ -168,11 +165,16 @@ vtkSmartPointer<vtkScalarsToColors> TableFor(vtkScalarsToColors* chosen, const s
 
 } // namespace
 
-BakeSource ChooseBakeSource(vtkAlgorithm* filter, const std::vector<Piece>& original, vtkImageData* image, std::string& problem)
+BakeSource ChooseBakeSource(vtkAlgorithm* filter, const std::vector<Piece>& original, const std::vector<std::string>& names,
+  vtkImageData* image, std::string& problem)
 {
   BakeSource source;
   source.Kind = image ? BakeSource::TEXTURE : BakeSource::COLOURS;
   source.Arrays.assign(original.size(), nullptr);
+  const bool usable = !image ||
+    (image->GetPointData()->GetScalars() && image->GetPointData()->GetScalars()->GetDataType() == VTK_UNSIGNED_CHAR &&
+      image->GetNumberOfPoints() > 0);
+  problem = usable ? "" : "the texture image (input 2) has no unsigned-char scalars";
   vtkDataArray* first = nullptr;
   for (std::size_t k = 0; k < original.size() && problem.empty(); ++k)
   {
@@ -181,11 +183,10 @@ BakeSource ChooseBakeSource(vtkAlgorithm* filter, const std::vector<Piece>& orig
       continue;
     }
     bool perCell = false;
-    const std::string block = original.size() > 1 ? "block " + std::to_string(k) + " of " : "";
     vtkDataArray* array = PieceArray(filter, original[k].Input, image, perCell, problem);
     if (!array)
     {
-      problem = block + problem;
+      problem = names[k] + problem;
       break;
     }
     if (!first)
@@ -198,7 +199,7 @@ BakeSource ChooseBakeSource(vtkAlgorithm* filter, const std::vector<Piece>& orig
     else if (!image && (perCell != source.PerTriangle || array->GetNumberOfComponents() != source.Components ||
                          IsColours(array) != IsColours(first)))
     {
-      problem = block + "the original shows an array unlike the other blocks' (another kind, place or number of components)";
+      problem = names[k] + "the original shows an array unlike the other pieces' (another kind, place or number of components)";
     }
     source.Arrays[k] = array;
   }
