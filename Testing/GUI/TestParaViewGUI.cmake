@@ -1,8 +1,8 @@
 # The plugin in the ParaView GUI: paraview runs Python/GuiLoadPlugin.py and exits; the script
 # writes the triangle counts of the cow simplified by each filter to MARKER (the progressive
-# mesh's at two targets, and its number of builds), then Texture Baking's four flags (its surface
-# shown with its texture, by Solid Color, rendered in the texture's colours, the texture
-# unregistered with its filter).
+# mesh's at two targets, and its number of builds), then Texture Baking's six flags (its surface
+# shown with its texture, by Solid Color, rendered in the texture's colours; the texture renamed
+# with its filter, one after a state's round trip, unregistered with its filter).
 file(REMOVE "${MARKER}")
 set(ENV{MESHSIMPLIFICATION_PLUGIN} "${PLUGIN}")
 set(ENV{MESHSIMPLIFICATION_COW} "${COW}")
@@ -15,7 +15,7 @@ if (NOT EXISTS "${MARKER}")
 endif ()
 file(READ "${MARKER}" counts)
 string(STRIP "${counts}" counts)
-if (NOT counts MATCHES "^([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([01] [01] [01] [01])$")
+if (NOT counts MATCHES "^([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([0-9]+) ([01] [01] [01] [01] [01] [01])$")
   message(FATAL_ERROR "unexpected result from the GUI: ${counts}")
 endif ()
 set(octree "${CMAKE_MATCH_1}")
@@ -35,8 +35,8 @@ if (NOT coarse EQUAL 580 OR NOT fine EQUAL 2902 OR NOT builds EQUAL 1)
   message(FATAL_ERROR
     "unexpected progressive mesh from the GUI: ${coarse} and ${fine} triangles, ${builds} builds")
 endif ()
-if (NOT texture STREQUAL "1 1 1 1")
-  message(FATAL_ERROR
-    "Texture Baking in the GUI (textured, solid colour, rendered, texture removed): ${texture}")
+if (NOT texture STREQUAL "1 1 1 1 1 1")
+  message(FATAL_ERROR "Texture Baking in the GUI (textured, solid colour, rendered, renamed, one "
+    "texture after a state's round trip, removed with the filter): ${texture}")
 endif ()
 message(STATUS "ParaView GUI simplified the cow to ${octree} (octree), ${volume} (volume) and ${parallel} (parallel) triangles")

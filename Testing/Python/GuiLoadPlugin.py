@@ -2,10 +2,11 @@
 """Run by the ParaView GUI (paraview --script=... --exit): load the plugin, simplify the cow with
 each filter, and write the triangle counts ("octree volume parallel progressive-at-90 %
 progressive-at-50 % builds", the progressive mesh's second level from its first build), then
-Texture Baking's four flags (1 where it holds: the surface shown has the filter's texture, a
+Texture Baking's six flags (1 where it holds: the surface shown has the filter's texture, a
 Texture proxy fed by its second output in the textures group that the Texture menu lists; it is
-coloured by Solid Color; the render shows the baked elevation, red above and blue below;
-deleting the filter unregisters its texture) - or the error - to the file
+coloured by Solid Color; the render shows the baked elevation, red above and blue below; the
+texture is renamed with the filter; a state saved and loaded again has that one texture, on the
+surface; deleting the filter unregisters its texture, also after the state was loaded) - or the error - to the file
 MESHSIMPLIFICATION_MARKER names, for Testing/GUI/TestParaViewGUI.cmake to check."""
 import os
 import traceback
@@ -14,7 +15,7 @@ marker = os.environ["MESHSIMPLIFICATION_MARKER"]
 
 
 def baked_texture_flags():
-    """Texture Baking of a sphere coloured by its Elevation, shown in the GUI: the four flags.
+    """Texture Baking of a sphere coloured by its Elevation, shown in the GUI: the six flags.
     (The plugin's filters are this module's names, as LoadPlugin put them.)"""
     from paraview import servermanager
     from vtkmodules.vtkIOImage import vtkPNGReader
@@ -44,9 +45,22 @@ def baked_texture_flags():
     top = [reader.GetOutput().GetScalarComponentAsDouble(150, 200, 0, c) for c in range(3)]
     bottom = [reader.GetOutput().GetScalarComponentAsDouble(150, 100, 0, c) for c in range(3)]
     rendered = top[0] > top[2] + 40 and bottom[2] > bottom[0] + 40
+
+    def texture_names():
+        return sorted(name for name, _ in servermanager.ProxyManager().GetProxiesInGroup("textures").keys())
+
+    RenameSource("Renamed", bake)
+    renamed = texture_names() == ["Renamed Texture"]
+    state = marker + ".pvsm"
+    SaveState(state)
     Delete(bake)
-    removed = len(servermanager.ProxyManager().GetProxiesInGroup("textures")) == 0
-    return " ".join(str(int(flag)) for flag in (textured, solid, rendered, removed))
+    removed = texture_names() == []
+    LoadState(state)
+    reloaded = FindSource("Renamed")
+    kept = texture_names() == ["Renamed Texture"] and GetDisplayProperties(reloaded, view).Texture is not None
+    Delete(reloaded)
+    removed = removed and texture_names() == []
+    return " ".join(str(int(flag)) for flag in (textured, solid, rendered, renamed, kept, removed))
 
 
 try:
