@@ -519,6 +519,11 @@ bool vtkLODInterpolation::Levels(vtkDataObject* sequence, vtkDataObject*& detail
   {
     return false;
   }
+  if (this->DetailedReduction >= this->CoarseReduction)
+  {
+    vtkWarningMacro("Detailed Reduction " << this->DetailedReduction << " is not below Coarse Reduction "
+                                          << this->CoarseReduction << ": the detailed level is not the finer one.");
+  }
   vtkSmartPointer<vtkProgressiveMesh>* levels[2] = { &this->DetailedLevel, &this->CoarseLevel };
   const double reductions[2] = { this->DetailedReduction, this->CoarseReduction };
   for (int i = 0; i < 2; ++i)

@@ -133,7 +133,8 @@ public:
    * With one input, a Progressive Mesh sequence (vtkProgressiveMesh's second output, or its
    * file): the detailed and the coarse surfaces are its levels at these reductions (defaults 0,
    * every point, and 0.9), each recording what its points became, so that Exact is a geomorph
-   * between them. Ignored with two inputs.
+   * between them (a warning where DetailedReduction is not below CoarseReduction). Ignored
+   * with two inputs.
    */
   vtkSetClampMacro(DetailedReduction, double, 0.0, 1.0);
   vtkGetMacro(DetailedReduction, double);

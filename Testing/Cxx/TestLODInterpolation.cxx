@@ -285,6 +285,12 @@ void TestSequenceAlone()
   morph->Update();
   CHECK(morph->GetOutput()->GetNumberOfPolys() == simplify->GetOutput()->GetNumberOfPolys() &&
     morph->GetCorrespondenceBuilds() == 1);
+  // Levels the wrong way round: a warning that says so.
+  vtkNew<meshsimp_test::MessageLog> reversed;
+  morph->AddObserver(vtkCommand::WarningEvent, reversed);
+  morph->SetDetailedReduction(0.97);
+  morph->Update();
+  CHECK(reversed->Warnings.size() == 1 && meshsimp_test::Mentions(reversed->Warnings[0], "Detailed Reduction 0.97 is not below Coarse Reduction 0.95"));
   // A surface alone that is no sequence: the one-line error.
   vtkNew<meshsimp_test::MessageLog> log;
   vtkNew<vtkLODInterpolation> alone;
