@@ -409,6 +409,10 @@ int vtkTextureBaking::RequestUpdateExtent(vtkInformation* request, vtkInformatio
 
 int vtkTextureBaking::RequestData(vtkInformation*, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
+  // Until the texels are baked, the texture has the declared extent and no texels: a consumer
+  // that asks for the whole image then does not run a filter that failed again (and repeat its
+  // error) until something changes.
+  vtkImageData::GetData(outputs, 1)->SetExtent(outputs->GetInformationObject(1)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()));
   vtkImageData* image = vtkImageData::GetData(inputs[2]);
   vtkDataObject* given[2] = { vtkDataObject::GetData(inputs[0]), vtkDataObject::GetData(inputs[1]) };
   if (!given[0] || !given[1])

@@ -521,6 +521,15 @@ void TestBadInput()
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   const std::vector<std::string> untextured = BakeErrors(sphere, sphere, image);
   CHECK(untextured.size() == 1 && meshsimp_test::Mentions(untextured[0], "the original has no texture coordinates"));
+  // A failed bake is not run again when its texture is asked for next: one error per change.
+  vtkNew<meshsimp_test::MessageLog> once;
+  vtkNew<vtkTextureBaking> failed;
+  failed->AddObserver(vtkCommand::ErrorEvent, once);
+  failed->SetInputData(0, sphere);
+  failed->SetOriginalData(plain);
+  failed->Update(0);
+  failed->Update(1);
+  CHECK(once->Errors.size() == 1);
   // NaN points in the simplified surface: their triangles get no square, the rest bake.
   vtkNew<vtkPolyData> broken;
   broken->DeepCopy(sphere);
