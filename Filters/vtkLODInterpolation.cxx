@@ -5,6 +5,7 @@
 #include "vtkSimplificationAttributes.h"
 #include "vtkSimplificationInput.h"
 #include "vtkSimplificationPieces.h"
+#include "vtkSimplificationRanges.h"
 #include "vtkSimplificationThreads.h"
 
 #include "vtkArrayDispatch.h"
@@ -19,6 +20,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -27,7 +29,6 @@
 #include "vtkProgressiveMesh.h"
 #include "vtkStaticPointLocator.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkTypeInt32Array.h"
 
 #include <Eigen/Core>
 
@@ -60,7 +61,7 @@ struct FrameArrays
 {
   vtkSmartPointer<vtkDoubleArray> Places, Displacement;
   vtkSmartPointer<vtkFloatArray> SinglePlaces; // the points, where the output's are floats
-  vtkSmartPointer<vtkTypeInt32Array> Offsets, Connectivity;
+  vtkSmartPointer<vtkIdTypeArray> Offsets, Connectivity;
 };
 
 /// An array for the tuples: the last frame's, kept, where nothing else holds it any more (its
@@ -393,6 +394,7 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
       {
         worker(array, towards, morphed.Get(), frame, t, unit, context);
       }
+      vtkSimplification::RecordRanges(morphed, context);
     }
     output->AddArray(morphed);
     if (attribute >= 0)
@@ -406,7 +408,8 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
 /// is kept (no point joined) and the detailed surface is triangles alone, viewed in place, those
 /// are the detailed surface's: shared, not copied.
 void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInput& triangles,
-  const meshsimp::MorphFrame& frame, FrameArrays& written, vtkPolyData* output)
+  const meshsimp::MorphFrame& frame, const meshsimp::ExecutionContext& context, FrameArrays& written,
+  vtkPolyData* output)
 {
   const meshsimp::TriangleMeshView& view = triangles.View;
   const vtkIdType count = frame.NumberOfTriangles();
@@ -417,15 +420,18 @@ void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInpu
     output->GetCellData()->ShallowCopy(detailed->GetCellData());
     return;
   }
-  vtkTypeInt32Array* offsets = Reuse(written.Offsets, 1, count + 1);
-  for (vtkIdType t = 0; t <= count; ++t)
-  {
-    offsets->SetValue(t, static_cast<std::int32_t>(3 * t));
-  }
-  vtkTypeInt32Array* connectivity = Reuse(written.Connectivity, 1, 3 * count);
-  std::copy(frame.Triangles.begin(), frame.Triangles.end(), connectivity->GetPointer(0));
+  vtkIdType* offsets = Reuse(written.Offsets, 1, count + 1)->GetPointer(0);
+  vtkIdType* connectivity = Reuse(written.Connectivity, 1, 3 * count)->GetPointer(0);
+  context.For(count + 1, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t t = begin; t < end; ++t)
+    {
+      offsets[t] = 3 * t;
+    }
+    std::copy(frame.Triangles.begin() + 3 * begin, frame.Triangles.begin() + 3 * std::min<std::int64_t>(end, count),
+      connectivity + 3 * begin);
+  }, 4 * count);
   vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
+  cells->SetData(written.Offsets, written.Connectivity);
   output->SetPolys(cells);
   vtkCellData* cellData = detailed->GetCellData();
   output->GetCellData()->CopyAllocate(cellData, count);
@@ -467,11 +473,13 @@ void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplificat
   vtkNew<vtkPoints> points;
   points->SetData(single ? Copied(written.SinglePlaces, places->GetPointer(0), 3, view.NumberOfPoints, context)
                          : static_cast<vtkDataArray*>(places));
+  vtkSimplification::RecordRanges(points->GetData(), context);
   output->SetPoints(points);
-  WriteTriangles(detailed, triangles, frame, written, output);
+  WriteTriangles(detailed, triangles, frame, context, written, output);
   MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, context, kept, output->GetPointData());
   vtkDoubleArray* displacement = Copied(written.Displacement, frame.Displacement.data(), 1, view.NumberOfPoints, context);
   displacement->SetName("Displacement");
+  vtkSimplification::RecordRanges(displacement, context);
   output->GetPointData()->AddArray(displacement);
 }
 } // namespace

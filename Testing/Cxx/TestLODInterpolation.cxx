@@ -15,6 +15,7 @@
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkIntArray.h"
@@ -33,6 +34,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <vector>
 
 namespace
 {
@@ -556,6 +559,69 @@ void TestFrameKeepsTypes()
   }
 }
 
+/// A frame's ranges are known before anyone asks: every array the frame writes (points,
+/// morphed arrays, Displacement) carries the ranges VTK computes for it, NaN and infinities
+/// included, and the next frame's replace them.
+void TestFrameRecordsRanges()
+{
+  vtkSmartPointer<vtkPolyData> detailed, coarse;
+  SphereAndCoarse(detailed, coarse);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (vtkPolyData* mesh : { detailed.GetPointer(), coarse.GetPointer() })
+  {
+    vtkNew<vtkFloatArray> vectors;
+    vectors->SetName("Vectors");
+    vectors->SetNumberOfComponents(3);
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetName("Colors");
+    colours->SetNumberOfComponents(4);
+    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    {
+      const double* x = mesh->GetPoint(p);
+      vectors->InsertNextTuple3(x[1], -x[0], mesh == coarse ? 1.0 : 2.0 * x[2]);
+      const auto shade = static_cast<unsigned char>(127.5 * (1.0 + x[2] / 0.5));
+      colours->InsertNextTuple4(shade, 255 - shade, mesh == coarse ? 90 : 0, 255);
+    }
+    mesh->GetPointData()->AddArray(vectors);
+    mesh->GetPointData()->AddArray(colours);
+  }
+  vtkPointData* own = detailed->GetPointData();
+  own->GetArray("Height")->SetTuple1(3, nan);
+  own->GetArray("Height")->SetTuple1(5, -inf);
+  own->GetArray("Vectors")->SetComponent(7, 1, inf);
+  own->GetArray("Vectors")->SetComponent(8, 2, nan);
+  vtkNew<vtkLODInterpolation> morph;
+  morph->SetInputData(0, detailed);
+  morph->SetCoarseData(coarse);
+  for (const double t : { 0.3, 0.7 })
+  {
+    morph->SetInterpolation(t);
+    morph->Update();
+    vtkPolyData* out = morph->GetOutput();
+    std::vector<vtkDataArray*> written = { out->GetPoints()->GetData() };
+    for (const char* name : { "Height", "Vectors", "Colors", "Displacement" })
+    {
+      written.push_back(out->GetPointData()->GetArray(name));
+    }
+    for (vtkDataArray* array : written)
+    {
+      CHECK(array != nullptr && array->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()));
+      vtkSmartPointer<vtkDataArray> computed = vtk::TakeSmartPointer(array->NewInstance());
+      computed->DeepCopy(array);
+      for (int c = -1; array && c < array->GetNumberOfComponents(); ++c)
+      {
+        double recorded[2], ranged[2], recordedFinite[2], rangedFinite[2];
+        array->GetRange(recorded, c);
+        computed->GetRange(ranged, c);
+        array->GetFiniteRange(recordedFinite, c);
+        computed->GetFiniteRange(rangedFinite, c);
+        CHECK(recorded[0] == ranged[0] && recorded[1] == ranged[1]);
+        CHECK(recordedFinite[0] == rangedFinite[0] && recordedFinite[1] == rangedFinite[1]);
+      }
+    }
+  }
+}
+
 void TestBadInput()
 {
   // An empty coarse surface, one of points alone: one error of the filter's (none of the
@@ -646,6 +712,7 @@ int TestLODInterpolation(int argc, char* argv[])
   TestMorphInShader();
   TestTimeDrivesTheMorph();
   TestFrameKeepsTypes();
+  TestFrameRecordsRanges();
   TestBadInput();
   return meshsimp_test::Failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file vtkSimplificationRanges.h
+ * @brief An output array's ranges computed on the filter's threads and left where VTK's range
+ * queries look first (private to the module).
+ */
+#ifndef vtkSimplificationRanges_h
+#define vtkSimplificationRanges_h
+
+#include "Execution.h"
+
+class vtkDataArray;
+
+namespace vtkSimplification
+{
+
+/// Computes, in one pass on the context's threads, what vtkDataArray::GetRange and
+/// GetFiniteRange return for every component and, for an array of several components, for the
+/// tuples' L2 norm, the values VTK computes itself (NaN left out; the finite ranges also leave
+/// out infinities), and stores them in the array's information under the keys those queries
+/// read before computing (PER_COMPONENT and PER_FINITE_COMPONENT with COMPONENT_RANGE,
+/// L2_NORM_RANGE, L2_NORM_FINITE_RANGE). The array's next Modified() removes them, as it removes
+/// ranges VTK cached. For a filter run at every frame: ParaView asks for all those ranges of
+/// every output array after each update, and VTK 9.2 computes each kind in a pass of its own.
+/// Arrays of other than float, double or unsigned char values, and empty ones, are left alone.
+void RecordRanges(vtkDataArray* array, const meshsimp::ExecutionContext& context);
+
+}
+
+#endif
