@@ -7,6 +7,7 @@
 #include "vtkSimplificationDistributed.h"
 #include "vtkSimplificationInput.h"
 #include "vtkSimplificationPieces.h"
+#include "vtkSimplificationRanges.h"
 #include "vtkSimplificationThreads.h"
 
 #include "vtkDataObject.h"
@@ -477,6 +478,7 @@ void vtkMeshSimplificationFilter::FinishPiece(
   {
     vtkWarningMacro(<< run.Name(i) << "Aborted: the output has no Deviation.");
   }
+  vtkSimplification::RecordOutputRanges(piece.Input, piece.Output, call.Execution);
 }
 
 void vtkMeshSimplificationFilter::ForEachSetting(const meshsimp::SettingVisit& visit)

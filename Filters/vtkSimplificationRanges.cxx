@@ -2,12 +2,16 @@
 #include "vtkSimplificationRanges.h"
 
 #include "vtkAOSDataArrayTemplate.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationInformationVectorKey.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkTypeTraits.h"
 
 #include <algorithm>
@@ -15,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <set>
 #include <vector>
 
 namespace
@@ -199,6 +204,12 @@ bool Record(vtkDataArray* array, const meshsimp::ExecutionContext& context)
   }
   return true;
 }
+/// Record for the first of Values that is the array's (none where the array is of another kind).
+template <typename... Values>
+void RecordOfType(vtkDataArray* array, const meshsimp::ExecutionContext& context)
+{
+  (Record<Values>(array, context) || ...);
+}
 } // namespace
 
 namespace vtkSimplification
@@ -206,9 +217,34 @@ namespace vtkSimplification
 
 void RecordRanges(vtkDataArray* array, const meshsimp::ExecutionContext& context)
 {
-  if (array && array->GetNumberOfTuples() > 0 && !Record<float>(array, context) && !Record<double>(array, context))
+  if (array && array->GetNumberOfTuples() > 0)
   {
-    Record<unsigned char>(array, context);
+    RecordOfType<float, double, char, signed char, unsigned char, short, unsigned short, int, unsigned int, long,
+      unsigned long, long long, unsigned long long>(array, context);
+  }
+}
+
+void RecordOutputRanges(vtkPolyData* input, vtkPolyData* output, const meshsimp::ExecutionContext& context)
+{
+  const auto arrays = [](vtkPolyData* mesh) {
+    std::vector<vtkDataArray*> all = { mesh->GetPoints() ? mesh->GetPoints()->GetData() : nullptr };
+    for (vtkFieldData* data : { static_cast<vtkFieldData*>(mesh->GetPointData()), static_cast<vtkFieldData*>(mesh->GetCellData()) })
+    {
+      for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+      {
+        all.push_back(data->GetArray(a));
+      }
+    }
+    return all;
+  };
+  const std::vector<vtkDataArray*> inputs = arrays(input);
+  const std::set<vtkDataArray*> shared(inputs.begin(), inputs.end());
+  for (vtkDataArray* array : arrays(output))
+  {
+    if (shared.count(array) == 0)
+    {
+      RecordRanges(array, context);
+    }
   }
 }
 

@@ -10,6 +10,7 @@
 #include "Execution.h"
 
 class vtkDataArray;
+class vtkPolyData;
 
 namespace vtkSimplification
 {
@@ -20,10 +21,16 @@ namespace vtkSimplification
 /// out infinities), and stores them in the array's information under the keys those queries
 /// read before computing (PER_COMPONENT and PER_FINITE_COMPONENT with COMPONENT_RANGE,
 /// L2_NORM_RANGE, L2_NORM_FINITE_RANGE). The array's next Modified() removes them, as it removes
-/// ranges VTK cached. For a filter run at every frame: ParaView asks for all those ranges of
-/// every output array after each update, and VTK 9.2 computes each kind in a pass of its own.
-/// Arrays of other than float, double or unsigned char values, and empty ones, are left alone.
+/// ranges VTK cached. ParaView asks for all those ranges of every output array after each
+/// update, and VTK 9.2 computes each kind in a pass of its own: a level dragged on a slider or a
+/// morph played frame by frame would pay for them at every frame.
+/// Empty arrays, and arrays not stored as one block of tuples of a standard numeric type, are
+/// left alone.
 void RecordRanges(vtkDataArray* array, const meshsimp::ExecutionContext& context);
+
+/// RecordRanges for the arrays of output that a filter wrote: its points' and its point and
+/// cell data's, but those it shares with input (whose information is the input's to keep).
+void RecordOutputRanges(vtkPolyData* input, vtkPolyData* output, const meshsimp::ExecutionContext& context);
 
 }
 

@@ -3,7 +3,7 @@
 // filter (MeshSimplificationFilterList.h): sharp attribute borders, a count shared out over
 // composite blocks, blocks that are not polygonal passed through, surfaces of other datasets, 3-D
 // cells refused, the Deviation array, the error reported in the bound's units, zero-width cracks
-// closed unless point data differ, and the original ids.
+// closed unless point data differ, the original ids, and the output arrays' recorded ranges.
 #include "MeshSimplificationFilters.h"
 
 #include "vtkAppendFilter.h"
@@ -19,6 +19,7 @@
 #include "vtkFieldData.h"
 #include "vtkGenericCell.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnstructuredGrid.h"
@@ -490,6 +491,44 @@ void CheckOriginalIds(const Factory& make)
   }
 }
 
+/// The arrays a filter writes carry their ranges (VTK's range cache), equal to the ranges VTK
+/// computes; the arrays it shares with its input are left as they are.
+void CheckRecordedRanges(const Factory& make)
+{
+  vtkSmartPointer<vtkPolyData> cow = meshsimp_test::DecoratedCow();
+  vtkSmartPointer<vtkMeshSimplificationFilter> filter = make();
+  filter->SetInputData(cow);
+  filter->ComputeDeviationOn();
+  filter->GenerateOriginalIdsOn();
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  std::vector<vtkDataArray*> written = { output->GetPoints()->GetData() };
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(output->GetPointData()), static_cast<vtkFieldData*>(output->GetCellData()) })
+  {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      written.push_back(data->GetArray(a));
+    }
+  }
+  CHECK(written.size() >= 5); // points, the cow's arrays, Deviation, the original ids
+  for (vtkDataArray* array : written)
+  {
+    CHECK(array->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()));
+    vtkSmartPointer<vtkDataArray> computed = vtk::TakeSmartPointer(array->NewInstance());
+    computed->DeepCopy(array);
+    for (int c = -1; c < array->GetNumberOfComponents(); ++c)
+    {
+      double recorded[2], ranged[2], recordedFinite[2], rangedFinite[2];
+      array->GetRange(recorded, c);
+      computed->GetRange(ranged, c);
+      array->GetFiniteRange(recordedFinite, c);
+      computed->GetFiniteRange(rangedFinite, c);
+      CHECK(recorded[0] == ranged[0] && recorded[1] == ranged[1]);
+      CHECK(recordedFinite[0] == rangedFinite[0] && recordedFinite[1] == rangedFinite[1]);
+    }
+  }
+}
+
 void CheckFilter(const Factory& make, double tolerance, bool blends)
 {
   CheckOriginalIds(make);
@@ -499,6 +538,7 @@ void CheckFilter(const Factory& make, double tolerance, bool blends)
   CheckOtherDatasets(make);
   CheckDeviation(make);
   CheckErrorUnits(make);
+  CheckRecordedRanges(make);
 }
 }
 
