@@ -11,6 +11,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPartitionedDataSet.h"
 #include "vtkMath.h"
@@ -164,6 +165,26 @@ inline void CheckCarriedData(vtkPolyData* cow, vtkPolyData* out)
   }
   CHECK(static_cast<vtkIdType>(distinct.size()) == out->GetNumberOfCells());
   CHECK(out->GetCellData()->GetNormals() != nullptr);
+}
+
+/// The array carries its ranges in VTK's range cache (a filter recorded them), and they equal
+/// the ranges VTK computes for a copy: every component's and the norm's, with and without
+/// infinities.
+inline void CheckRecordedRanges(vtkDataArray* array)
+{
+  CHECK(array->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()));
+  vtkSmartPointer<vtkDataArray> computed = vtk::TakeSmartPointer(array->NewInstance());
+  computed->DeepCopy(array);
+  for (int c = -1; c < array->GetNumberOfComponents(); ++c)
+  {
+    double recorded[2], ranged[2], recordedFinite[2], rangedFinite[2];
+    array->GetRange(recorded, c);
+    computed->GetRange(ranged, c);
+    array->GetFiniteRange(recordedFinite, c);
+    computed->GetFiniteRange(rangedFinite, c);
+    CHECK(recorded[0] == ranged[0] && recorded[1] == ranged[1]);
+    CHECK(recordedFinite[0] == rangedFinite[0] && recordedFinite[1] == rangedFinite[1]);
+  }
 }
 /// Boundary plus non-manifold edges: zero for a closed 2-manifold.
 inline vtkIdType OpenEdges(vtkPolyData* mesh)
