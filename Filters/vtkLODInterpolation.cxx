@@ -20,7 +20,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -61,7 +60,7 @@ struct FrameArrays
 {
   vtkSmartPointer<vtkDoubleArray> Places, Displacement;
   vtkSmartPointer<vtkFloatArray> SinglePlaces; // the points, where the output's are floats
-  vtkSmartPointer<vtkIdTypeArray> Offsets, Connectivity;
+  vtkSmartPointer<vtkCellArray::ArrayType64> Offsets, Connectivity; // the type SetData keeps as it is
 };
 
 /// An array for the tuples: the last frame's, kept, where nothing else holds it any more (its
@@ -420,8 +419,8 @@ void WriteTriangles(vtkPolyData* detailed, const vtkSimplification::TriangleInpu
     output->GetCellData()->ShallowCopy(detailed->GetCellData());
     return;
   }
-  vtkIdType* offsets = Reuse(written.Offsets, 1, count + 1)->GetPointer(0);
-  vtkIdType* connectivity = Reuse(written.Connectivity, 1, 3 * count)->GetPointer(0);
+  vtkTypeInt64* offsets = Reuse(written.Offsets, 1, count + 1)->GetPointer(0);
+  vtkTypeInt64* connectivity = Reuse(written.Connectivity, 1, 3 * count)->GetPointer(0);
   context.For(count + 1, [&](std::int64_t begin, std::int64_t end) {
     for (std::int64_t t = begin; t < end; ++t)
     {

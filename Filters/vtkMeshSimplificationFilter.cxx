@@ -478,7 +478,10 @@ void vtkMeshSimplificationFilter::FinishPiece(
   {
     vtkWarningMacro(<< run.Name(i) << "Aborted: the output has no Deviation.");
   }
-  vtkSimplification::RecordOutputRanges(piece.Input, piece.Output, call.Execution);
+  if (!this->GetAbortExecute())
+  {
+    vtkSimplification::RecordOutputRanges(piece.Input, piece.Output, call.Execution);
+  }
 }
 
 void vtkMeshSimplificationFilter::ForEachSetting(const meshsimp::SettingVisit& visit)

@@ -22,6 +22,11 @@
 #include <set>
 #include <vector>
 
+// Why: ParaView asks for every range of every output array after each update, and VTK 9.2
+// computes each kind in a pass of its own, so that a level dragged on a slider or a morph played
+// frame by frame would wait for them at every frame. The norms' squares are summed as VTK sums
+// them (CMakeLists.txt keeps the compiler from fusing the multiply and add, which VTK's own
+// build does not), so that the ranges are VTK's to the last bit.
 namespace
 {
 /// Lowest and highest of the values added, as vtkDataArray keeps them: in the values' type for

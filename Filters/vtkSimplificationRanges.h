@@ -20,12 +20,10 @@ namespace vtkSimplification
 /// tuples' L2 norm, the values VTK computes itself (NaN left out; the finite ranges also leave
 /// out infinities), and stores them in the array's information under the keys those queries
 /// read before computing (PER_COMPONENT and PER_FINITE_COMPONENT with COMPONENT_RANGE,
-/// L2_NORM_RANGE, L2_NORM_FINITE_RANGE). The array's next Modified() removes them, as it removes
-/// ranges VTK cached. ParaView asks for all those ranges of every output array after each
-/// update, and VTK 9.2 computes each kind in a pass of its own: a level dragged on a slider or a
-/// morph played frame by frame would pay for them at every frame.
-/// Empty arrays, and arrays not stored as one block of tuples of a standard numeric type, are
-/// left alone.
+/// L2_NORM_RANGE, L2_NORM_FINITE_RANGE). Call it after the array's last write: the array's next
+/// Modified() removes them, as it removes ranges VTK cached, but a write through a raw pointer
+/// after the call would leave them stale. Empty arrays, and arrays not stored as one block of
+/// tuples of a standard numeric type, are left alone.
 void RecordRanges(vtkDataArray* array, const meshsimp::ExecutionContext& context);
 
 /// RecordRanges for the arrays of output that a filter wrote: its points' and its point and

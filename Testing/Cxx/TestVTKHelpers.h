@@ -175,6 +175,7 @@ inline void CheckRecordedRanges(vtkDataArray* array)
   CHECK(array->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()));
   vtkSmartPointer<vtkDataArray> computed = vtk::TakeSmartPointer(array->NewInstance());
   computed->DeepCopy(array);
+  computed->Modified(); // drops whatever ranges the copy took along
   for (int c = -1; c < array->GetNumberOfComponents(); ++c)
   {
     double recorded[2], ranged[2], recordedFinite[2], rangedFinite[2];
