@@ -393,7 +393,6 @@ void MorphPointData(vtkPointData* detailed, vtkPointData* coarse, const meshsimp
       {
         worker(array, towards, morphed.Get(), frame, t, unit, context);
       }
-      vtkSimplification::RecordRanges(morphed, context);
     }
     output->AddArray(morphed);
     if (attribute >= 0)
@@ -459,7 +458,7 @@ void WriteShaderInput(vtkPolyData* detailed, const meshsimp::MorphPartners& part
 }
 
 /// The frame at t: its points (of type precision, VTK_FLOAT or VTK_DOUBLE), triangles with cell
-/// data, point data and Displacement.
+/// data, point data and Displacement, the arrays it wrote with their ranges recorded.
 void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplification::TriangleInput& triangles,
   const meshsimp::MorphPartners& partners, const meshsimp::MergeSchedule& merges, double t, int precision,
   const meshsimp::ExecutionContext& context, meshsimp::MorphFrame& frame, std::vector<MorphedArray>& kept,
@@ -472,14 +471,13 @@ void WriteFrame(vtkPolyData* detailed, vtkPolyData* coarse, const vtkSimplificat
   vtkNew<vtkPoints> points;
   points->SetData(single ? Copied(written.SinglePlaces, places->GetPointer(0), 3, view.NumberOfPoints, context)
                          : static_cast<vtkDataArray*>(places));
-  vtkSimplification::RecordRanges(points->GetData(), context);
   output->SetPoints(points);
   WriteTriangles(detailed, triangles, frame, context, written, output);
   MorphPointData(detailed->GetPointData(), coarse->GetPointData(), partners, frame, t, context, kept, output->GetPointData());
   vtkDoubleArray* displacement = Copied(written.Displacement, frame.Displacement.data(), 1, view.NumberOfPoints, context);
   displacement->SetName("Displacement");
-  vtkSimplification::RecordRanges(displacement, context);
   output->GetPointData()->AddArray(displacement);
+  vtkSimplification::RecordOutputRanges(detailed, output, context);
 }
 } // namespace
 

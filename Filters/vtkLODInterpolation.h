@@ -43,8 +43,9 @@
  * triangles. The point array "Displacement" holds how far each point
  * stands from its place on the detailed surface (input units); the field data
  * "CorrespondenceBuilds" how many times the correspondence has been built. The arrays a frame
- * writes (points, morphed arrays, Displacement) carry their ranges in VTK's range cache, so that
- * an application that asks for them after every frame (ParaView does) does not compute them again.
+ * writes (all but those it shares with the detailed surface) carry their ranges in VTK's range
+ * cache, so that an application that asks for them after every frame (ParaView does) does not
+ * compute them again.
  *
  * @sa vtkMeshSimplificationFilter vtkProgressiveMesh
  */
